@@ -1,0 +1,57 @@
+"""Assembly of element groups into global energy, forces, tangent and mass."""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+
+
+class ElementGroup:
+    """One element object with its DOF map (nel, ndof_e) into the global vector."""
+
+    def __init__(self, element, dofmap):
+        self.element, self.dofmap = element, np.asarray(dofmap)
+        n = self.dofmap.shape[1]
+        self.rows = np.repeat(self.dofmap, n, axis=1).ravel()
+        self.cols = np.tile(self.dofmap, (1, n)).ravel()
+
+
+class Assembly:
+    """Sum of element groups over ``n_dofs`` global nodal coordinates."""
+
+    def __init__(self, n_dofs: int, groups):
+        self.n_dofs, self.groups = n_dofs, list(groups)
+
+    def energies(self, q) -> list:
+        """Strain energy per element for each group, J."""
+        return [g.element.energy(q[g.dofmap]) for g in self.groups]
+
+    def strain_energy(self, q) -> float:
+        return float(sum(u.sum() for u in self.energies(q)))
+
+    def gradient(self, q) -> np.ndarray:
+        """dU/dq (the elastic forces are Qe = -dU/dq)."""
+        out = np.zeros(self.n_dofs)
+        for g in self.groups:
+            ge, _ = g.element.gradient(q[g.dofmap])
+            np.add.at(out, g.dofmap, ge)
+        return out
+
+    def gradient_tangent(self, q):
+        """dU/dq and the sparse tangent d2U/dq2 (CSR)."""
+        out = np.zeros(self.n_dofs)
+        rows, cols, vals = [], [], []
+        for g in self.groups:
+            ge, Ke = g.element.gradient(q[g.dofmap], tangent=True)
+            np.add.at(out, g.dofmap, ge)
+            rows.append(g.rows), cols.append(g.cols), vals.append(Ke.ravel())
+        K = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+                          shape=(self.n_dofs, self.n_dofs))
+        return out, K
+
+    def mass(self):
+        """Constant sparse mass matrix (CSR), kg."""
+        rows, cols, vals = [], [], []
+        for g in self.groups:
+            rows.append(g.rows), cols.append(g.cols), vals.append(g.element.mass().ravel())
+        return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+                             shape=(self.n_dofs, self.n_dofs))
