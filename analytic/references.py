@@ -1,0 +1,42 @@
+"""Analytic references exposed like scenes (``ancf analytic NAME``)."""
+from __future__ import annotations
+
+from analytic import reissner, timoshenko
+from ancf.scenes.base import Param, Scene, SceneResult
+
+_SECTION = (
+    Param("E", 2.07e11, float, "Pa", "Young's modulus", lo=0, lo_open=True),
+    Param("nu", 0.0, float, "-", "Poisson's ratio", lo=0, hi=0.5, hi_open=True),
+    Param("L", 2.0, float, "m", "beam length", lo=0, lo_open=True),
+    Param("h", 0.1, float, "m", "section height", lo=0, lo_open=True),
+    Param("b", 0.1, float, "m", "section width", lo=0, lo_open=True),
+    Param("ks", 5.0 / 6.0, float, "-", "shear correction factor", lo=0, lo_open=True, hi=2),
+)
+
+
+def _timoshenko(p):
+    w = timoshenko.mid_deflection(p["E"], p["nu"], p["L"], p["h"], p["b"], p["F"], ks=p["ks"])
+    return SceneResult(True, "closed form: " + timoshenko.closed_form_text(), {"mid_deflection_m": w})
+
+
+def _reissner(p):
+    r = reissner.tip_position(p["E"], p["nu"], p["L"], p["h"], p["b"], p["F"], ks=p["ks"])
+    return SceneResult(r.converged, r.message,
+                       {"tip_x": r.tip_x, "tip_y": r.tip_y, "tip_rotation_rad": r.tip_rotation},
+                       extra={"solution": r})
+
+
+def _with(params, **defaults):
+    return tuple(Param(p.name, defaults.get(p.name, p.default), p.kind, p.unit, p.doc, p.lo, p.hi,
+                       p.lo_open, p.hi_open, p.choices) for p in params)
+
+
+REFERENCES = {
+    "timoshenko": Scene(
+        "timoshenko", "Simply supported Timoshenko beam, midspan load (SymPy-derived).",
+        _SECTION + (Param("F", -1000.0, float, "N", "vertical midspan force"),), _timoshenko),
+    "reissner": Scene(
+        "reissner", "Geometrically exact (Reissner) cantilever, dead tip load (BVP, scipy).",
+        _with(_SECTION, nu=0.3) + (Param("F", lambda v: -5e8 * v["h"] ** 3, float, "N",
+                                         "vertical tip force (default -5e8 h^3)"),), _reissner),
+}

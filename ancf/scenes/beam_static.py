@@ -1,0 +1,93 @@
+"""Shared pieces of the static planar-beam scenes (thesis 2.4, report section 7).
+
+Element parameters common to the scenes, the model builder, and a static solve
+that also checks that the equilibrium found is stable (a converged Newton point
+with negative tangent eigenvalues is reported as non-convergence: it is how the
+spurious zero-energy modes of the report's 1-point shear scheme show up).
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg as sla
+
+from ancf.assembly import Assembly, ElementGroup
+from ancf.constraints import Elimination
+from ancf.elements.linear2d import LinearBeam2D
+from ancf.elements.omar_shabana import OmarShabana2D
+from ancf.mesh import BeamMesh
+from ancf.quadrature import RectangularSection
+from ancf.scenes.base import InputError, Param, SceneResult
+from ancf.solvers.static import NewtonOptions, solve_static
+
+ELEMENTS = {"linear": LinearBeam2D, "omar-shabana": OmarShabana2D}
+SCHEMES = tuple(dict.fromkeys(list(LinearBeam2D.schemes) + list(OmarShabana2D.schemes)))
+
+
+def element_params(E=2.07e11, nu=0.0, h=0.1, n_elements=8) -> tuple:
+    """Parameters every static beam scene has, with the papers' values as defaults."""
+    return (
+        Param("element", "linear", str, doc="element type", choices=tuple(ELEMENTS)),
+        Param("integration", "thesis", str,
+              doc="integration scheme (linear: thesis, exact, report-selective, report-fix; "
+                  "omar-shabana: thesis, exact) or a spec like 'normal=2x2,shear=1x1'"),
+        Param("n_elements", n_elements, int, doc="number of elements", lo=1, hi=4096),
+        Param("E", E, float, "Pa", "Young's modulus", lo=0, lo_open=True),
+        Param("nu", nu, float, "-", "Poisson's ratio", lo=0, hi=0.5, hi_open=True),
+        Param("L", 2.0, float, "m", "beam length", lo=0, lo_open=True),
+        Param("h", h, float, "m", "section height (y)", lo=0, lo_open=True),
+        Param("b", 0.1, float, "m", "section width (z)", lo=0, lo_open=True),
+        Param("ks", 5.0 / 6.0, float, "-", "shear correction factor (linear element)",
+              lo=0, lo_open=True, hi=2),
+        Param("load_steps", 1, int, doc="initial number of load steps (adaptive)", lo=1, hi=10000),
+        Param("rtol", 1e-8, float, doc="Newton residual tolerance relative to the load",
+              lo=0, lo_open=True, hi=1e-2),
+    )
+
+
+def check_integration(p: dict) -> None:
+    cls = ELEMENTS[p["element"]]
+    try:
+        cls.scheme_terms(p["integration"], np.eye(3), np.eye(3))
+    except ValueError as exc:
+        raise InputError(f"integration: {exc} (element {p['element']} names: "
+                         f"{', '.join(cls.schemes)})") from None
+
+
+def build(p: dict):
+    """(mesh, q0, assembly) of a straight beam along +x from the origin."""
+    cls = ELEMENTS[p["element"]]
+    mesh = BeamMesh(p["L"], p["n_elements"], cls.slots)
+    q0 = mesh.reference()
+    kw = {"ks": p["ks"]} if cls is LinearBeam2D else {}
+    el = cls(mesh.lengths, q0[mesh.dofmap], RectangularSection(p["b"], p["h"]), p["E"], p["nu"],
+             integration=p["integration"], **kw)
+    return mesh, q0, Assembly(mesh.n_dofs, [ElementGroup(el, mesh.dofmap)])
+
+
+def negative_modes(assembly, elim: Elimination, q, max_dofs: int = 3000):
+    """Number of negative eigenvalues of the reduced tangent at q (None if too large)."""
+    T, _, _ = elim.build()
+    if T.shape[1] > max_dofs:
+        return None
+    _, K = assembly.gradient_tangent(q)
+    Kr = (T.T @ K @ T).toarray()
+    lam = sla.eigvalsh(Kr)
+    return int(np.sum(lam < -1e-9 * np.abs(lam).max()))
+
+
+def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> SceneResult:
+    """Static solve + stability check, packaged as a scene result."""
+    res = solve_static(assembly, elim, Qk, q0, NewtonOptions(n_steps=p["load_steps"], rtol=p["rtol"]))
+    results = {"newton_iterations": res.iterations, "load_steps_taken": res.load_steps,
+               "load_factor": res.load_factor}
+    converged, message = res.converged, res.message
+    results.update(results_fn(res.q) if converged else dict.fromkeys(results_fn(q0)))
+    if converged:
+        neg = negative_modes(assembly, elim, res.q)
+        results["negative_tangent_eigenvalues"] = neg
+        if neg:
+            converged = False
+            message = (f"No convergence to a stable equilibrium: Newton converged to a point with "
+                       f"{neg} negative tangent eigenvalue(s) (spurious zero-energy modes activated)")
+    return SceneResult(converged, message, results,
+                       extra={"q": res.q, "q0": q0, "mesh": mesh, "residuals": res.residual_history})

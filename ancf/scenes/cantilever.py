@@ -1,0 +1,38 @@
+"""Cantilever under a large tip load (thesis Fig. 2.4, Tables 2.3-2.4; report
+Tables 3-5).  Clamp: position and the slope dr/dy of the first node.
+Model 1: h = 0.1 m, nu = 0.3 (defaults); Model 2: h = 0.5 m, nu = 0.
+"""
+import numpy as np
+
+from ancf.constraints import Elimination
+from ancf.scenes import beam_static as bs
+from ancf.scenes.base import Param, Scene
+
+
+def run(p):
+    mesh, q0, asm = bs.build(p)
+    n = p["n_elements"]
+    elim = Elimination(mesh.n_dofs)
+    for slot in ("r", "r_y"):
+        for k in (0, 1):
+            d = mesh.dof(0, slot, k)
+            elim.fix(d, q0[d])
+    Qk = np.zeros(mesh.n_dofs)
+    ix, iy = mesh.dof(n, "r", 0), mesh.dof(n, "r", 1)
+    Qk[iy] = p["F"]
+    return bs.solve(p, mesh, q0, asm, elim, Qk,
+                    lambda q: {"tip_x": float(q[ix]), "tip_y": float(q[iy])})
+
+
+def cantilever_params():
+    base = {q.name: q for q in bs.element_params(nu=0.3, h=0.1, n_elements=8)}
+    base["load_steps"] = Param("load_steps", 10, int, doc=base["load_steps"].doc, lo=1, hi=10000)
+    return tuple(base.values()) + (
+        Param("F", lambda v: -5e8 * v["h"] ** 3, float, "N",
+              "vertical tip force (default -5e8 h^3, negative = downward)"),)
+
+
+SCENE = Scene(
+    "cantilever",
+    "Cantilever with a vertical tip force, large deflection (Models 1 and 2 via h, nu).",
+    cantilever_params(), run, bs.check_integration)
