@@ -1,7 +1,11 @@
 """Continuum-mechanics kernel shared by the planar ANCF beam elements.
 
-Strains are Green-Lagrange (Eqs 2.13-2.15) with the deformation gradient
-``D = J J0^{-1}``; the energy density is ``W = 1/2 eps^T C eps`` in Voigt form
+Strains are Green-Lagrange (Eqs 2.13-2.15) measured in the element's local
+frame: ``eps = 1/2 (J^T J - J0^T J0)`` with ``J = [r_x r_y]`` the gradient with
+respect to the local coordinates.  For the papers' straight beams along x,
+``J0 = I`` and this is exactly ``1/2 (D^T D - I)`` with ``D = J J0^{-1}``; for a
+rotated reference it stays in the beam's axes, which the anisotropic linear
+element (E, E, ks G) needs.  The energy density is ``W = 1/2 eps^T C eps`` in Voigt form
 ``eps = [eps_xx, eps_yy, 2 eps_xy]``.  An element's strain energy is a sum of
 :class:`EnergyTerm` s, each with its own material matrix and quadrature (this is
 how selective integration is expressed).  Everything is vectorised over
@@ -46,12 +50,12 @@ class TermQuadrature:
         By = shapes["y"](X, Y, L).reshape(nel, -1, shapes["n"])
         w = (wx[None, :, None] * wy[None, None, :] * lengths[:, None, None]).reshape(nel, -1)
         # reference configuration: J0 = [r0_x r0_y] per point (identity for a straight beam)
-        J0 = np.stack([_grad(Bx, E0), _grad(By, E0)], axis=-1)  # (nel, nq, 2, 2)
-        inv = np.linalg.inv(J0)
-        self.BX = Bx * inv[..., 0, 0, None] + By * inv[..., 1, 0, None]
-        self.BY = Bx * inv[..., 0, 1, None] + By * inv[..., 1, 1, None]
-        self.w = w * np.linalg.det(J0)
+        self.BX, self.BY = Bx, By
+        self.dX0, self.dY0 = _grad(Bx, E0), _grad(By, E0)
+        J0 = np.stack([self.dX0, self.dY0], axis=-1)  # (nel, nq, 2, 2)
+        self.w = w * np.abs(np.linalg.det(J0))  # reference volume element
         self.C = np.asarray(term.C, dtype=float)
+        self.E0 = E0
 
 
 def _grad(B, E):
@@ -59,11 +63,18 @@ def _grad(B, E):
 
 
 def _strains(tq: TermQuadrature, E):
-    dX, dY = _grad(tq.BX, E), _grad(tq.BY, E)
-    eps = np.stack([0.5 * (np.einsum("eqd,eqd->eq", dX, dX) - 1.0),
-                    0.5 * (np.einsum("eqd,eqd->eq", dY, dY) - 1.0),
-                    np.einsum("eqd,eqd->eq", dX, dY)], axis=-1)
-    return dX, dY, eps
+    """Current gradients r_x, r_y and local Green strains written with the
+    displacement gradients u_x, u_y (u = r - r0):
+    eps_xx = r0_x.u_x + u_x.u_x / 2, eps_yy = r0_y.u_y + u_y.u_y / 2,
+    gamma = r0_x.u_y + r0_y.u_x + u_x.u_y.  This avoids the cancellation of
+    (r_x.r_x - 1) / 2 under small displacements."""
+    U = E - tq.E0
+    uX, uY = _grad(tq.BX, U), _grad(tq.BY, U)
+    dot = lambda a, b: np.einsum("eqd,eqd->eq", a, b)  # noqa: E731
+    eps = np.stack([dot(tq.dX0, uX) + 0.5 * dot(uX, uX),
+                    dot(tq.dY0, uY) + 0.5 * dot(uY, uY),
+                    dot(tq.dX0, uY) + dot(tq.dY0, uX) + dot(uX, uY)], axis=-1)
+    return tq.dX0 + uX, tq.dY0 + uY, eps
 
 
 def term_energy(tq: TermQuadrature, E) -> np.ndarray:
@@ -105,6 +116,20 @@ def lame_matrix(E: float, nu: float) -> np.ndarray:
     lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
     mu = E / (2.0 * (1.0 + nu))
     return np.array([[lam + 2 * mu, lam, 0.0], [lam, lam + 2 * mu, 0.0], [0.0, 0.0, mu]])
+
+
+def _merge_same_rule(terms):
+    """Terms sharing a quadrature rule are one term with the summed material matrix
+    (the thesis scheme then costs one kernel evaluation, not two)."""
+    merged = {}
+    for t in terms:
+        key = (t.nx, t.ny)
+        if key in merged:
+            m = merged[key]
+            merged[key] = EnergyTerm(f"{m.name}+{t.name}", m.C + t.C, t.nx, t.ny)
+        else:
+            merged[key] = t
+    return list(merged.values())
 
 
 def parse_rule(text: str):
@@ -157,6 +182,9 @@ class ContinuumBeam2D:
     @classmethod
     def scheme_terms(cls, integration: str, C_normal, C_shear):
         """Energy terms of a named scheme or of a spec 'normal=2x2,shear=1x1'."""
+        if not isinstance(integration, str):
+            raise ValueError(f"integration must be one of {sorted(cls.schemes)} or a spec like "
+                             f"'normal=2x2,shear=1x1' (got {integration!r})")
         spec = cls.schemes.get(integration, integration)
         terms = []
         for part in spec.split(","):
@@ -169,7 +197,11 @@ class ContinuumBeam2D:
             if C is None:
                 raise ValueError(f"integration group {group!r} must be normal, shear or all")
             terms.append(EnergyTerm(group, C, *parse_rule(rule)))
-        return terms
+        groups = sorted(t.name for t in terms)
+        if groups not in (["all"], ["normal", "shear"]):
+            raise ValueError(f"integration spec {integration!r} must give each of 'normal' and "
+                             f"'shear' once, or 'all' alone (got {', '.join(groups)})")
+        return _merge_same_rule(terms)
 
     def _E(self, e):
         return np.asarray(e, dtype=float).reshape(self.nel, self.nshape, 2)
