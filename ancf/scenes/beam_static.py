@@ -64,15 +64,16 @@ def build(p: dict):
     return mesh, q0, Assembly(mesh.n_dofs, [ElementGroup(el, mesh.dofmap)])
 
 
-def negative_modes(assembly, elim: Elimination, q, max_dofs: int = 3000):
-    """Number of negative eigenvalues of the reduced tangent at q (None if too large)."""
+def tangent_spectrum(assembly, elim: Elimination, q, max_dofs: int = 3000):
+    """(number of negative eigenvalues, lowest eigenvalue / largest) of the reduced
+    tangent at q; (None, None) when the model is too large for a dense check."""
     T, _, _ = elim.build()
     if T.shape[1] > max_dofs:
-        return None
+        return None, None
     _, K = assembly.gradient_tangent(q)
-    Kr = (T.T @ K @ T).toarray()
-    lam = sla.eigvalsh(Kr)
-    return int(np.sum(lam < -1e-9 * np.abs(lam).max()))
+    lam = sla.eigvalsh((T.T @ K @ T).toarray())
+    top = np.abs(lam).max()
+    return int(np.sum(lam < -1e-9 * top)), float(lam[0] / top)
 
 
 def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> SceneResult:
@@ -83,8 +84,9 @@ def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> Sce
     converged, message = res.converged, res.message
     results.update(results_fn(res.q) if converged else dict.fromkeys(results_fn(q0)))
     if converged:
-        neg = negative_modes(assembly, elim, res.q)
+        neg, lowest = tangent_spectrum(assembly, elim, res.q)
         results["negative_tangent_eigenvalues"] = neg
+        results["lowest_tangent_eigenvalue_rel"] = lowest
         if neg:
             converged = False
             message = (f"No convergence to a stable equilibrium: Newton converged to a point with "
