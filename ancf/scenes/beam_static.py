@@ -41,6 +41,8 @@ def element_params(E=2.07e11, nu=0.0, h=0.1, n_elements=8) -> tuple:
         Param("load_steps", 1, int, doc="initial number of load steps (adaptive)", lo=1, hi=10000),
         Param("rtol", 1e-8, float, doc="Newton residual tolerance relative to the load",
               lo=0, lo_open=True, hi=1e-2),
+        Param("max_iterations", 25, int, doc="Newton iterations allowed per load step",
+              lo=1, hi=1000),
     )
 
 
@@ -49,8 +51,9 @@ def check_integration(p: dict) -> None:
     try:
         cls.scheme_terms(p["integration"], np.eye(3), np.eye(3))
     except ValueError as exc:
-        raise InputError(f"integration: {exc} (element {p['element']} names: "
-                         f"{', '.join(cls.schemes)})") from None
+        raise InputError(f"integration = {p['integration']!r} is not valid for element "
+                         f"{p['element']} ({exc}); allowed: {', '.join(cls.schemes)} or a spec "
+                         "'normal=NXxNY,shear=NXxNY' or 'all=NXxNY' (NY may be e = exact)") from None
 
 
 def build(p: dict):
@@ -78,7 +81,8 @@ def tangent_spectrum(assembly, elim: Elimination, q, max_dofs: int = 3000):
 
 def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> SceneResult:
     """Static solve + stability check, packaged as a scene result."""
-    res = solve_static(assembly, elim, Qk, q0, NewtonOptions(n_steps=p["load_steps"], rtol=p["rtol"]))
+    res = solve_static(assembly, elim, Qk, q0, NewtonOptions(n_steps=p["load_steps"], rtol=p["rtol"],
+                                                             max_iter=p["max_iterations"]))
     results = {"newton_iterations": res.iterations, "load_steps_taken": res.load_steps,
                "load_factor": res.load_factor}
     converged, message = res.converged, res.message

@@ -1,0 +1,95 @@
+"""The CLI contract: `ancf scenes`, `ancf run SCENE --set k=v --json`, `ancf analytic NAME`.
+
+JSON keys: scene, params, converged, message, results, cpu_time_s.  Exit codes:
+0 ok, 2 bad input (one line on stderr naming the field and its range), 3 no convergence.
+"""
+import json
+import subprocess
+import sys
+
+import pytest
+
+from ancf.cli import main
+
+KEYS = {"scene", "params", "converged", "message", "results", "cpu_time_s"}
+
+
+def _run(capsys, *argv):
+    rc = main(list(argv))
+    out, err = capsys.readouterr()
+    return rc, out, err
+
+
+def test_scenes_lists_every_scene_and_reference(capsys):
+    rc, out, _ = _run(capsys, "scenes")
+    assert rc == 0
+    for name in ("simply-supported", "cantilever", "axial-bar", "timoshenko", "reissner"):
+        assert name in out
+
+
+@pytest.mark.parametrize("argv,key", [
+    (("run", "simply-supported"), "mid_deflection_m"),
+    (("run", "cantilever", "--set", "n_elements=4"), "tip_y"),
+    (("run", "axial-bar"), "elongation_m"),
+    (("analytic", "timoshenko"), "mid_deflection_m"),
+    (("analytic", "reissner", "--set", "h=0.5", "--set", "nu=0"), "tip_x"),
+])
+def test_json_shape(capsys, argv, key):
+    rc, out, _ = _run(capsys, *argv, "--json")
+    data = json.loads(out)
+    assert rc == 0 and set(data) == KEYS and data["converged"] is True
+    assert isinstance(data["results"][key], float)
+    assert data["cpu_time_s"] >= 0
+
+
+def test_cantilever_default_force_follows_h(capsys):
+    _, out, _ = _run(capsys, "run", "cantilever", "--set", "h=0.5", "--set", "n_elements=2", "--json")
+    assert json.loads(out)["params"]["F"] == pytest.approx(-5e8 * 0.5**3)
+
+
+def test_simply_supported_sign_convention(capsys):
+    _, out, _ = _run(capsys, "run", "simply-supported", "--json")
+    assert json.loads(out)["results"]["mid_deflection_m"] < 0  # downward load, negative
+
+
+@pytest.mark.parametrize("argv,field", [
+    (("run", "cantilever", "--set", "nu=0.5"), "nu"),
+    (("run", "cantilever", "--set", "n_elements=0"), "n_elements"),
+    (("run", "cantilever", "--set", "n_elements=2.5"), "n_elements"),
+    (("run", "cantilever", "--set", "E=-1"), "E"),
+    (("run", "cantilever", "--set", "h=abc"), "h"),
+    (("run", "cantilever", "--set", "element=beam3"), "element"),
+    (("run", "cantilever", "--set", "integration=bogus"), "integration"),
+    (("run", "cantilever", "--set", "colour=red"), "colour"),
+    (("run", "simply-supported", "--set", "n_elements=3"), "n_elements"),
+    (("run", "no-such-scene"), "run"),
+    (("analytic", "reissner", "--set", "L=0"), "L"),
+])
+def test_bad_input_exit_2_one_line(capsys, argv, field):
+    rc, out, err = _run(capsys, *argv)
+    assert rc == 2 and out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and field in lines[0] and "allowed" in lines[0]
+
+
+def test_non_convergence_exit_3_with_json(capsys):
+    rc, out, _ = _run(capsys, "run", "cantilever", "--set", "h=0.5", "--set", "nu=0",
+                      "--set", "n_elements=64", "--set", "integration=report-selective", "--json")
+    data = json.loads(out)
+    assert rc == 3 and data["converged"] is False and "No convergence" in data["message"]
+    assert set(data) == KEYS
+
+
+def test_nonconvergence_is_not_nan(capsys):
+    """A solve that cannot converge (one Newton iteration allowed) reports null, not NaN."""
+    rc, out, _ = _run(capsys, "run", "cantilever", "--set", "max_iterations=1", "--set",
+                      "n_elements=2", "--json")
+    data = json.loads(out)
+    assert rc == 3 and data["results"]["tip_x"] is None and "No convergence" in data["message"]
+
+
+def test_console_entry_point_runs_as_module():
+    proc = subprocess.run([sys.executable, "-m", "ancf.cli", "run", "axial-bar", "--json"],
+                          capture_output=True, text=True, check=False)
+    assert proc.returncode == 0, proc.stderr
+    assert json.loads(proc.stdout)["results"]["elongation_m"] > 0
