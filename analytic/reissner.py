@@ -63,6 +63,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.integrate import solve_bvp
 
+from analytic._checks import finite, positive
+
 __all__ = ["ReissnerResult", "tip_position", "default_tip_force", "MODELS", "BEAM188_64"]
 
 #: Cantilever models of the papers (E [Pa], nu, L [m], h [m], b [m], F [N]).
@@ -107,23 +109,6 @@ def default_tip_force(h: float) -> float:
     return -5.0e8 * h**3
 
 
-def _check_finite(name: str, val) -> float:
-    try:
-        v = float(val)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a real number (got {val!r})") from None
-    if not math.isfinite(v):
-        raise ValueError(f"{name} must be finite (got {val!r})")
-    return v
-
-
-def _check_positive(name: str, val) -> float:
-    v = _check_finite(name, val)
-    if v <= 0:
-        raise ValueError(f"{name} must be > 0 (got {val!r})")
-    return v
-
-
 def tip_position(E: float, nu: float, L: float, h: float, b: float, F: float | None = None,
                  Fx: float = 0.0, ks: float = 5.0 / 6.0, tol: float = 1e-10,
                  max_nodes: int = 20_000) -> ReissnerResult:
@@ -140,17 +125,17 @@ def tip_position(E: float, nu: float, L: float, h: float, b: float, F: float | N
     Raises ValueError for invalid inputs (naming the field and the allowed range);
     solver failures are returned as ``converged=False`` with the message.
     """
-    E = _check_positive("E", E)
-    L = _check_positive("L", L)
-    h = _check_positive("h", h)
-    b = _check_positive("b", b)
-    ks = _check_positive("ks", ks)
-    tol = _check_positive("tol", tol)
-    nu = _check_finite("nu", nu)
+    E = positive("E", E)
+    L = positive("L", L)
+    h = positive("h", h)
+    b = positive("b", b)
+    ks = positive("ks", ks)
+    tol = positive("tol", tol)
+    nu = finite("nu", nu)
     if not -1.0 < nu <= 0.5:
         raise ValueError(f"nu must be in (-1, 0.5] (got {nu!r})")
-    Fy = default_tip_force(h) if F is None else _check_finite("F", F)
-    Fx = _check_finite("Fx", Fx)
+    Fy = default_tip_force(h) if F is None else finite("F", F)
+    Fx = finite("Fx", Fx)
     if int(max_nodes) < 10:
         raise ValueError(f"max_nodes must be >= 10 (got {max_nodes!r})")
 

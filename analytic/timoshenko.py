@@ -83,6 +83,8 @@ from functools import lru_cache
 
 import sympy as sp
 
+from analytic._checks import finite, positive
+
 __all__ = [
     "mid_deflection",
     "derive_mid_deflection",
@@ -114,24 +116,13 @@ PUBLISHED = {
 }
 
 
-def _as_finite(name: str, val) -> float:
-    try:
-        v = float(val)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a real number (got {val!r})") from None
-    if not math.isfinite(v):
-        raise ValueError(f"{name} must be finite (got {val!r})")
-    return v
-
-
 def _check_positive(**kw: float) -> None:
     for name, val in kw.items():
-        if _as_finite(name, val) <= 0:
-            raise ValueError(f"{name} must be > 0 (got {val!r})")
+        positive(name, val)
 
 
 def _check_nu(nu: float) -> None:
-    if not -1.0 < _as_finite("nu", nu) <= 0.5:
+    if not -1.0 < finite("nu", nu) <= 0.5:
         raise ValueError(f"nu must be in (-1, 0.5] (got {nu!r})")
 
 
@@ -229,7 +220,7 @@ def mid_deflection(E: float, nu: float, L: float, h: float, b: float, F: float,
     """
     _check_positive(E=E, L=L, h=h, b=b, ks=ks)
     _check_nu(nu)
-    F = _as_finite("F", F)
+    F = finite("F", F)
     I, A, G = _section(E, nu, h, b)
     return float(_mid_fn()(E, I, G, A, ks, L, F))
 
@@ -240,7 +231,7 @@ def cantilever_tip_deflection(E: float, nu: float, L: float, h: float, b: float,
     :func:`mid_deflection`; F is the signed tip load [N])."""
     _check_positive(E=E, L=L, h=h, b=b, ks=ks)
     _check_nu(nu)
-    F = _as_finite("F", F)
+    F = finite("F", F)
     I, A, G = _section(E, nu, h, b)
     return float(_cant_fn()(E, I, G, A, ks, L, F))
 
