@@ -57,7 +57,6 @@ Small loads reproduce the linear Timoshenko cantilever
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
