@@ -21,7 +21,8 @@ test: $(STAMP)
 	$(PY) -m pytest
 
 bench: $(STAMP)
-	$(PY) -m pytest benchmarks --benchmark-enable --benchmark-only --benchmark-json=reports/benchmarks/benchmark.json
+	OPENBLAS_NUM_THREADS=1 $(PY) -m pytest benchmarks --benchmark-enable --benchmark-only --benchmark-json=reports/benchmarks/benchmark.json
+	$(PY) -m benchmarks.summarize
 
 clean:
 	rm -rf $(VENV) .pytest_cache .benchmarks

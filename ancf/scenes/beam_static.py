@@ -43,6 +43,9 @@ def element_params(E=2.07e11, nu=0.0, h=0.1, n_elements=8) -> tuple:
               lo=0, lo_open=True, hi=1e-2),
         Param("max_iterations", 25, int, doc="Newton iterations allowed per load step",
               lo=1, hi=1000),
+        Param("stability_check", "auto", str,
+              doc="eigenvalue check of the equilibrium (dense; auto = up to 1500 free DOFs)",
+              choices=("auto", "on", "off")),
     )
 
 
@@ -67,7 +70,10 @@ def build(p: dict):
     return mesh, q0, Assembly(mesh.n_dofs, [ElementGroup(el, mesh.dofmap)])
 
 
-def tangent_spectrum(assembly, elim: Elimination, q, max_dofs: int = 3000):
+STABILITY_MAX_DOFS = {"auto": 1500, "on": 10**9, "off": -1}
+
+
+def tangent_spectrum(assembly, elim: Elimination, q, max_dofs: int = 1500):
     """(number of negative eigenvalues, lowest eigenvalue / largest) of the reduced
     tangent at q; (None, None) when the model is too large for a dense check."""
     T, _, _ = elim.build()
@@ -88,7 +94,8 @@ def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> Sce
     converged, message = res.converged, res.message
     results.update(results_fn(res.q) if converged else dict.fromkeys(results_fn(q0)))
     if converged:
-        neg, lowest = tangent_spectrum(assembly, elim, res.q)
+        neg, lowest = tangent_spectrum(assembly, elim, res.q,
+                                       STABILITY_MAX_DOFS[p["stability_check"]])
         results["negative_tangent_eigenvalues"] = neg
         results["lowest_tangent_eigenvalue_rel"] = lowest
         if neg:

@@ -1,0 +1,193 @@
+"""Markdown summary of a pytest-benchmark JSON run.
+
+    python -m benchmarks.summarize [--json reports/benchmarks/benchmark.json]
+                                   [--out reports/benchmarks/README.md]
+
+Writes: a table of every benchmark (name, params, mean, stddev, rounds, extra info),
+element x n tables for the full solve and the Newton-iteration kernel, the
+linear / Omar-Shabana Newton-iteration time ratios against the thesis's ~0.5, and
+the machine description.  Standard library only.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+DEFAULT_JSON = ROOT / "reports" / "benchmarks" / "benchmark.json"
+DEFAULT_OUT = ROOT / "reports" / "benchmarks" / "README.md"
+THESIS_RATIO = 0.5
+ELEMENTS = ("linear", "omar-shabana")
+
+
+def fmt_time(t) -> str:
+    if t is None:
+        return "–"
+    for unit, f in (("s", 1.0), ("ms", 1e3), ("µs", 1e6)):
+        if abs(t) * f >= 1.0 or unit == "µs":
+            return f"{t * f:.3g} {unit}"
+
+
+def fmt_value(key: str, v) -> str:
+    if isinstance(v, float):
+        return fmt_time(v) if key.endswith("_s") else f"{v:.4g}"
+    return str(v)
+
+
+def md_table(header, rows) -> str:
+    esc = lambda c: str(c).replace("|", "\\|")  # noqa: E731
+    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    out += ["| " + " | ".join(esc(c) for c in r) + " |" for r in rows]
+    return "\n".join(out)
+
+
+def short_name(b) -> str:
+    return b["name"].split("[", 1)[0]
+
+
+def params_str(b) -> str:
+    return ", ".join(f"{k}={v}" for k, v in (b.get("params") or {}).items())
+
+
+def all_benchmarks_table(benches) -> str:
+    skip = {"element", "n_elements", "thesis_ratio"}
+    rows = []
+    for b in benches:
+        s = b["stats"]
+        extra = "; ".join(f"{k}={fmt_value(k, v)}" for k, v in b.get("extra_info", {}).items()
+                          if k not in skip)
+        rows.append([short_name(b), params_str(b), fmt_time(s["mean"]), fmt_time(s["stddev"]),
+                     fmt_time(s["median"]), s["rounds"], extra])
+    return md_table(["benchmark", "params", "mean", "stddev", "median", "rounds", "extra info"],
+                    rows)
+
+
+def pivot(benches, test, value, fmt=str, ratio_row=False) -> str | None:
+    """element x n table of value(b); optionally a row linear / Omar-Shabana."""
+    cells = {}
+    for b in benches:
+        if short_name(b) != test:
+            continue
+        p = b.get("params") or {}
+        cells[(p.get("element"), p.get("n"))] = value(b)
+    if not cells:
+        return None
+    ns = sorted({n for _, n in cells})
+    rows = [[el] + [fmt(cells[(el, n)]) if (el, n) in cells else "–" for n in ns]
+            for el in ELEMENTS if any((el, n) in cells for n in ns)]
+    if ratio_row:
+        row = ["linear / Omar–Shabana"]
+        for n in ns:
+            a, b = cells.get(("linear", n)), cells.get(("omar-shabana", n))
+            row.append(f"{a / b:.3f}" if a is not None and b else "–")
+        rows.append(row)
+    return md_table(["element"] + [f"n = {n}" for n in ns], rows)
+
+
+def ratio_table(benches) -> str | None:
+    rows = []
+    for b in sorted((b for b in benches if short_name(b) == "test_newton_ratio"),
+                    key=lambda b: b["params"]["n"]):
+        e = b["extra_info"]
+        r = e["ratio_linear_over_os"]
+        rows.append([e["n_elements"], f"{e['n_dofs_linear']} / {e['n_dofs_omar_shabana']}",
+                     fmt_time(e["linear_median_s"]), fmt_time(e["omar_shabana_median_s"]),
+                     f"**{r:.3f}**",
+                     f"{e['ratio_paired_median']:.3f} [{e['ratio_paired_q25']:.3f}, "
+                     f"{e['ratio_paired_q75']:.3f}]",
+                     f"{e.get('thesis_ratio', THESIS_RATIO):g}", f"{r / THESIS_RATIO:.2f}",
+                     e["samples"]])
+    if not rows:
+        return None
+    return md_table(["n", "DOFs lin / OS", "linear median", "Omar–Shabana median",
+                     "ratio lin/OS", "paired ratio median [IQR]", "thesis", "ratio / thesis",
+                     "samples"], rows)
+
+
+def machine_section(data) -> str:
+    mi = data.get("machine_info", {})
+    am = mi.get("ancf_machine")
+    lines = []
+    if am:
+        for k in ("cpu_model", "logical_cores", "usable_cores", "os", "platform", "python",
+                  "numpy", "scipy", "blas", "pytest_benchmark", "thread_env"):
+            if k in am:
+                v = am[k]
+                if k == "thread_env" and not v:
+                    v = "no OMP/OPENBLAS/MKL_NUM_THREADS set (BLAS uses its default thread count)"
+                lines.append(f"- **{k}**: {v if v not in ({}, None) else '–'}")
+    else:
+        cpu = (mi.get("cpu") or {}).get("brand_raw", mi.get("processor", "?"))
+        lines.append(f"- {cpu}, {mi.get('system', '?')} {mi.get('release', '')}, "
+                     f"Python {mi.get('python_version', '?')} (no ancf_machine record)")
+    lines.append(f"- **run started**: {data.get('datetime', '?')}")
+    lines.append(f"- **pytest-benchmark**: {data.get('version', '?')}")
+    return "\n".join(lines)
+
+
+def render(data, json_name: str) -> str:
+    benches = data.get("benchmarks", [])
+    parts = [
+        "# ancf-bench benchmarks",
+        "",
+        f"Generated by `python -m benchmarks.summarize` from `{json_name}` (written by `make bench`); "
+        "do not edit by hand. Times are wall-clock (`time.perf_counter`) on the machine below; "
+        "no thresholds are asserted.",
+        "",
+        "- **cantilever Model 1 static solve**: `SCENES['cantilever'].execute({element, n_elements})` "
+        "(h = 0.1 m, ν = 0.3, F = −5e8 h³, 10 initial load steps, Newton to rtol 1e-8, "
+        "plus the scene's dense tangent-stability check).",
+        "- **Newton iteration kernel**: `assembly.gradient_tangent(q)` at a perturbed clamped "
+        "configuration, reduction `Tᵀ K T` to the free coordinates, sparse LU (`splu`) and solve.",
+        "- **Newton iteration ratio**: both elements' kernels timed alternately (order swapped each "
+        "round), median over the rounds.",
+        "",
+    ]
+    mean = lambda b: b["stats"]["mean"]  # noqa: E731
+    solve = pivot(benches, "test_cantilever_solve", mean, fmt_time, ratio_row=True)
+    if solve:
+        parts += ["## Full static solve, mean time", "", solve, ""]
+        iters = pivot(benches, "test_cantilever_solve",
+                      lambda b: b["extra_info"].get("newton_iterations", "–"))
+        parts += ["Newton iterations of the solve:", "", iters, ""]
+    kern = pivot(benches, "test_newton_kernel", mean, fmt_time, ratio_row=True)
+    if kern:
+        parts += ["## One Newton iteration (kernel), mean time", "", kern, ""]
+        per = pivot(benches, "test_newton_kernel",
+                    lambda b: b["extra_info"].get("kernel_time_per_element_s"), fmt_time)
+        parts += ["Kernel time per element:", "", per, ""]
+    ratios = ratio_table(benches)
+    if ratios:
+        parts += ["## Newton-iteration time ratio, linear / Omar–Shabana", "",
+                  "The thesis reports that a Newton iteration with the linear element is about two "
+                  "times shorter than with the Omar–Shabana element (ratio ≈ 0.5). "
+                  "`ratio lin/OS` = median(linear) / median(Omar–Shabana); the paired ratio is the "
+                  "median of the per-round ratios.", "", ratios, ""]
+    parts += ["## All benchmarks", "", all_benchmarks_table(benches), "",
+              "## Machine", "", machine_section(data), ""]
+    return "\n".join(parts)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--json", type=Path, default=DEFAULT_JSON)
+    ap.add_argument("--out", type=Path, default=DEFAULT_OUT)
+    a = ap.parse_args(argv)
+    if not a.json.is_file():
+        print(f"{a.json}: not found; run `make bench` first", file=sys.stderr)
+        return 1
+    data = json.loads(a.json.read_text())
+    try:
+        name = a.json.resolve().relative_to(ROOT)
+    except ValueError:
+        name = a.json
+    a.out.parent.mkdir(parents=True, exist_ok=True)
+    a.out.write_text(render(data, str(name)))
+    print(f"wrote {a.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
