@@ -57,6 +57,14 @@ def _solve(K, r):
     return dz
 
 
+def _roundoff_floor(Kr, z) -> float:
+    """Smallest residual that can be resolved: absolute nodal coordinates carry an
+    error of eps |q|, which the stiffest terms turn into forces of eps |q| |K|_inf
+    (e.g. 1e-5 N for a 64-element beam with EA = 4e8 N)."""
+    k_inf = float(abs(Kr).sum(axis=1).max())
+    return 10.0 * np.finfo(float).eps * (1.0 + float(np.abs(z).max(initial=0.0))) * k_inf
+
+
 def _newton(assembly, T, g, z, Qk, lam, opt, history):
     """Newton iterations at load factor lam; returns (z, converged, iterations, why)."""
     TT = T.T.tocsr()
@@ -69,10 +77,13 @@ def _newton(assembly, T, g, z, Qk, lam, opt, history):
         history.append(rn)
         if not np.isfinite(rn):
             return z, False, it, "residual is not finite"
-        if rn <= opt.rtol * scale or (small_step and rn <= 1e3 * opt.rtol * scale):
+        Kr = TT @ K @ T
+        stalled = len(history) > 1 and rn > 0.25 * history[-2]  # no longer contracting
+        if rn <= opt.rtol * scale or (small_step and rn <= 1e3 * opt.rtol * scale) or (
+                stalled and rn <= _roundoff_floor(Kr, z)):
             return z, True, it, ""
         try:
-            dz = _solve(TT @ K @ T, r)
+            dz = _solve(Kr, r)
         except _Singular as exc:
             return z, False, it, f"singular tangent stiffness ({exc})"
         z = z + dz
