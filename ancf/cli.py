@@ -1,4 +1,5 @@
-"""Command line: ``ancf scenes``, ``ancf run SCENE``, ``ancf analytic NAME``.
+"""Command line: ``ancf scenes``, ``ancf run SCENE``, ``ancf analytic NAME``,
+``ancf sweep SCENE --grid k=v1,v2``, ``ancf recommend SCENE --tol TOL``.
 
 ``--json`` prints one JSON object ``{scene, params, converged, message, results,
 cpu_time_s}``.  Exit codes: 0 ok, 2 bad input (one line on stderr naming the
@@ -54,6 +55,62 @@ def _run(registry, kind, args) -> int:
     return 0 if out["converged"] else 3
 
 
+def _sweep(args) -> int:
+    from ancf.scenes import SCENES
+    from ancf.sweep import parse_grid, run_sweep
+    if args.name not in SCENES:
+        raise InputError(f"sweep: unknown scene {args.name!r}; allowed: {', '.join(SCENES)}")
+    grid = parse_grid(args.name, args.grid) if args.grid else None
+    out = args.out or f"sweep-{args.name}.parquet"
+
+    def _term(signum, frame):
+        raise KeyboardInterrupt
+    signal.signal(signal.SIGTERM, _term)  # like Ctrl-C: keep the finished rows, then stop
+    try:
+        df = run_sweep(args.name, grid, out=out, fixed=_parse_sets(args.set),
+                       reference=args.reference, workers=args.workers, scheduler=args.scheduler,
+                       time_limit=args.time_limit, retry_failed=args.retry_failed,
+                       progress=not args.no_progress)
+    except KeyboardInterrupt:
+        print(f"interrupted: the finished rows are in {out}; the same command resumes",
+              file=sys.stderr)
+        return 130
+    counts = {k: int(v) for k, v in df["status"].value_counts().items()} if len(df) else {}
+    if args.json:
+        print(json.dumps({"scene": args.name, "out": str(out), "rows": int(len(df)),
+                          "status": counts, "reference": args.reference}))
+    else:
+        print(out)
+    return 0
+
+
+def _recommend(args) -> int:
+    from ancf.recommend import public, recommend
+    res = recommend(args.name, args.tol, fixed=_parse_sets(args.set), reference=args.reference,
+                    data=args.data, workers=args.workers, scheduler=args.scheduler,
+                    time_limit=args.time_limit, progress=not args.no_progress)
+    if args.json:
+        print(json.dumps(public(res)))
+    else:
+        print(res["message"])
+        if res["params"]:
+            print("  ancf run " + args.name + " " + " ".join(
+                f"--set {k}={v}" for k, v in res["params"].items()))
+    return res["exit_code"]
+
+
+def _positive(kind):
+    def parse(text):
+        try:
+            v = kind(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+        if not v > 0:
+            raise argparse.ArgumentTypeError(f"{text!r} must be > 0")
+        return v
+    return parse
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="ancf", description="ANCF benchmark suite")
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -63,6 +120,34 @@ def main(argv=None) -> int:
         p.add_argument("name")
         p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter")
         p.add_argument("--json", action="store_true", help="print one JSON object")
+    p = sub.add_parser("sweep", help="run the cartesian product of parameter values")
+    p.add_argument("name")
+    p.add_argument("--grid", action="append", metavar="KEY=V1,V2,...",
+                   help="values of one parameter (';' separates values that contain commas); "
+                        "default: the scene's speed-accuracy grid")
+    p.add_argument("--set", action="append", metavar="KEY=VALUE", help="fix a parameter")
+    p.add_argument("--reference", help="reference for the error column (default: the scene's)")
+    p.add_argument("--out", help="output .parquet or .csv (default sweep-SCENE.parquet); "
+                                 "an existing file is resumed")
+    p.add_argument("--workers", type=_positive(int), help="local worker processes (default: cores)")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="run on a Dask cluster instead")
+    p.add_argument("--time-limit", type=_positive(float), default=600.0, metavar="SECONDS",
+                   help="per run; a run over it is killed and recorded (default 600)")
+    p.add_argument("--retry-failed", action="store_true", help="rerun failed / timed-out rows")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    p.add_argument("--json", action="store_true", help="print a JSON summary")
+    p = sub.add_parser("recommend", help="cheapest model meeting an error tolerance")
+    p.add_argument("name")
+    p.add_argument("--tol", type=_positive(float), required=True, help="error tolerance")
+    p.add_argument("--set", action="append", metavar="KEY=VALUE",
+                   help="fix a parameter (physical ones define the problem)")
+    p.add_argument("--reference", help="reference (default: the scene's)")
+    p.add_argument("--data", help="answer from this sweep file instead of running a sweep")
+    p.add_argument("--workers", type=_positive(int), help="local worker processes")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="run the sweep on a Dask cluster")
+    p.add_argument("--time-limit", type=_positive(float), default=300.0, metavar="SECONDS")
+    p.add_argument("--no-progress", action="store_true")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
     args = ap.parse_args(argv)
     if hasattr(signal, "SIGPIPE"):
         signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # `ancf scenes | head` ends quietly
@@ -72,6 +157,10 @@ def main(argv=None) -> int:
             _list(scenes, "Scenes (ancf run NAME):")
             _list(refs, "\nAnalytic references (ancf analytic NAME):")
             return 0
+        if args.cmd == "sweep":
+            return _sweep(args)
+        if args.cmd == "recommend":
+            return _recommend(args)
         return _run(scenes if args.cmd == "run" else refs, args.cmd, args)
     except InputError as exc:
         print(f"error: {exc}", file=sys.stderr)

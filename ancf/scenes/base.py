@@ -84,6 +84,13 @@ class Scene:
     params: tuple
     run: Callable[[dict], SceneResult]
     check: Callable[[dict], None] | None = None  # cross-field validation
+    # Optional declarations for sweeps / recommendations (ancf.references): the
+    # parameters that choose the model (the rest define the problem), the physics the
+    # scene needs (ancf.references.PHYSICS) and the name of its reference.  Scenes that
+    # have an entry in ancf.references.SPECS need none of them.
+    knobs: tuple = ()
+    needs: tuple = ()
+    reference: str | None = None
 
     def resolve(self, overrides: dict | None = None) -> dict:
         """All parameter values: defaults, then ``overrides`` (strings or values)."""

@@ -1,0 +1,389 @@
+"""Stability at the extremes: where each element / quadrature / integrator works.
+
+Every axis of issue 4 is declared in :data:`AXES`; an axis runs through
+:func:`ancf.sweep.run_sweep` (a worker process per run, killed at the time limit) so
+that every case ends in a converged result or a diagnosis (:func:`diagnosis`), never an
+exception, a silent NaN or a hang.  Axes that need a scene the suite does not have yet
+(contact, spinning beam, time integration) say so: ``applicable()`` returns the reason.
+
+Static axes (cantilever): slenderness L/h 1..1e4 (locking per scheme, small-deflection
+load against Timoshenko), Poisson's ratio 0..0.499, 2..1024 elements (Models 1 and 2
+against Reissner), tip load up to 10x Model 1 (against Reissner), load steps and Newton
+iterations per step at 10x load, and a watchdog case that exceeds its time limit.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Callable
+
+import pandas as pd
+
+from ancf.references import cache_root
+
+E, L, B = 2.07e11, 2.0, 0.1
+MODEL_1 = {"h": 0.1, "nu": 0.3}
+MODEL_2 = {"h": 0.5, "nu": 0.0}
+F1 = -5e8 * 0.1**3  # Model 1 tip load [N]
+SCHEMES = (("linear", "thesis"), ("linear", "exact"), ("linear", "report-selective"),
+           ("linear", "report-fix"), ("omar-shabana", "thesis"), ("omar-shabana", "exact"))
+WORKS = 1e-2     # converged and error <= 1 %: works
+ROUGH = 1e-1     # 1 % < error <= 10 %: usable; beyond: locked / wrong
+
+
+def small_load(slenderness: float, nu: float = 0.3, deflection: float = 1e-3) -> dict:
+    """h and F of a cantilever of length L = 2 m whose linear (Timoshenko) tip
+    deflection is ``deflection`` x L."""
+    from analytic import timoshenko
+    h = L / slenderness
+    unit = timoshenko.cantilever_tip_deflection(E, nu, L, h, B, -1.0)
+    return {"h": h, "F": -deflection * L / abs(unit)}
+
+
+@dataclass(frozen=True)
+class Axis:
+    name: str
+    title: str
+    scene: str
+    grids: Callable[[], list]          # sub-grids (lists of values), built when run
+    column: str                        # the parameter (or label column) along the axis
+    rows: tuple                        # the columns that name a model (map rows)
+    reference: str | None = None
+    time_limit: float = 120.0
+    requires: tuple = ()               # scenes that must exist
+    na_reason: str = ""                # set: not applicable whatever exists
+    doc: str = ""
+    label: Callable[[pd.DataFrame], pd.Series] | None = None  # axis values for display
+    extra: dict = field(default_factory=dict)
+
+    def applicable(self) -> tuple[bool, str]:
+        from ancf.scenes import SCENES
+        if self.na_reason:
+            return False, self.na_reason
+        missing = [s for s in self.requires if s not in SCENES]
+        if missing:
+            return False, f"not applicable yet: no {' / '.join(missing)} scene in the suite"
+        return True, ""
+
+
+def _schemes(*pairs, **extra):
+    pairs = pairs or SCHEMES
+    return [{"element": [e], "integration": [i], **extra} for e, i in pairs]
+
+
+def _slenderness_grids():
+    out = []
+    for s in (1, 10, 100, 1000, 10000):
+        sl = small_load(s)
+        for g in _schemes(n_elements=[4, 64]):
+            out.append({**g, "h": [sl["h"]], "F": [sl["F"]], "nu": [0.3], "load_steps": [1]})
+    return out
+
+
+def _poisson_grids():
+    sl = small_load(20)
+    return [{**g, "h": [sl["h"]], "F": [sl["F"]], "nu": [0.0, 0.3, 0.45, 0.49, 0.499],
+             "n_elements": [8, 64], "load_steps": [1]}
+            for g in _schemes(("linear", "thesis"), ("omar-shabana", "thesis"),
+                              ("omar-shabana", "exact"))]
+
+
+_NS = [2, 4, 8, 16, 32, 64, 128, 256, 512, 1024]
+
+
+def _elements_grids():
+    out = [{**g, "n_elements": _NS, **{k: [v] for k, v in MODEL_1.items()}}
+           for g in _schemes(("linear", "thesis"), ("linear", "exact"),
+                             ("linear", "report-selective"), ("omar-shabana", "thesis"))]
+    out += [{**g, "n_elements": _NS, **{k: [v] for k, v in MODEL_2.items()}}
+            for g in _schemes(("linear", "thesis"), ("linear", "report-selective"),
+                              ("linear", "report-fix"))]
+    return out
+
+
+LOAD_FACTORS = (0.1, 1.0, 2.0, 5.0, 10.0)
+
+
+def _load_grids():
+    return [{**g, "F": [F1 * f for f in LOAD_FACTORS], "n_elements": [8, 32],
+             **{k: [v] for k, v in MODEL_1.items()}}
+            for g in _schemes(("linear", "thesis"), ("linear", "report-selective"),
+                              ("omar-shabana", "thesis"))]
+
+
+def _step_grids():
+    return [{"element": ["linear"], "integration": ["thesis"], "n_elements": [16],
+             "F": [10 * F1], "load_steps": [1, 10, 100, 1000], "max_iterations": [1, 3, 25],
+             **{k: [v] for k, v in MODEL_1.items()}}]
+
+
+def _watchdog_grids():
+    return [{"element": ["omar-shabana"], "integration": ["thesis"], "n_elements": [4096],
+             "stability_check": ["off"], **{k: [v] for k, v in MODEL_1.items()}}]
+
+
+def _dyn_step_grids():
+    return [{"integrator": ["generalized-alpha"], "dt": [1e-4, 1e-3, 1e-2, 5e-2, 2e-1],
+             "n_elements": [4], "t_end": [1.0]},
+            {"integrator": ["rk45", "dop853"], "rtol": [1e-10, 1e-6, 1e-2], "n_elements": [4],
+             "max_steps": [2000], "t_end": [1.0]},
+            {"integrator": ["radau", "bdf"], "rtol": [1e-10, 1e-6, 1e-2], "n_elements": [4],
+             "t_end": [1.0]}]
+
+
+def _spin_grids():
+    return [{"omega_s": [4.0, 8.0, 20.0, 40.0], "integrator": ["generalized-alpha"],
+             "n_elements": [3, 8]}]
+
+
+def _step_label(df):
+    return df.apply(lambda r: f"dt = {r['dt']:g}" if r["integrator"] == "generalized-alpha"
+                    else f"rtol = {r['rtol']:g}", axis=1)
+
+
+def _load_label(df):
+    return (df["F"] / F1).round(3).map(lambda f: f"{f:g}× Model 1")
+
+
+def _slender_label(df):
+    return (L / df["h"]).round(0).map(lambda s: f"L/h = {s:g}")
+
+
+AXES = (
+    Axis("slenderness", "Slenderness L/h from 1 to 10⁴ (locking per integration scheme)",
+         "cantilever", _slenderness_grids, "L/h", ("element", "integration", "n_elements"),
+         reference="timoshenko", label=_slender_label,
+         doc="Small-deflection cantilever (linear tip deflection 1e-3 L, ν = 0.3), error against "
+             "the Timoshenko cantilever. At L/h = 1 the beam is a block and beam theory itself "
+             "is approximate, so errors there measure the model more than the element. The "
+             "Omar–Shabana rows are off by Poisson locking at ν = 0.3 (see the ν axis), at "
+             "every slenderness: that is not shear locking."),
+    Axis("poisson", "Poisson's ratio ν from 0 to 0.499", "cantilever", _poisson_grids, "nu",
+         ("element", "integration", "n_elements"), reference="timoshenko",
+         doc="Small-deflection cantilever, L/h = 20, error against Timoshenko (G = E/(2(1+ν)))."),
+    Axis("elements", "2 to 1024 elements", "cantilever", _elements_grids, "n_elements",
+         ("h", "element", "integration"), reference="reissner",
+         doc="Model 1 (h = 0.1) and Model 2 (h = 0.5) at the papers' load, error against the "
+             "Reissner rod (includes the constitutive floor of static_beams.md)."),
+    Axis("load", "Tip load up to 10× Model 1", "cantilever", _load_grids, "F",
+         ("element", "integration", "n_elements"), reference="reissner", label=_load_label,
+         doc="Model 1 geometry, F = factor × (−5e5 N), error against the Reissner rod at the "
+             "same load (10 load steps, adaptive)."),
+    Axis("load-steps", "Load steps (static) from 1 to 1000, 1 to 25 Newton iterations per step",
+         "cantilever", _step_grids, "load_steps", ("max_iterations",), reference="reissner",
+         doc="Linear element, thesis scheme, n = 16, at 10× the Model 1 load: the static "
+             "analogue of the step-size axis (adaptive load stepping halves a failing increment "
+             "down to 1/4096)."),
+    Axis("watchdog", "Per-run time limit", "cantilever", _watchdog_grids, "n_elements",
+         ("element", "integration"), reference="reissner", time_limit=2.0,
+         doc="A run that cannot finish within its (deliberately short, 2 s) time limit: 4096 "
+             "Omar–Shabana elements. The worker process is killed and the row says so."),
+    Axis("time-steps", "Time steps from tiny to far beyond the explicit stability limit",
+         "pendulum", _dyn_step_grids, "dt", ("integrator",), reference=None,
+         requires=("pendulum",), time_limit=300.0, label=_step_label,
+         doc="Flexible pendulum: generalized-α with dt from 1e-4 to 0.2 s, explicit and "
+             "implicit scipy integrators with rtol from 1e-10 to 1e-2 (explicit ones with a "
+             "2000-step budget)."),
+    Axis("spinning", "Spinning speed up to 10× ω_s", "spinning-beam", _spin_grids, "omega_s",
+         ("integrator", "n_elements"), requires=("spinning-beam",), time_limit=300.0,
+         doc="Spinning beam spun up to ω = factor × ω_s (ω_s = 4 rad/s), generalized-α, error "
+             "against the steady extension (thesis Eq. 2.36)."),
+    Axis("penalty", "Penalty stiffness 1e4 to 1e10", "belt", lambda: [], "penalty", (),
+         na_reason="not applicable yet: no contact scene"),
+    Axis("nu_s", "ν_s (contact / friction regularisation) 1e2 to 1e7", "belt", lambda: [],
+         "nu_s", (), na_reason="not applicable yet: no contact scene"),
+)
+
+
+_LOAD_RE = re.compile(r"load factor reached ([0-9.eE+-]+)")
+
+
+def diagnosis(row) -> str:
+    """Short classification of a row: 'ok' or why it stopped."""
+    status, msg = str(row.get("status")), str(row.get("message") or "")
+    low = msg.lower()
+    if status == "ok":
+        return "ok"
+    if status == "timeout":
+        return "time limit exceeded"
+    if status == "invalid":
+        return "invalid input"
+    if status == "worker-died":
+        return "worker crashed"
+    if "negative tangent eigenvalue" in low:
+        return "unstable equilibrium"
+    if "singular" in low:
+        return "singular tangent"
+    if "non-finite" in low or "not finite" in low or "nan" in low.split():
+        return "non-finite"
+    if "energy" in low and ("blow" in low or "grow" in low):
+        return "energy blow-up"
+    if "step size" in low and ("collapse" in low or "small" in low):
+        return "step size collapse"
+    if "budget" in low or "max_steps" in low or "too many steps" in low:
+        return "step budget exceeded"
+    m = re.search(r"diverged at step (\d+)", low)
+    if m:
+        return f"diverged at step {m.group(1)}"
+    m = _LOAD_RE.search(msg)
+    if m:
+        return f"Newton diverged at load factor {float(m.group(1)):.3g}"
+    if status == "failed":
+        return "error: " + msg[:60]
+    return "not converged: " + msg[:60]
+
+
+def run_axis(axis: Axis, workers=None, fresh: bool = True, log=None) -> pd.DataFrame:
+    """Run one axis (resumable file under reports/.cache/extremes/)."""
+    from ancf.sweep import run_sweep
+    out = cache_root() / "extremes" / f"{axis.name}.parquet"
+    if fresh:
+        for p in (out, out.with_name(out.name + ".journal.jsonl")):
+            if p.exists():
+                p.unlink()
+    df = run_sweep(axis.scene, axis.grids(), out=out, reference=axis.reference, workers=workers,
+                   time_limit=axis.time_limit, progress=False, log=log)
+    df = df.copy()
+    df["diagnosis"] = [diagnosis(r) for _, r in df.iterrows()]
+    return df
+
+
+def cell(row) -> str:
+    d = row["diagnosis"]
+    if d != "ok":
+        return f"⚠ {d}"
+    e = row.get("error")
+    if e is None or not math.isfinite(float(e)):
+        return "✓"
+    e = float(e)
+    mark = "✓" if e <= WORKS else ("≈" if e <= ROUGH else "✗")
+    return f"{mark} {e:.1e}"
+
+
+def axis_map(axis: Axis, df: pd.DataFrame) -> pd.DataFrame:
+    """Rows: models; columns: the axis values; cells: mark + error or the diagnosis."""
+    df = df.copy()
+    df["_col"] = axis.label(df) if axis.label else df[axis.column].map(
+        lambda v: f"{axis.column} = {v:g}" if isinstance(v, (int, float)) else str(v))
+    if axis.name == "elements":
+        df["_row"] = df.apply(lambda r: f"{'Model 1' if r['h'] == 0.1 else 'Model 2'}: "
+                              f"{r['element']} / {r['integration']}", axis=1)
+    else:
+        df["_row"] = df.apply(lambda r: " / ".join(
+            f"n = {r[c]}" if c == "n_elements" else (str(r[c]) if c in ("element", "integration",
+                                                                       "integrator")
+                                                     else f"{c} = {r[c]}") for c in axis.rows),
+            axis=1)
+    df["_cell"] = df.apply(cell, axis=1)
+    cols = list(dict.fromkeys(df["_col"]))
+    rows = list(dict.fromkeys(df["_row"]))
+    m = df.pivot_table(index="_row", columns="_col", values="_cell", aggfunc="first")
+    m = m.reindex(index=rows, columns=cols)
+    m.insert(0, "model", m.index)
+    return m.reset_index(drop=True).fillna("—")
+
+
+# ---------------------------------------------------------------------------------------
+# report chapter
+# ---------------------------------------------------------------------------------------
+
+def _slenderness_figure(df: pd.DataFrame):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    from ancf.reports.output import save_figure
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    d = df[df["n_elements"] == 64]
+    for (el, integ), g in d.groupby(["element", "integration"], sort=False):
+        g = g.sort_values("h", ascending=False)
+        err = np.where(g["status"] == "ok", g["error"].astype(float), np.nan)
+        ax.loglog(L / g["h"], np.maximum(err, 1e-16), "o-", ms=4, label=f"{el} / {integ}")
+    ax.axhline(WORKS, color="0.6", lw=0.8, ls="--")
+    ax.set(xlabel="slenderness L/h", ylabel="error vs Timoshenko (64 elements)",
+           title="Shear locking vs slenderness, small-deflection cantilever")
+    ax.grid(True, which="both", alpha=0.25)
+    ax.legend(fontsize=7)
+    save_figure(fig, "extremes_slenderness")
+
+
+def pinned_numbers(df: pd.DataFrame) -> dict:
+    """The acceptance numbers at L/h = 1e4, 64 elements (linear element)."""
+    d = df[(df["n_elements"] == 64) & (df["element"] == "linear")
+           & ((L / df["h"]).round() == 10000)]
+    out = {}
+    for integ in ("thesis", "exact"):
+        r = d[d["integration"] == integ]
+        out[integ] = float(r["error"].iloc[0]) if len(r) and r["status"].iloc[0] == "ok" else None
+    return out
+
+
+def extremes_chapter(workers=None) -> tuple[str, dict]:
+    """(markdown, status) of the extremes chapter: one map per axis of issue 4."""
+    import os
+    from ancf.reports.output import markdown_table, progress, write_csv
+    workers = workers or os.cpu_count()
+    status = {}
+    parts = ["# Stability at the extremes\n",
+             "Generated by `python -m ancf.reports`; do not edit. Every case runs through "
+             "`ancf sweep` in its own worker process with a time limit, and ends either converged "
+             "or with a diagnosis: Newton diverged (with the load factor reached), unstable "
+             "equilibrium (negative tangent eigenvalues), singular tangent, non-finite result, "
+             "step size collapse, energy blow-up, step budget exceeded, time limit exceeded. "
+             f"Map cells: ✓ converged and error ≤ {100 * WORKS:g} %, ≈ error ≤ {100 * ROUGH:g} %, "
+             "✗ converged but error larger (locked or outside the model's validity), ⚠ "
+             "diagnosis. Data: `data/extremes_AXIS.csv`.\n",
+             "| axis | scene | status |", "|---|---|---|"]
+    body = []
+    for axis in AXES:
+        ok, why = axis.applicable()
+        if not ok:
+            parts.append(f"| {axis.title} | {axis.scene} | {why} |")
+            body += [f"## {axis.title}\n", f"{why}.\n"]
+            status[f"Extremes: {axis.title}"] = why
+            continue
+        progress(f"extremes: {axis.name}")
+        try:
+            df = run_axis(axis, workers, log=progress)
+        except Exception as exc:  # noqa: BLE001 - one broken axis must not hide the others
+            msg = f"FAIL: the axis did not run ({type(exc).__name__}: {exc})"
+            parts.append(f"| {axis.title} | {axis.scene} | {msg} |")
+            body += [f"## {axis.title}\n", msg + "\n"]
+            status[f"Extremes: {axis.title}"] = msg
+            continue
+        keep = [c for c in ("element", "integration", "n_elements", "integrator", "dt", "rtol",
+                            "nu", "h", "F", "load_steps", "max_iterations", "status",
+                            "diagnosis", "error", "message", "cpu_time_s", "wall_time_s")
+                if c in df]
+        write_csv(df[keep], f"extremes_{axis.name.replace('-', '_')}")
+        diag = df["diagnosis"].map(lambda d: d.split(" at ")[0]).value_counts().to_dict()
+        silent = int(((df["status"] == "ok") & ~df["error"].astype(float).notna()
+                      & df["reference"].notna()).sum()) if "reference" in df else 0
+        parts.append(f"| {axis.title} | {axis.scene} | {len(df)} runs: "
+                     + ", ".join(f"{k} {v}" for k, v in diag.items()) + " |")
+        body += [f"## {axis.title}\n", axis.doc + "\n", markdown_table(axis_map(axis, df)), "",
+                 "Outcomes: " + ", ".join(f"{k} ({v})" for k, v in diag.items()) + ".\n"]
+        unexplained = int((df["status"].isna() | (df["message"].astype(str).str.len() == 0)
+                           & (df["status"] != "ok")).sum())
+        status[f"Extremes: {axis.title}"] = ("PASS" if unexplained == 0 and silent == 0
+                                             else f"FAIL ({unexplained + silent} unexplained)")
+        if axis.name == "slenderness":
+            _slenderness_figure(df)
+            pin = pinned_numbers(df)
+            body += ["![slenderness](figures/extremes_slenderness.png)\n",
+                     f"At L/h = 10⁴ with 64 linear elements the thesis scheme is within "
+                     f"{pin['thesis']:.1e} of Timoshenko (no locking) while exact integration is "
+                     f"off by {pin['exact']:.4f} (locked: the tip moves "
+                     f"{1 - pin['exact']:.1e} of the Timoshenko deflection).\n"
+                     if pin["thesis"] is not None and pin["exact"] is not None else ""]
+            status["Extremes: thesis scheme, L/h = 1e4, n = 64: error < 1 %"] = (
+                "PASS" if pin["thesis"] is not None and pin["thesis"] < 0.01 else "FAIL")
+            status["Extremes: exact integration, L/h = 1e4, n = 64: locks (error > 50 %)"] = (
+                "PASS" if pin["exact"] is not None and pin["exact"] > 0.5 else "FAIL")
+        if axis.name == "watchdog":
+            st = df["status"].iloc[0] if len(df) else None
+            status["Extremes: run over its time limit is killed and reported"] = (
+                "PASS" if st == "timeout" else f"FAIL ({st})")
+    parts.append("")
+    return "\n".join(parts + body), status

@@ -1,0 +1,166 @@
+"""Sweeps (issue 4, part 1): parallel, resumable, failures recorded, same numbers on Dask.
+
+Acceptance: a >= 100-run cantilever sweep with 2 workers, interrupted and resumed
+without recomputing finished rows, and the same sweep through a local Dask cluster
+with identical results.
+"""
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from ancf.cli import main
+from ancf.scenes.base import InputError
+from ancf.sweep import expand, journal_path, parse_grid, read_rows, run_sweep
+
+# 2 elements x 2 schemes x 8 element counts x 2 heights x 2 Poisson ratios = 128 runs
+GRID = ["element=linear,omar-shabana", "integration=thesis,exact", "n_elements=1,2,3,4,5,6,7,8",
+        "h=0.1,0.5", "nu=0,0.3"]
+N_RUNS = 128
+SAME = ["key", "element", "integration", "n_elements", "h", "nu", "F", "status", "converged",
+        "error", "res_tip_x", "res_tip_y", "res_newton_iterations", "steps"]
+
+
+@pytest.fixture(scope="module")
+def workdir(tmp_path_factory):
+    d = tmp_path_factory.mktemp("sweep")
+    old = os.environ.get("ANCF_CACHE")
+    os.environ["ANCF_CACHE"] = str(d / "cache")
+    yield d
+    if old is None:
+        os.environ.pop("ANCF_CACHE", None)
+    else:
+        os.environ["ANCF_CACHE"] = old
+
+
+def _cli(*argv):
+    env = dict(os.environ)
+    return subprocess.Popen([sys.executable, "-m", "ancf.cli", *argv], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, env=env)
+
+
+@pytest.fixture(scope="module")
+def interrupted_and_resumed(workdir):
+    """Start the CLI sweep with 2 workers, interrupt it (SIGINT) once some rows are done,
+    then resume it; returns (rows journaled before the interrupt, final frame, stderr)."""
+    out = workdir / "cantilever.parquet"
+    argv = ["sweep", "cantilever", *sum((["--grid", g] for g in GRID), []), "--workers", "2",
+            "--out", str(out)]
+    p = _cli(*argv)
+    jp = journal_path(out)
+    deadline = time.time() + 60
+    while time.time() < deadline:
+        if jp.exists() and len(jp.read_text().splitlines()) >= 30:
+            break
+        time.sleep(0.05)
+    p.send_signal(signal.SIGINT)
+    p.communicate(timeout=60)
+    before = read_rows(out)
+    assert 30 <= len(before) < N_RUNS, "the interrupt should land mid-sweep"
+    t0 = time.time()
+    p = _cli(*argv, "--json")
+    stdout, stderr = p.communicate(timeout=120)
+    assert p.returncode == 0, stderr
+    final = pd.read_parquet(out)
+    return before, final, stderr, json.loads(stdout), time.time() - t0
+
+
+def test_sweep_interrupted_and_resumed_without_recomputing(interrupted_and_resumed):
+    before, final, stderr, summary, _ = interrupted_and_resumed
+    assert summary["rows"] == N_RUNS and summary["status"] == {"ok": N_RUNS}
+    assert len(final) == N_RUNS and final["key"].is_unique
+    assert f"{len(before)} already in" in stderr and f"{N_RUNS - len(before)} to run" in stderr
+    # the rows finished before the interrupt are the same rows, not recomputed
+    old = final.set_index("key").loc[before["key"]]
+    assert (old["session"].values == before["session"].values).all()
+    assert np.array_equal(old["cpu_time_s"].values, before["cpu_time_s"].astype(float).values)
+    assert final["session"].nunique() == 2
+    assert not journal_path(Path(summary["out"])).exists()
+    # parameters as columns, results and the error against the reference
+    for col in ("element", "integration", "n_elements", "E", "nu", "h", "F", "converged",
+                "cpu_time_s", "steps", "error", "res_tip_x", "res_tip_y", "message"):
+        assert col in final
+    assert (final["reference"] == "reissner").all()
+    assert final["error"].between(0, 1.5).all()
+
+
+def test_resume_of_a_finished_sweep_runs_nothing(workdir, interrupted_and_resumed):
+    out = workdir / "cantilever.parquet"
+    msgs = []
+    df = run_sweep("cantilever", parse_grid("cantilever", GRID), out=out, workers=2,
+                   progress=False, log=msgs.append)
+    assert f"{N_RUNS} already in" in msgs[0] and "0 to run" in msgs[0]
+    assert len(df) == N_RUNS
+
+
+def test_same_sweep_on_a_local_dask_cluster_gives_identical_results(workdir,
+                                                                    interrupted_and_resumed):
+    from distributed import LocalCluster
+    local = interrupted_and_resumed[1]
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                      dashboard_address=None) as cluster:
+        out = workdir / "dask.csv"  # CSV this time: pandas reads both
+        p = _cli("sweep", "cantilever", *sum((["--grid", g] for g in GRID), []),
+                 "--scheduler", cluster.scheduler_address, "--out", str(out), "--no-progress")
+        _, stderr = p.communicate(timeout=180)
+        assert p.returncode == 0, stderr
+    dask = pd.read_csv(out)
+    assert len(dask) == N_RUNS
+    a = local[SAME].sort_values("key").reset_index(drop=True)
+    b = dask[SAME].sort_values("key").reset_index(drop=True)
+    pd.testing.assert_frame_equal(a, b, check_dtype=False, check_exact=True)
+
+
+def test_failures_are_rows_and_do_not_stop_the_others(workdir):
+    out = workdir / "failures.csv"
+    grids = [{"n_elements": [1, 4]},                                   # fine
+             {"element": ["omar-shabana"], "integration": ["report-fix"]},  # invalid pair
+             {"n_elements": [4096], "element": ["omar-shabana"], "stability_check": ["off"]},
+             {"F": [-5e6], "load_steps": [1], "max_iterations": [1]}]  # cannot converge
+    df = run_sweep("cantilever", grids, out=out, workers=2, time_limit=1.5, progress=False,
+                   log=lambda m: None)
+    by = {(r["element"], r["integration"], r["n_elements"], r["max_iterations"]): r
+          for _, r in df.iterrows()}
+    assert len(df) == 5
+    assert by[("linear", "thesis", 1, 25)]["status"] == "ok"
+    assert by[("linear", "thesis", 4, 25)]["status"] == "ok"
+    inv = df[df["status"] == "invalid"]
+    assert len(inv) == 1 and "integration" in inv["message"].iloc[0]
+    slow = df[df["status"] == "timeout"]
+    assert len(slow) == 1 and slow["message"].iloc[0] == "time limit exceeded (1.5 s)"
+    nc = df[df["status"] == "not-converged"]
+    assert len(nc) == 1 and "No convergence" in nc["message"].iloc[0]
+    assert df.loc[df["status"] != "ok", "error"].isna().all()
+    # a rerun skips every recorded row, failures included, unless asked to retry them
+    msgs = []
+    run_sweep("cantilever", grids, out=out, workers=1, time_limit=1.5, progress=False,
+              log=msgs.append)
+    assert "5 already in" in msgs[0]
+    msgs = []
+    run_sweep("cantilever", grids, out=out, workers=1, time_limit=1.5, progress=False,
+              log=msgs.append, retry_failed=True)
+    assert "1 to run" in msgs[0]  # only the timeout is a retryable failure
+
+
+def test_grid_parsing_and_expansion():
+    g = parse_grid("cantilever", ["n_elements=2,4.0,2", "integration=thesis;normal=2x2,shear=1x1"])
+    assert g == {"n_elements": [2, 4], "integration": ["thesis", "normal=2x2,shear=1x1"]}
+    assert len(expand([{"a": [1, 2], "b": [3]}, {"a": [1], "b": [3, 4]}])) == 3
+    for bad in (["n_elements=0"], ["nope=1"], ["h=abc"], ["n_elements"]):
+        with pytest.raises(InputError):
+            parse_grid("cantilever", bad)
+
+
+def test_cli_sweep_bad_input_exits_2(capsys, tmp_path):
+    assert main(["sweep", "cantilever", "--grid", "nu=0.7", "--out", str(tmp_path / "x.csv")]) == 2
+    assert "nu" in capsys.readouterr().err
+    assert main(["sweep", "cantilever", "--grid", "nu=0", "--out", str(tmp_path / "x.txt")]) == 2
+    assert main(["sweep", "cantilever", "--grid", "nu=0", "--reference", "nope",
+                 "--out", str(tmp_path / "x.csv")]) == 2
