@@ -40,3 +40,7 @@ REFERENCES = {
         _with(_SECTION, nu=0.3) + (Param("F", lambda v: -5e8 * v["h"] ** 3, float, "N",
                                          "vertical tip force (default -5e8 h^3)"),), _reissner),
 }
+
+from analytic.dynamics_refs import DYNAMIC_REFERENCES  # noqa: E402  (imports Scene from above)
+
+REFERENCES.update(DYNAMIC_REFERENCES)

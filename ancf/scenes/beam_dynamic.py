@@ -1,0 +1,113 @@
+"""Shared pieces of the dynamic planar-beam scenes (thesis 2.4, dynamic examples).
+
+Parameters of the integrators and constraint forms, the model builder (the
+static ``beam_static.build`` has no density), the two constraint forms of one
+``Elimination`` and the run statistics in the public results.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ancf.assembly import Assembly, ElementGroup
+from ancf.elements.linear2d import LinearBeam2D
+from ancf.energy import energy_history
+from ancf.forces import Forces
+from ancf.mesh import BeamMesh
+from ancf.multipliers import Baumgarte, LinearConstraints
+from ancf.quadrature import RectangularSection
+from ancf.scenes import beam_static as bs
+from ancf.scenes.base import InputError, Param
+from ancf.solvers.dynamics import INTEGRATORS, MultiplierModel, ReducedModel, integrate
+
+
+def section_params(**defaults) -> tuple:
+    """element, integration, n_elements, E, nu, L, h, b, ks with scene defaults."""
+    keep = ("element", "integration", "n_elements", "E", "nu", "L", "h", "b", "ks")
+    base = {p.name: p for p in bs.element_params() if p.name in keep}
+    out = []
+    for name in keep:
+        p = base[name]
+        out.append(Param(p.name, defaults.get(name, p.default), p.kind, p.unit, p.doc, p.lo, p.hi,
+                         p.lo_open, p.hi_open, p.choices))
+    return tuple(out)
+
+
+def dynamic_params(t_end=1.0, integrator="dop853", rtol=1e-8, atol=1e-10, dt=1e-3, rho_inf=0.9,
+                   output_dt=0.01) -> tuple:
+    return (
+        Param("rho", 7850.0, float, "kg/m^3", "density", lo=0, lo_open=True),
+        Param("integrator", integrator, str, doc="time integrator", choices=INTEGRATORS),
+        Param("rtol", rtol, float, "-", "relative tolerance (scipy integrators)",
+              lo=0, lo_open=True, hi=0.1),
+        Param("atol", atol, float, "-", "absolute tolerance (scipy integrators; m and m/s)",
+              lo=0, lo_open=True, hi=1.0),
+        Param("dt", dt, float, "s", "time step (generalized-alpha; above output_dt the samples "
+              "are interpolated)", lo=0, lo_open=True, hi=1.0),
+        Param("rho_inf", rho_inf, float, "-",
+              "generalized-alpha spectral radius at infinite frequency (1 = no dissipation)",
+              lo=0, hi=1),
+        Param("t_end", t_end, float, "s", "simulated time", lo=0, lo_open=True, hi=1e4),
+        Param("output_dt", output_dt, float, "s", "sampling interval of the results",
+              lo=0, lo_open=True, hi=10),
+        Param("constraints", "elimination", str, doc="constraint form",
+              choices=("elimination", "lagrange")),
+        Param("baumgarte", 20.0, float, "1/s",
+              "Baumgarte alpha = beta of the multiplier form with scipy integrators (0: off)",
+              lo=0, hi=1e6),
+        Param("max_steps", 50_000, int, doc="step budget (beyond it: not converged)",
+              lo=1, hi=10_000_000),
+    )
+
+
+def check(p: dict) -> None:
+    bs.check_integration(p)
+    if p["output_dt"] > p["t_end"]:
+        raise InputError(f"output_dt = {p['output_dt']!r} is out of range; allowed: a number in "
+                         f"(0, t_end = {p['t_end']:g}]")
+
+
+def build(p: dict):
+    """(mesh, q0, assembly) of a straight beam along +x from the origin, with density."""
+    cls = bs.ELEMENTS[p["element"]]
+    mesh = BeamMesh(p["L"], p["n_elements"], cls.slots)
+    q0 = mesh.reference()
+    kw = {"ks": p["ks"]} if cls is LinearBeam2D else {}
+    el = cls(mesh.lengths, q0[mesh.dofmap], RectangularSection(p["b"], p["h"]), p["E"], p["nu"],
+             rho=p["rho"], integration=p["integration"], **kw)
+    return mesh, q0, Assembly(mesh.n_dofs, [ElementGroup(el, mesh.dofmap)])
+
+
+def model(p: dict, assembly, terms, elim):
+    """The elimination or the Lagrange-multiplier model of the same constraints."""
+    forces = Forces(assembly.n_dofs, terms)
+    if p["constraints"] == "elimination":
+        return ReducedModel(assembly, forces, elim.rheonomic()), forces
+    return MultiplierModel(assembly, forces, LinearConstraints.from_elimination(elim),
+                           Baumgarte(p["baumgarte"], p["baumgarte"])), forces
+
+
+def times(p: dict) -> np.ndarray:
+    """Sample times 0, output_dt, 2 output_dt, ... and t_end."""
+    n = int(np.ceil(p["t_end"] / p["output_dt"] - 1e-9))
+    return np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
+
+
+def simulate(p: dict, mdl, q0, v0):
+    return integrate(mdl, q0, v0, times(p), p["integrator"], rtol=p["rtol"], atol=p["atol"],
+                     dt=p["dt"], rho_inf=p["rho_inf"], max_steps=p["max_steps"])
+
+
+def energies(assembly, forces, res):
+    return energy_history(assembly, forces, res.t, res.q, res.v)
+
+
+def stats(res) -> dict:
+    """Run statistics for the public results."""
+    s = res.stats()
+    s["samples"] = int(res.t.size)
+    s["t_reached"] = float(res.t[-1]) if res.t.size else 0.0
+    return s
+
+
+def as_list(a) -> list:
+    return [float(x) for x in np.asarray(a)]

@@ -1,0 +1,355 @@
+"""Equations of motion M e'' = Q_e + Q_k (thesis Eqs 2.27-2.32) and their integration.
+
+Two forms of the same constrained system, interchangeable in every integrator:
+
+* :class:`ReducedModel` (elimination): q = T z + g(t), so
+  ``M_r z'' = T^T (Q(q, q', t) - M g''(t))`` with ``M_r = T^T M T`` factored once.
+* :class:`MultiplierModel` (Lagrange multipliers, Eq. 2.32): all coordinates,
+  ``M q'' + C_e^T lam = Q`` and the constraints; M factored once, the multipliers
+  from the Schur complement ``C_e M^-1 C_e^T`` (constant for linear constraints).
+
+A model exposes ``n``, ``M`` and the tangents (dense numpy up to
+``DENSE_MAX`` global coordinates, where sparse bookkeeping would cost more than
+the arithmetic; sparse CSR above), ``force`` / ``tangent`` (for the
+generalised-alpha scheme, ``ancf.solvers.generalized_alpha``), ``acc`` /
+``acc_jacobian`` (the first-order ODE for scipy's integrators; that Jacobian
+is always dense, since M^-1 of the consistent mass is full) and ``full``
+(global q, q').  :func:`integrate` runs either integrator family and returns a
+:class:`DynamicResult`; non-convergence (failed step, step collapse, NaN or
+blow-up, step budget) is ``converged=False`` plus a ``message``, never an
+exception and never a silent NaN.
+"""
+from __future__ import annotations
+
+import time
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.integrate as si
+import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+IVP_METHODS = {"rk45": si.RK45, "dop853": si.DOP853, "radau": si.Radau, "bdf": si.BDF}
+IMPLICIT = ("radau", "bdf")
+INTEGRATORS = tuple(IVP_METHODS) + ("generalized-alpha",)
+
+
+@dataclass
+class DynamicResult:
+    """Samples (t, global q and q') up to where the run got, with its statistics."""
+
+    t: np.ndarray
+    q: np.ndarray
+    v: np.ndarray
+    converged: bool
+    message: str
+    integrator: str
+    steps: int = 0
+    nfev: int = 0
+    njev: int = 0
+    nlu: int = 0
+    newton_iterations: int = 0
+    rejected_steps: int = 0
+    cpu_time_s: float = 0.0
+    constraint_violation: float = 0.0  # max |C(q, t)| over the samples, m (0 by elimination)
+    multipliers: np.ndarray | None = None  # (n_samples, m) for the multiplier form
+    extra: dict = field(default_factory=dict)
+
+    def stats(self) -> dict:
+        return {"integrator": self.integrator, "steps": self.steps, "nfev": self.nfev,
+                "njev": self.njev, "nlu": self.nlu, "newton_iterations": self.newton_iterations,
+                "rejected_steps": self.rejected_steps, "integration_cpu_s": self.cpu_time_s,
+                "constraint_violation_m": self.constraint_violation}
+
+
+class _Dense:
+    """Dense inverse of a constant SPD matrix, computed once, for Jacobians."""
+
+    def __init__(self, lu, n):
+        self._lu, self._n, self._inv = lu, n, None
+
+    @property
+    def inv(self) -> np.ndarray:
+        if self._inv is None:
+            self._inv = self._lu.solve(np.eye(self._n))
+        return self._inv
+
+
+#: systems up to this many global coordinates use dense tangents and LU (the sparse
+#: bookkeeping costs more than the arithmetic for the small beams of the papers)
+DENSE_MAX = 400
+
+
+def _factor(M):
+    return spla.splu(sp.csc_matrix(M))
+
+
+def _dense(A):
+    return A.toarray() if sp.issparse(A) else np.asarray(A)
+
+
+def assembled_tangent(assembly, q, dense: bool):
+    """dU/dq and d2U/dq2, dense (np.add.at on the element blocks) or sparse CSR."""
+    if not dense:
+        return assembly.gradient_tangent(q)
+    n = assembly.n_dofs
+    g, K = np.zeros(n), np.zeros((n, n))
+    for grp in assembly.groups:
+        ge, Ke = grp.element.gradient(q[grp.dofmap], tangent=True)
+        np.add.at(g, grp.dofmap, ge)
+        np.add.at(K, (grp.rows, grp.cols), Ke.ravel())
+    return g, K
+
+
+def _mul(A, B):
+    """Dense A @ B for B dense or sparse."""
+    return (B.T @ A.T).T if sp.issparse(B) else A @ B
+
+
+class ReducedModel:
+    """Elimination form q = T z + g(t) (``rheo`` from ``Elimination.rheonomic()``)."""
+
+    form = "elimination"
+    constraints = None
+
+    def __init__(self, assembly, forces, rheo, dense: bool | None = None):
+        self.assembly, self.forces, self.rheo = assembly, forces, rheo
+        self.dense = assembly.n_dofs <= DENSE_MAX if dense is None else dense
+        self.T = rheo.T.tocsr()
+        self.TT = self.T.T.tocsr()
+        self.M_full = assembly.mass()
+        M = (self.TT @ self.M_full @ self.T).tocsr()
+        self.n = self.T.shape[1]
+        self.lu = _factor(M)
+        self.minv = _Dense(self.lu, self.n)
+        self.M = M.toarray() if self.dense else M
+        self._Td = self.T.toarray() if self.dense else None
+
+    def full(self, z, zd, t):
+        return self.T @ z + self.rheo.g(t), self.T @ zd + self.rheo.g(t, 1)
+
+    def initial(self, q0, v0):
+        return np.asarray(q0)[self.rheo.free].copy(), np.asarray(v0)[self.rheo.free].copy()
+
+    def _inertial(self, t):
+        if not self.rheo.time_dependent:
+            return 0.0
+        return self.TT @ (self.M_full @ self.rheo.g(t, 2))
+
+    def force(self, z, zd, t):
+        q, v = self.full(z, zd, t)
+        Q = self.forces.value(q, v, t) - self.assembly.gradient(q)
+        return self.TT @ Q - self._inertial(t)
+
+    def tangent(self, z, zd, t):
+        """(F_r, K_r = -dF_r/dz, D_r = -dF_r/dz' or None), sparse."""
+        q, v = self.full(z, zd, t)
+        grad, K = assembled_tangent(self.assembly, q, self.dense)
+        Kq, Kv = self.forces.jacobians(q, v, t)
+        F = self.TT @ (self.forces.value(q, v, t) - grad) - self._inertial(t)
+        if Kq is not None:
+            K = K - (_dense(Kq) if self.dense else Kq)
+        if self.dense:
+            Td = self._Td
+            return F, Td.T @ K @ Td, None if Kv is None else -(Td.T @ _dense(Kv) @ Td)
+        D = None if Kv is None else -(self.TT @ Kv @ self.T).tocsr()
+        return F, (self.TT @ K @ self.T).tocsr(), D
+
+    def acc(self, z, zd, t):
+        return self.lu.solve(self.force(z, zd, t))
+
+    def acc_jacobian(self, z, zd, t):
+        """Dense d(acc)/dz = -M_r^-1 K_r and d(acc)/dz' = -M_r^-1 D_r."""
+        _, K, D = self.tangent(z, zd, t)
+        Jv = np.zeros((self.n, self.n)) if D is None else -_mul(self.minv.inv, D)
+        return -_mul(self.minv.inv, K), Jv
+
+    def violation(self, z, t) -> float:
+        return 0.0
+
+
+class MultiplierModel:
+    """Lagrange-multiplier form (Eq. 2.32) with Baumgarte drift control for the
+    index-1 (acceleration) form; ``constraints`` from ``ancf.multipliers``."""
+
+    form = "lagrange"
+
+    def __init__(self, assembly, forces, constraints, baumgarte, dense: bool | None = None):
+        self.assembly, self.forces = assembly, forces
+        self.constraints, self.baumgarte = constraints, baumgarte
+        self.dense = assembly.n_dofs <= DENSE_MAX if dense is None else dense
+        M = assembly.mass().tocsr()
+        self.n = M.shape[0]
+        self.lu = _factor(M)
+        self.M = M.toarray() if self.dense else M
+        self.minv = _Dense(self.lu, self.n)
+        self._schur = None
+        if constraints.constant_jacobian:
+            self._schur = self._schur_of(constraints.jacobian(None, 0.0))
+
+    def _schur_of(self, B):
+        Y = self.lu.solve(np.asarray(B.T.todense()))  # M^-1 C_e^T, (n, m)
+        return B, Y, sla.cho_factor(B @ Y)
+
+    def full(self, q, v, t):
+        return q, v
+
+    def initial(self, q0, v0):
+        return np.asarray(q0, dtype=float).copy(), np.asarray(v0, dtype=float).copy()
+
+    def force(self, q, v, t):
+        return self.forces.value(q, v, t) - self.assembly.gradient(q)
+
+    def tangent(self, q, v, t):
+        grad, K = assembled_tangent(self.assembly, q, self.dense)
+        Kq, Kv = self.forces.jacobians(q, v, t)
+        conv = _dense if self.dense else (lambda A: sp.csr_matrix(A))
+        if Kq is not None:
+            K = K - conv(Kq)
+        return self.forces.value(q, v, t) - grad, K, None if Kv is None else -conv(Kv)
+
+    def _schur_at(self, q, t):
+        return self._schur or self._schur_of(self.constraints.jacobian(q, t))
+
+    def multipliers(self, q, v, t):
+        """(acceleration, lambda) of the stabilised Eq. 2.32."""
+        B, Y, S = self._schur_at(q, t)
+        a0 = self.lu.solve(self.force(q, v, t))
+        lam = sla.cho_solve(S, B @ a0 - self.baumgarte.qd(self.constraints, q, v, t))
+        return a0 - Y @ lam, lam
+
+    def acc(self, q, v, t):
+        return self.multipliers(q, v, t)[0]
+
+    def acc_jacobian(self, q, v, t):
+        """Dense d(acc)/dq and d(acc)/dq' of the stabilised index-1 form (exact for
+        linear constraints; for nonlinear ones the derivative of C_e is left out)."""
+        B, Y, S = self._schur_at(q, t)
+        _, K, D = self.tangent(q, v, t)
+        MK = _mul(self.minv.inv, K)  # M^-1 K
+        P = lambda A: A - Y @ sla.cho_solve(S, B @ A)  # noqa: E731  (I - Y S^-1 B) A
+        dq, dv = self.baumgarte.qd_jacobians(self.constraints, q, t)
+        Jq = -P(MK) + Y @ sla.cho_solve(S, np.asarray(dq.todense()))
+        Jv = Y @ sla.cho_solve(S, np.asarray(dv.todense()))
+        if D is not None:
+            Jv = Jv - P(_mul(self.minv.inv, D))
+        return Jq, Jv
+
+    def violation(self, q, t) -> float:
+        c = self.constraints.value(q, t)
+        return float(np.max(np.abs(c))) if c.size else 0.0
+
+
+class _Abort(Exception):
+    pass
+
+
+def _ivp_fun(model, n, budget):
+    """y' = [x', acc]; trial stages may be wild (the step is then rejected), so only
+    the accepted states are checked for blow-up, in :func:`integrate_ivp`."""
+    calls = [0]
+
+    def fun(t, y):
+        calls[0] += 1
+        if calls[0] > budget:
+            raise _Abort(f"function-evaluation budget of {budget} exhausted at t = {t:.6g} s")
+        with np.errstate(all="ignore"):
+            return np.concatenate([y[n:], model.acc(y[:n], y[n:], t)])
+    return fun
+
+
+def _ivp_jac(model, n):
+    def jac(t, y):
+        Jq, Jv = model.acc_jacobian(y[:n], y[n:], t)
+        return np.block([[np.zeros((n, n)), np.eye(n)], [Jq, Jv]])
+    return jac
+
+
+def _samples(model, t_out, X):
+    """Global q, q' at the samples from the integrated states X (k, 2n)."""
+    n = model.n
+    pairs = [model.full(x[:n], x[n:], t) for t, x in zip(t_out, X)]
+    return np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
+
+
+def _step_loop(solver, t_out, max_steps, limit, X, count):
+    """Advance ``solver`` to t_out[-1], appending its dense output at t_out to X and
+    counting accepted steps in count[0].  Returns (ok, message)."""
+    k = 1
+    while solver.status == "running":
+        if count[0] >= max_steps:
+            return False, f"step budget of {max_steps} exhausted at t = {solver.t:.6g} s"
+        m = solver.step()
+        count[0] += 1
+        if solver.status == "failed":
+            return False, f"step size collapse at t = {solver.t:.6g} s ({m})"
+        if not np.all(np.isfinite(solver.y)):
+            return False, f"non-finite state at t = {solver.t:.6g} s"
+        if np.max(np.abs(solver.y)) > limit:
+            return False, (f"blow-up: |y| exceeded {limit:.3g} at t = {solver.t:.6g} s "
+                           "(energy growing without bound)")
+        j = int(np.searchsorted(t_out, solver.t, side="right"))
+        if j > k:
+            X.extend(np.atleast_2d(solver.dense_output()(t_out[k:j]).T))
+            k = j
+    return True, "reached t_end"
+
+
+def integrate_ivp(model, x0, v0, t_out, method="dop853", rtol=1e-8, atol=1e-10,
+                  max_steps=200_000, y_limit=1e6) -> DynamicResult:
+    """scipy integrator (``rk45``, ``dop853``, ``radau``, ``bdf``) on y = [x, x'], stepped
+    by hand so that steps can be counted and failures reported.  Implicit methods get
+    the analytic Jacobian (dense: M^-1 is full for the consistent mass)."""
+    n, t_out = model.n, np.asarray(t_out, dtype=float)
+    y0 = np.concatenate([x0, v0])
+    kw = {"jac": _ivp_jac(model, n)} if method in IMPLICIT else {}
+    t0 = time.process_time()
+    X, count, solver = [y0], [0], None
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        try:
+            solver = IVP_METHODS[method](_ivp_fun(model, n, 20 * max_steps), t_out[0], y0,
+                                         t_out[-1], rtol=rtol, atol=atol, **kw)
+            ok, msg = _step_loop(solver, t_out, max_steps, y_limit * (1.0 + np.max(np.abs(y0))),
+                                 X, count)
+        except _Abort as exc:
+            ok, msg = False, str(exc)
+        except (np.linalg.LinAlgError, ValueError, RuntimeError) as exc:
+            ok, msg = False, f"stopped: {exc}"
+    cpu = time.process_time() - t0
+    X = np.array(X)
+    finite = np.all(np.isfinite(X), axis=1)
+    if not finite.all():
+        ok, msg, X = False, "non-finite state in the output", X[: int(np.argmin(finite))]
+    elif ok and len(X) < t_out.size:
+        ok, msg = False, "stopped before t_end"
+    q, v = _samples(model, t_out[:len(X)], X)
+    res = DynamicResult(t_out[:len(X)], q, v, ok, msg if ok else f"{method}: {msg}", method, count[0],
+                        getattr(solver, "nfev", 0), getattr(solver, "njev", 0),
+                        getattr(solver, "nlu", 0), cpu_time_s=cpu)
+    return _finish(model, res, X[:, :n])
+
+
+def _finish(model, res: DynamicResult, X) -> DynamicResult:
+    """Constraint violation and multipliers at the samples (multiplier form)."""
+    if model.constraints is not None and len(X):
+        res.constraint_violation = max(model.violation(x, t) for x, t in zip(X, res.t))
+        if res.multipliers is None:
+            res.multipliers = np.array([model.multipliers(q, v, t)[1]
+                                        for q, v, t in zip(res.q, res.v, res.t)])
+    return res
+
+
+def integrate(model, q0, v0, t_out, integrator: str, *, rtol=1e-8, atol=1e-10, dt=1e-3,
+              rho_inf=0.9, max_steps=200_000) -> DynamicResult:
+    """Integrate from global q0, q0' over the sample times ``t_out`` (first = start)."""
+    x0, xd0 = model.initial(q0, v0)
+    if integrator == "generalized-alpha":
+        from ancf.solvers.generalized_alpha import AlphaOptions, integrate_generalized_alpha
+        return integrate_generalized_alpha(model, x0, xd0, t_out,
+                                           AlphaOptions(dt=dt, rho_inf=rho_inf, max_steps=max_steps))
+    if integrator not in IVP_METHODS:
+        raise ValueError(f"integrator must be one of {', '.join(INTEGRATORS)} (got {integrator!r})")
+    return integrate_ivp(model, x0, xd0, t_out, integrator, rtol, atol, max_steps)
