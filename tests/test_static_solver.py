@@ -25,3 +25,15 @@ def test_residual_history_is_recorded_per_load_step():
     assert out["converged"] and len(res.extra["residuals"]) == out["results"]["load_steps_taken"]
     for hist in res.extra["residuals"]:
         assert hist[-1] < 1e-8 * 5e5  # rtol * |F|
+
+
+def test_singular_tangent_at_the_converged_point_is_not_a_solution():
+    """Omar-Shabana with 2 points along x (all=2xe), 4 elements, Model 2: Newton's
+    residual reaches the floor at a point whose tangent has a zero-energy mode (eigenvalue
+    ~1e-17 of the largest), so the equilibrium is not unique: reported, not accepted.
+    The thesis scheme at the same load has no zero eigenvalue."""
+    bad = dict(element="omar-shabana", integration="all=2xe", n_elements=4, h=0.5, nu=0.0)
+    out, _ = SCENES["cantilever"].execute(bad)
+    assert not out["converged"] and "unique" in out["message"]
+    good, _ = SCENES["cantilever"].execute(dict(bad, integration="thesis"))
+    assert good["converged"] and good["results"]["zero_tangent_eigenvalues"] == 0
