@@ -6,7 +6,8 @@
 Writes: a table of every benchmark (name, params, mean, stddev, rounds, extra info),
 element x n tables for the full solve and the Newton-iteration kernel, the
 linear / Omar-Shabana Newton-iteration time ratios against the thesis's ~0.5, and
-the machine description.  Standard library only.
+the pendulum timings (Table 2.5 ratio, cost per simulated second vs n) and the
+machine description.
 """
 from __future__ import annotations
 
@@ -14,6 +15,8 @@ import argparse
 import json
 import sys
 from pathlib import Path
+
+import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_JSON = ROOT / "reports" / "benchmarks" / "benchmark.json"
@@ -106,6 +109,116 @@ def ratio_table(benches) -> str | None:
                      "samples"], rows)
 
 
+def pendulum_table(benches) -> str | None:
+    """(element, integrator) x n table of the 1 s pendulum's median time."""
+    cells = {}
+    for b in benches:
+        if short_name(b) == "test_pendulum":
+            p = b["params"]
+            cells[(p["element"], p["integrator"], p["n"])] = b["stats"]["median"]
+    if not cells:
+        return None
+    ns = sorted({k[2] for k in cells})
+    keys = sorted({k[:2] for k in cells})
+    rows = [[f"{el}, {integ}"] + [fmt_time(cells.get((el, integ, n))) for n in ns]
+            for el, integ in keys]
+    return md_table(["element, integrator"] + [f"n = {n}" for n in ns], rows)
+
+
+def pendulum_ratio_table(benches) -> str | None:
+    rows = []
+    for b in sorted((b for b in benches if short_name(b) == "test_pendulum_ratio"),
+                    key=lambda b: (b["params"]["integrator"], b["params"]["n"])):
+        e = b["extra_info"]
+        thesis = e.get("thesis_ratio")
+        rows.append([e["n_elements"], e["integrator"], fmt_time(e["linear_median_s"]),
+                     fmt_time(e["omar_shabana_median_s"]), f"**{e['ratio_linear_over_os']:.3f}**",
+                     f"[{e['ratio_paired_q25']:.3f}, {e['ratio_paired_q75']:.3f}]",
+                     "–" if thesis is None else f"{thesis:g}",
+                     f"{e['steps_linear']} / {e['steps_omar_shabana']}", e["samples"]])
+    if not rows:
+        return None
+    return md_table(["n", "integrator", "linear median", "Omar–Shabana median", "ratio lin/OS",
+                     "paired ratio IQR", "thesis Table 2.5", "steps lin / OS", "samples"], rows)
+
+
+def scaling_table(benches):
+    """n x integrator table of CPU seconds per simulated second, plus growth exponents."""
+    cells = {}
+    for b in benches:
+        if short_name(b) == "test_cost_per_simulated_second":
+            e = b["extra_info"]
+            cells[(e["integrator"], e["n_elements"])] = (b["stats"]["median"] / e["t_end_s"],
+                                                         e.get("steps"))
+    if not cells:
+        return None, cells
+    ns = sorted({n for _, n in cells})
+    integs = sorted({i for i, _ in cells})
+    rows = []
+    for n in ns:
+        row = [n]
+        for i in integs:
+            c = cells.get((i, n))
+            row += ["–", "–"] if c is None else [fmt_time(c[0]), c[1]]
+        rows.append(row)
+    header = ["n"] + [h for i in integs for h in (f"{i}: CPU per simulated s", f"{i}: steps")]
+    return md_table(header, rows), cells
+
+
+def scaling_plot(cells, out: Path) -> str | None:
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return None
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for integ in sorted({i for i, _ in cells}):
+        ns = sorted(n for i, n in cells if i == integ)
+        ax.loglog(ns, [cells[(integ, n)][0] for n in ns], "o-", label=integ)
+    ax.set(xlabel="number of linear elements", ylabel="CPU s per simulated s",
+           title="Flexible pendulum: cost of refinement")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    return out.name
+
+
+def growth_exponents(cells) -> str:
+    parts = []
+    for integ in sorted({i for i, _ in cells}):
+        ns = sorted(n for i, n in cells if i == integ)
+        if len(ns) >= 2:
+            slope = np.polyfit(np.log(ns[-3:]), np.log([cells[(integ, n)][0] for n in ns[-3:]]), 1)[0]
+            parts.append(f"{integ} ∝ n^{slope:.2f}")
+    return ", ".join(parts)
+
+
+def dynamics_sections(benches, out_dir: Path = DEFAULT_OUT.parent) -> list:
+    parts = []
+    table = pendulum_table(benches)
+    if table:
+        parts += ["## Flexible pendulum, 1 s, median time", "",
+                  "`SCENES['pendulum'].execute` (thesis Fig. 2.5; DOP853 rtol 1e-8, Radau rtol 1e-6 "
+                  "with the analytic Jacobian, generalised-α dt 1e-3).", "", table, ""]
+    ratios = pendulum_ratio_table(benches)
+    if ratios:
+        parts += ["## Pendulum CPU-time ratio, linear / Omar–Shabana (thesis Table 2.5)", "",
+                  "Both elements run alternately in one benchmark (order swapped each round); "
+                  "process time, median over the rounds.", "", ratios, ""]
+    scaling, cells = scaling_table(benches)
+    if scaling:
+        parts += ["## Cost per simulated second vs number of elements", "",
+                  "Linear element, pendulum run for a short time and scaled to one simulated second. "
+                  f"Growth over the last three n: {growth_exponents(cells)}.", "", scaling, ""]
+        png = scaling_plot(cells, out_dir / "cost_per_simulated_second.png")
+        if png:
+            parts += [f"![cost per simulated second]({png})", ""]
+    return parts
+
+
 def machine_section(data) -> str:
     mi = data.get("machine_info", {})
     am = mi.get("ancf_machine")
@@ -127,7 +240,7 @@ def machine_section(data) -> str:
     return "\n".join(lines)
 
 
-def render(data, json_name: str) -> str:
+def render(data, json_name: str, out_dir: Path = DEFAULT_OUT.parent) -> str:
     benches = data.get("benchmarks", [])
     parts = [
         "# ancf-bench benchmarks",
@@ -165,6 +278,7 @@ def render(data, json_name: str) -> str:
                   "times shorter than with the Omar–Shabana element (ratio ≈ 0.5). "
                   "`ratio lin/OS` = median(linear) / median(Omar–Shabana); the paired ratio is the "
                   "median of the per-round ratios.", "", ratios, ""]
+    parts += dynamics_sections(benches, out_dir)
     parts += ["## All benchmarks", "", all_benchmarks_table(benches), "",
               "## Machine", "", machine_section(data), ""]
     return "\n".join(parts)
@@ -184,7 +298,7 @@ def main(argv=None) -> int:
     except ValueError:
         name = a.json
     a.out.parent.mkdir(parents=True, exist_ok=True)
-    a.out.write_text(render(data, str(name)))
+    a.out.write_text(render(data, str(name), a.out.parent))
     print(f"wrote {a.out}")
     return 0
 
