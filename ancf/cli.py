@@ -57,6 +57,7 @@ def _run(registry, kind, args) -> int:
 
 def _sweep(args) -> int:
     from ancf.scenes import SCENES
+    from ancf.references import spec
     from ancf.sweep import parse_grid, run_sweep
     if args.name not in SCENES:
         raise InputError(f"sweep: unknown scene {args.name!r}; allowed: {', '.join(SCENES)}")
@@ -78,7 +79,8 @@ def _sweep(args) -> int:
     counts = {k: int(v) for k, v in df["status"].value_counts().items()} if len(df) else {}
     if args.json:
         print(json.dumps({"scene": args.name, "out": str(out), "rows": int(len(df)),
-                          "status": counts, "reference": args.reference}))
+                          "status": counts,
+                          "reference": args.reference or spec(args.name).default_reference}))
     else:
         print(out)
     return 0

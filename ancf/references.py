@@ -337,11 +337,14 @@ def _axial_bar_spec() -> SceneSpec:
 
 
 def _dynamic_grids(ns):
-    """Time integrators x tolerances / step sizes for the dynamic scenes."""
-    return ({"element": ["linear"], "integration": ["thesis"], "n_elements": list(ns),
-             "integrator": ["generalized-alpha"], "dt": [1e-2, 3e-3, 1e-3]},
-            {"element": ["linear"], "integration": ["thesis"], "n_elements": list(ns),
-             "integrator": ["rk45", "dop853", "radau", "bdf"], "rtol": [1e-4, 1e-6]})
+    """Both elements x time integrators x tolerances / step sizes for the dynamic scenes."""
+    grids = []
+    for element in ("linear", "omar-shabana"):
+        grids += [{"element": [element], "integration": ["thesis"], "n_elements": list(ns),
+                   "integrator": ["generalized-alpha"], "dt": [1e-2, 3e-3, 1e-3]},
+                  {"element": [element], "integration": ["thesis"], "n_elements": list(ns),
+                   "integrator": ["rk45", "dop853", "radau", "bdf"], "rtol": [1e-4, 1e-6]}]
+    return tuple(grids)
 
 
 def _dynamic_ref(scene: str, name: str):
@@ -404,7 +407,9 @@ def _spinning_spec() -> SceneSpec:
             "over the last mean_window seconds", _spinning_ref, _rel("axial_extension_m")),
     }
     grids = ({"element": ["linear"], "integration": ["thesis"], "n_elements": [2, 3, 4, 8],
-              "integrator": ["generalized-alpha"], "dt": [1e-2, 5e-3, 2.5e-3]},)
+              "integrator": ["generalized-alpha"], "dt": [1e-2, 5e-3, 2.5e-3]},
+             {"element": ["omar-shabana"], "integration": ["thesis"], "n_elements": [2, 3, 4],
+              "integrator": ["generalized-alpha"], "dt": [1e-2, 5e-3]})
     return SceneSpec("spinning-beam", DYNAMIC_KNOBS,
                      frozenset({"axial", "large-rotation", "inertia"}), refs, "spinning-extension",
                      report_grids=grids, recommend_grids=grids, dynamic=True,
