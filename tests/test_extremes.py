@@ -15,7 +15,7 @@ from ancf import extremes
 from ancf.sweep import run_sweep
 
 ISSUE_AXES = {"slenderness", "poisson", "elements", "load", "spinning", "penalty", "nu_s",
-              "time-steps", "load-steps"}
+              "time-steps", "load-steps", "stiff-steps"}
 
 
 @pytest.fixture(scope="module")
@@ -79,6 +79,24 @@ def test_diverging_cases_are_reported_with_a_diagnosis(tmp):
             "time limit exceeded"} <= diag
     slow = df[df["status"] == "timeout"].iloc[0]
     assert slow["message"] == "time limit exceeded (2 s)" and slow["wall_time_s"] < 30
+
+
+@pytest.mark.slow
+def test_stiff_pendulum_steps_end_in_a_result_or_a_diagnosis(tmp):
+    """E = 2.07e11 pendulum: an explicit scheme runs out of its step budget (stable step
+    ~1e-5 s), BDF at a loose tolerance blows up, generalised-alpha at 1000x the explicit
+    step stays within 1 % of L of the rigid pendulum."""
+    stiff = {"E": [2.07e11], "n_elements": [4], "t_end": [0.05]}
+    grids = [{"integrator": ["dop853"], "rtol": [1e-2], "max_steps": [200], **stiff},
+             {"integrator": ["bdf"], "rtol": [1e-2], **stiff},
+             {"integrator": ["generalized-alpha"], "dt": [0.01], **dict(stiff, t_end=[1.0])}]
+    df = run_sweep("pendulum", grids, out=tmp / "stiff.parquet", workers=2, progress=False,
+                   log=lambda m: None, reference="rigid-pendulum", time_limit=120.0)
+    diag = {r["integrator"]: extremes.diagnosis(r) for _, r in df.iterrows()}
+    assert diag == {"dop853": "step budget exceeded", "bdf": "energy blow-up",
+                    "generalized-alpha": "ok"}
+    ok = df[df["integrator"] == "generalized-alpha"].iloc[0]
+    assert ok["error"] < 1e-2
 
 
 def test_every_issue_axis_is_declared_and_missing_scenes_are_said():
