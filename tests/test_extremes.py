@@ -6,7 +6,6 @@
 * every axis of the issue is declared, with the ones that need a missing scene saying so.
 """
 import math
-import os
 
 import pandas as pd
 import pytest
@@ -18,28 +17,16 @@ ISSUE_AXES = {"slenderness", "poisson", "elements", "load", "spinning", "penalty
               "time-steps", "load-steps", "stiff-steps"}
 
 
-@pytest.fixture(scope="module")
-def tmp(tmp_path_factory):
-    d = tmp_path_factory.mktemp("extremes")
-    old = os.environ.get("ANCF_CACHE")
-    os.environ["ANCF_CACHE"] = str(d / "cache")
-    yield d
-    if old is None:
-        os.environ.pop("ANCF_CACHE", None)
-    else:
-        os.environ["ANCF_CACHE"] = old
-
-
-def _run(tmp, name, grids, **kw):
+def _run(workdir, name, grids, **kw):
     kw.setdefault("time_limit", 60.0)
-    return run_sweep("cantilever", grids, out=tmp / f"{name}.parquet", workers=2,
+    return run_sweep("cantilever", grids, out=workdir / f"{name}.parquet", workers=2,
                      progress=False, log=lambda m: None, **kw)
 
 
 @pytest.fixture(scope="module")
-def slender(tmp):
+def slender(workdir):
     sl = extremes.small_load(1e4)
-    return _run(tmp, "slender", {"element": ["linear"], "integration": ["thesis", "exact"],
+    return _run(workdir, "slender", {"element": ["linear"], "integration": ["thesis", "exact"],
                                  "n_elements": [64], "nu": [0.3], "load_steps": [1], **{
                                      k: [v] for k, v in sl.items()}}, reference="timoshenko")
 
@@ -55,7 +42,7 @@ def test_exact_integration_locks_at_slenderness_1e4(slender):
     assert r["status"] == "ok" and r["error"] > 0.5
 
 
-def test_diverging_cases_are_reported_with_a_diagnosis(tmp):
+def test_diverging_cases_are_reported_with_a_diagnosis(workdir):
     grids = [
         # Newton cannot converge with one iteration per step: diverged, with the load factor
         {"F": [-5e6], "n_elements": [16], "max_iterations": [1, 3]},
@@ -66,7 +53,7 @@ def test_diverging_cases_are_reported_with_a_diagnosis(tmp):
         # a run over its time limit
         {"element": ["omar-shabana"], "n_elements": [4096], "stability_check": ["off"]},
     ]
-    df = _run(tmp, "diverging", grids, time_limit=2.0)
+    df = _run(workdir, "diverging", grids, time_limit=2.0)
     df["diagnosis"] = [extremes.diagnosis(r) for _, r in df.iterrows()]
     assert len(df) == 5
     for _, r in df.iterrows():
@@ -82,7 +69,7 @@ def test_diverging_cases_are_reported_with_a_diagnosis(tmp):
 
 
 @pytest.mark.slow
-def test_stiff_pendulum_steps_end_in_a_result_or_a_diagnosis(tmp):
+def test_stiff_pendulum_steps_end_in_a_result_or_a_diagnosis(workdir):
     """E = 2.07e11 pendulum: an explicit scheme runs out of its step budget (stable step
     ~1e-5 s), BDF at a loose tolerance blows up, generalised-alpha at 1000x the explicit
     step stays within 1 % of L of the rigid pendulum."""
@@ -90,7 +77,7 @@ def test_stiff_pendulum_steps_end_in_a_result_or_a_diagnosis(tmp):
     grids = [{"integrator": ["dop853"], "rtol": [1e-2], "max_steps": [200], **stiff},
              {"integrator": ["bdf"], "rtol": [1e-2], **stiff},
              {"integrator": ["generalized-alpha"], "dt": [0.01], **dict(stiff, t_end=[1.0])}]
-    df = run_sweep("pendulum", grids, out=tmp / "stiff.parquet", workers=2, progress=False,
+    df = run_sweep("pendulum", grids, out=workdir / "stiff.parquet", workers=2, progress=False,
                    log=lambda m: None, reference="rigid-pendulum", time_limit=120.0)
     diag = {r["integrator"]: extremes.diagnosis(r) for _, r in df.iterrows()}
     assert diag == {"dop853": "step budget exceeded", "bdf": "energy blow-up",

@@ -28,18 +28,6 @@ SAME = ["key", "element", "integration", "n_elements", "h", "nu", "F", "status",
         "error", "res_tip_x", "res_tip_y", "res_newton_iterations", "steps"]
 
 
-@pytest.fixture(scope="module")
-def workdir(tmp_path_factory):
-    d = tmp_path_factory.mktemp("sweep")
-    old = os.environ.get("ANCF_CACHE")
-    os.environ["ANCF_CACHE"] = str(d / "cache")
-    yield d
-    if old is None:
-        os.environ.pop("ANCF_CACHE", None)
-    else:
-        os.environ["ANCF_CACHE"] = old
-
-
 def _cli(*argv):
     env = dict(os.environ)
     return subprocess.Popen([sys.executable, "-m", "ancf.cli", *argv], stdout=subprocess.PIPE,
