@@ -15,14 +15,9 @@ KEYS = {"scene", "tol", "params", "error", "reference", "cpu_time_s"}
 
 
 @pytest.fixture(scope="module", autouse=True)
-def cache(tmp_path_factory):
-    old = os.environ.get("ANCF_CACHE")
-    os.environ["ANCF_CACHE"] = str(tmp_path_factory.mktemp("cache"))
-    yield
-    if old is None:
-        os.environ.pop("ANCF_CACHE", None)
-    else:
-        os.environ["ANCF_CACHE"] = old
+def cache(workdir):
+    """Every test here uses the module's scratch reference cache."""
+    return workdir
 
 
 def _cli(capsys, *argv):
