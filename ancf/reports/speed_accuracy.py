@@ -73,7 +73,8 @@ def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error") -> pd.Da
     return pd.DataFrame(rows)
 
 
-def plot(df: pd.DataFrame, scene: str, dynamic: bool, ax, err: str = "error", title=None):
+def plot(df: pd.DataFrame, scene: str, dynamic: bool, ax, err: str = "error", title=None,
+         legend: bool = True):
     ok = df[(df["status"] == "ok") & np.isfinite(df[err].astype(float))]
     groups = ok.groupby([_model(r, dynamic) for _, r in ok.iterrows()])
     markers = "osD^v<>phx*+"
@@ -83,12 +84,13 @@ def plot(df: pd.DataFrame, scene: str, dynamic: bool, ax, err: str = "error", ti
     front = pareto(ok, err=err)
     if len(front):
         ax.step(front["cpu_time_s"], np.maximum(front[err].astype(float), FLOOR), "k-",
-                where="post", lw=1.2, label="Pareto front")
+                where="post", lw=1.2, label="Pareto front", zorder=5)
     for tol in TOLERANCES:
         ax.axhline(tol, color="0.8", lw=0.6, zorder=0)
     ax.set(xlabel="CPU time per run [s]", ylabel="error", title=title or scene)
     ax.grid(True, which="both", alpha=0.25)
-    ax.legend(fontsize=7)
+    if legend:  # outside the axes, so it never hides the front
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
 
 
 def scene_sweep(scene: str, workers=None, fresh: bool = True) -> pd.DataFrame:
@@ -147,8 +149,9 @@ def speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
         data = df[[c for c in _CSV_COLS if c in df]]
         write_csv(data, f"speed_accuracy_{name.replace('-', '_')}")
         ncols = 2 if "error_self" in df else 1
-        fig, axes = plt.subplots(1, ncols, figsize=(6.2 * ncols, 4.4), squeeze=False)
-        plot(df, name, s.dynamic, axes[0][0], title=f"{name}: error vs {s.default_reference}")
+        fig, axes = plt.subplots(1, ncols, figsize=(6.2 * ncols + 2.6, 4.4), squeeze=False)
+        plot(df, name, s.dynamic, axes[0][0], title=f"{name}: error vs {s.default_reference}",
+             legend=ncols == 1)
         if ncols == 2:
             plot(df, name, s.dynamic, axes[0][1], err="error_self",
                  title=f"{name}: error vs converged self-reference")
