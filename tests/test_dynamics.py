@@ -224,6 +224,23 @@ def test_elimination_and_multipliers_agree(integrator, tol):
     assert outs["lagrange"]["results"]["constraint_violation_m"] < 1e-8
 
 
+@pytest.mark.parametrize("constraints", ["elimination", "lagrange"])
+@pytest.mark.parametrize("integrator", ["generalized-alpha", "radau"])
+def test_dense_and_sparse_paths_agree(monkeypatch, constraints, integrator):
+    """The model switches from dense to sparse algebra above DENSE_MAX coordinates;
+    both paths solve the same equations, so the trajectories agree to round-off
+    amplified by the Newton tolerance (1e-9 m over 0.1 s)."""
+    from ancf.solvers import dynamics
+    run = {"t_end": 0.1, "n_elements": 4, "integrator": integrator, "constraints": constraints}
+    tips = {}
+    for dense_max in (10**9, 0):
+        monkeypatch.setattr(dynamics, "DENSE_MAX", dense_max)
+        out = PEND.execute(run)[0]
+        assert out["converged"], out["message"]
+        tips[dense_max] = _tips(out)
+    assert np.abs(tips[10**9] - tips[0]).max() < 1e-9
+
+
 def test_rheonomic_constraint_both_forms_agree():
     """Driven hub slope: elimination vs Baumgarte-stabilised multipliers (Radau), 2 s."""
     common = {"t_end": 2.0, "mean_window": 1.0, "integrator": "radau", "rtol": 1e-6, "atol": 1e-9}
