@@ -2,7 +2,8 @@
 
 From sweep data (``--data FILE``, or a sweep of the scene's recommendation grid run on
 demand and cached under ``reports/.cache/recommend/``), the cheapest configuration
-(least CPU time) whose error against the scene's reference is at most ``tol``, among the
+(least CPU time, ties within the timing noise going to the smallest model, see
+``ancf.selection``) whose error against the scene's reference is at most ``tol``, among the
 configurations that provide every physics the scene needs (``ancf.references``).  The
 answer carries its evidence: the error and CPU time of the chosen run, how many runs
 were considered and met the tolerance, the runners-up, the runs excluded for lacking
@@ -17,6 +18,7 @@ import numpy as np
 import pandas as pd
 
 from ancf.references import cache_root, model_physics, spec, stable_hash
+from ancf.selection import COST_TIE, cheapest_first
 from ancf.scenes.base import InputError
 from ancf.sweep import read_rows, rows_for, run_sweep
 
@@ -139,7 +141,7 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     evidence["default_model"] = default
 
     if len(adequate):
-        order = adequate.sort_values(["cpu_time_s", "n_elements"], kind="stable")
+        order = cheapest_first(adequate)
         row = order.iloc[0]
         params = _params(row, names)
         result.update(params=params, error=float(row["error"]), cpu_time_s=float(row["cpu_time_s"]))
@@ -152,7 +154,9 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
         result["model"] = describe(params, s.dynamic)
         lines.append(f"{scene}: cheapest model with error <= {tol:g} against {ref.name}: "
                      f"{result['model']}; error {result['error']:.3g}, CPU {result['cpu_time_s']:.3g} s "
-                     f"({len(adequate)} of {len(df)} runs meet the tolerance).")
+                     f"({len(adequate)} of {len(df)} runs meet the tolerance; runs within "
+                     f"{100 * COST_TIE:g} % of the least CPU time count as equally cheap and the "
+                     f"smallest model among them is chosen).")
         lines.append(f"Physics needed: {', '.join(sorted(needs)) or 'none declared'}; the model "
                      f"provides {', '.join(provides)}.")
         if len(excluded):

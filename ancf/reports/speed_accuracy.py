@@ -20,6 +20,7 @@ from ancf.references import cache_root, rescore, specs  # noqa: E402
 from ancf.reports.output import (fmt, markdown_table, progress, save_figure,  # noqa: E402
                                  write_csv)
 from ancf.sweep import run_sweep  # noqa: E402
+from ancf.selection import COST_TIE, cheapest_first  # noqa: E402
 
 TOLERANCES = (1e-1, 1e-2, 1e-3, 1e-4)
 FLOOR = 1e-16  # plotted in place of an exact zero error
@@ -55,13 +56,14 @@ def _solver(row, dynamic: bool) -> str:
 
 
 def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error") -> pd.DataFrame:
-    """Per tolerance: the least-CPU run with error <= tolerance, or 'not reached'."""
+    """Per tolerance: the cheapest run with error <= tolerance (ties within the timing
+    noise go to the smaller model, ``ancf.selection``), or 'not reached'."""
     ok = df[(df["status"] == "ok") & np.isfinite(df[err].astype(float))]
     rows = []
     for tol in TOLERANCES:
         m = ok[ok[err] <= tol]
         if len(m):
-            r = m.loc[m["cpu_time_s"].astype(float).idxmin()]
+            r = cheapest_first(m, err).iloc[0]
             rows.append({"error ≤": f"{100 * tol:g} %", "model": _model(r, dynamic),
                          "n_elements": int(r["n_elements"]), "solver": _solver(r, dynamic),
                          "error": float(r[err]), "CPU ms": 1e3 * float(r["cpu_time_s"])})
@@ -119,6 +121,10 @@ def speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
              "scene's reference (`ancf/references.py`), cost is the CPU time of the run (process "
              "time, measured on the machine that generated this report, so ±20 % noise between "
              "runs). The Pareto front connects the runs that no other run beats in both. "
+             f"'Cheapest' treats runs within {100 * COST_TIE:g} % of the least CPU time as "
+             "equally cheap and takes the smallest model among them, then the smallest error "
+             "(`ancf/selection.py`), so that timing noise does not pick between equivalent "
+             "models. "
              "`ancf recommend SCENE --tol TOL` answers the last question of each section for a "
              "given tolerance.\n"]
     sp = specs()
