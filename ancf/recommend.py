@@ -141,7 +141,7 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     evidence["default_model"] = default
 
     if len(adequate):
-        order = cheapest_first(adequate)
+        order = cheapest_first(adequate, defaults={k: base[k] for k in s.knobs if k in base})
         row = order.iloc[0]
         params = _params(row, names)
         result.update(params=params, error=float(row["error"]), cpu_time_s=float(row["cpu_time_s"]))

@@ -4,7 +4,9 @@ CPU times of one sweep scatter by 10-20 % from run to run on a shared machine, a
 configurations of the small static scenes cost the same within that noise.  A pick by
 the smallest time alone would then flip between equivalent models from one report to
 the next.  Runs within ``COST_TIE`` of the cheapest time count as equally cheap; among
-them the smallest model wins (global coordinates), then the smallest error.
+them the smallest model wins (global coordinates), then the smallest error (to two
+significant digits: quadrature variants that agree to print precision are equivalent),
+then the run closest to the scene's defaults, then the least time.
 """
 from __future__ import annotations
 
@@ -24,16 +26,29 @@ def model_size(row) -> float:
     return (n + 1) * 2 * len(el.slots) if el is not None else n
 
 
-def cheapest_first(df: pd.DataFrame, err: str = "error", band: float = COST_TIE) -> pd.DataFrame:
-    """``df`` ordered cheapest first: the runs within ``band`` of the least CPU time,
-    by model size then error, followed by the rest by CPU time."""
+def _departures(df: pd.DataFrame, defaults: dict | None) -> np.ndarray:
+    """Per row, how many of the ``defaults`` keys it sets to another value."""
+    if not defaults:
+        return np.zeros(len(df))
+    keys = [k for k in defaults if k in df]
+    return np.array([sum(r[k] != defaults[k] for k in keys) for _, r in df[keys].iterrows()],
+                    dtype=float)
+
+
+def cheapest_first(df: pd.DataFrame, err: str = "error", band: float = COST_TIE,
+                   defaults: dict | None = None) -> pd.DataFrame:
+    """``df`` ordered cheapest first: the runs within ``band`` of the least CPU time, by
+    model size, error (2 significant digits), departures from ``defaults`` and time,
+    followed by the rest by CPU time."""
     if not len(df):
         return df
     cost = df["cpu_time_s"].astype(float)
-    tied = cost <= (1.0 + band) * cost.min()
+    tied = (cost <= (1.0 + band) * cost.min()).to_numpy()
     size = np.array([model_size(r) for _, r in df.iterrows()])
-    keys = pd.DataFrame({"tied": ~tied.to_numpy(), "size": np.where(tied, size, 0.0),
-                         "err": np.where(tied, df[err].astype(float), 0.0),
+    error = np.array([float(f"{e:.2g}") for e in df[err].astype(float)])
+    keys = pd.DataFrame({"tied": ~tied, "size": np.where(tied, size, 0.0),
+                         "err": np.where(tied, error, 0.0),
+                         "dep": np.where(tied, _departures(df, defaults), 0.0),
                          "cost": cost.to_numpy()}, index=df.index)
-    order = keys.sort_values(["tied", "size", "err", "cost"], kind="stable").index
+    order = keys.sort_values(["tied", "size", "err", "dep", "cost"], kind="stable").index
     return df.loc[order]

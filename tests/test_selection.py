@@ -43,3 +43,12 @@ def test_the_pick_is_stable_under_timing_noise():
     base = np.array([1.0, 1.0, 1.0, 1.0])
     picks = {cheapest_first(_runs(base * rng.uniform(0.9, 1.1, 4))).index[0] for _ in range(50)}
     assert picks == {3}
+
+
+def test_equal_errors_go_to_the_scene_defaults():
+    """Quadrature variants that agree to print precision: the default one is reported."""
+    df = pd.DataFrame({"element": ["linear"] * 3, "n_elements": [4] * 3,
+                       "integration": ["report-fix", "thesis", "report-selective"],
+                       "error": [0.06211, 0.06212, 0.06213], "cpu_time_s": [1.0, 1.1, 1.05]})
+    assert cheapest_first(df, defaults={"integration": "thesis"}).index[0] == 1
+    assert cheapest_first(df).index[0] == 0      # without defaults: the least time

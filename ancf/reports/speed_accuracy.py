@@ -55,7 +55,15 @@ def _solver(row, dynamic: bool) -> str:
     return f"Newton rtol = {row['rtol']:g}"
 
 
-def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error") -> pd.DataFrame:
+def _knob_defaults(name: str, s) -> dict:
+    """The scene's default value of each model knob (the tie-breaker of last resort)."""
+    from ancf.scenes import SCENES
+    p = SCENES[name].resolve({})
+    return {k: p[k] for k in s.knobs if k in p}
+
+
+def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error",
+                   defaults: dict | None = None) -> pd.DataFrame:
     """Per tolerance: the cheapest run with error <= tolerance (ties within the timing
     noise go to the smaller model, ``ancf.selection``), or 'not reached'."""
     ok = df[(df["status"] == "ok") & np.isfinite(df[err].astype(float))]
@@ -63,7 +71,7 @@ def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error") -> pd.Da
     for tol in TOLERANCES:
         m = ok[ok[err] <= tol]
         if len(m):
-            r = cheapest_first(m, err).iloc[0]
+            r = cheapest_first(m, err, defaults=defaults).iloc[0]
             rows.append({"error ≤": f"{100 * tol:g} %", "model": _model(r, dynamic),
                          "n_elements": int(r["n_elements"]), "solver": _solver(r, dynamic),
                          "error": float(r[err]), "CPU ms": 1e3 * float(r["cpu_time_s"])})
@@ -162,7 +170,8 @@ def speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
             plot(df, name, s.dynamic, axes[0][1], err="error_self",
                  title=f"{name}: error vs converged self-reference")
         save_figure(fig, f"pareto_{name.replace('-', '_')}")
-        table = cheapest_table(df, s.dynamic)
+        defaults = _knob_defaults(name, s)
+        table = cheapest_table(df, s.dynamic, defaults=defaults)
         counts = df["status"].value_counts().to_dict()
         front = pareto(df[df["status"] == "ok"])
         parts += [f"## `{name}`\n", f"{s.notes} Grid: {grid_txt} ({len(df)} runs: "
@@ -173,7 +182,7 @@ def speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
                   markdown_table(table, 3), ""]
         if ncols == 2:
             parts += ["Against the converged self-reference (`--reference self`: discretisation "
-                      "error only):\n", markdown_table(cheapest_table(df, s.dynamic, "error_self"), 3),
+                      "error only):\n", markdown_table(cheapest_table(df, s.dynamic, "error_self", defaults), 3),
                       ""]
             extra = _self_note(df)
         parts += [f"Pareto front: {len(front)} of {len(df)} runs. " + _front_text(front, s.dynamic)
