@@ -18,7 +18,7 @@ import numpy as np
 import pandas as pd
 
 from ancf.references import cache_root, model_physics, spec, stable_hash
-from ancf.selection import COST_TIE, cheapest_first
+from ancf.selection import COST_TIE, COST_TIE_ABS_S, cheapest_first
 from ancf.scenes.base import InputError
 from ancf.sweep import read_rows, rows_for, run_sweep
 
@@ -155,8 +155,8 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
         lines.append(f"{scene}: cheapest model with error <= {tol:g} against {ref.name}: "
                      f"{result['model']}; error {result['error']:.3g}, CPU {result['cpu_time_s']:.3g} s "
                      f"({len(adequate)} of {len(df)} runs meet the tolerance; runs within "
-                     f"{100 * COST_TIE:g} % of the least CPU time count as equally cheap and the "
-                     f"smallest model among them is chosen).")
+                     f"{100 * COST_TIE:g} % (or {1e3 * COST_TIE_ABS_S:g} ms) of the least CPU time "
+                     f"count as equally cheap and the smallest model among them is chosen).")
         lines.append(f"Physics needed: {', '.join(sorted(needs)) or 'none declared'}; the model "
                      f"provides {', '.join(provides)}.")
         if len(excluded):

@@ -3,7 +3,7 @@ tables and `ancf recommend`)."""
 import numpy as np
 import pandas as pd
 
-from ancf.selection import COST_TIE, cheapest_first, model_size
+from ancf.selection import COST_TIE, COST_TIE_ABS_S, cheapest_first, model_size, tie_limit
 
 
 def _runs(costs):
@@ -52,3 +52,16 @@ def test_equal_errors_go_to_the_scene_defaults():
                        "error": [0.06211, 0.06212, 0.06213], "cpu_time_s": [1.0, 1.1, 1.05]})
     assert cheapest_first(df, defaults={"integration": "thesis"}).index[0] == 1
     assert cheapest_first(df).index[0] == 0      # without defaults: the least time
+
+
+def test_millisecond_runs_tie_within_the_absolute_band():
+    """3-5 ms solves scatter by more than 25 %: the absolute band keeps them tied, and it
+    does not matter for runs of a second or more."""
+    assert tie_limit(3e-3) == 3e-3 + COST_TIE_ABS_S
+    assert tie_limit(1.0) == 1.0 + COST_TIE
+    df = pd.DataFrame({"element": ["linear"] * 2, "n_elements": [4] * 2,
+                       "integration": ["report-selective", "thesis"],
+                       "error": [0.06213, 0.06213], "cpu_time_s": [3.4e-3, 4.5e-3]})
+    assert cheapest_first(df, defaults={"integration": "thesis"}).index[0] == 1
+    beyond = df.assign(cpu_time_s=[3.4e-3, 3.4e-3 + 1.01 * COST_TIE_ABS_S])
+    assert cheapest_first(beyond, defaults={"integration": "thesis"}).index[0] == 0

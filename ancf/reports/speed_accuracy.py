@@ -20,7 +20,7 @@ from ancf.references import cache_root, rescore, specs  # noqa: E402
 from ancf.reports.output import (fmt, markdown_table, progress, save_figure,  # noqa: E402
                                  write_csv)
 from ancf.sweep import run_sweep  # noqa: E402
-from ancf.selection import COST_TIE, cheapest_first  # noqa: E402
+from ancf.selection import COST_TIE, COST_TIE_ABS_S, cheapest_first  # noqa: E402
 
 TOLERANCES = (1e-1, 1e-2, 1e-3, 1e-4)
 FLOOR = 1e-16  # plotted in place of an exact zero error
@@ -129,8 +129,10 @@ def speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
              "scene's reference (`ancf/references.py`), cost is the CPU time of the run (process "
              "time, measured on the machine that generated this report, so ±20 % noise between "
              "runs). The Pareto front connects the runs that no other run beats in both. "
-             f"'Cheapest' treats runs within {100 * COST_TIE:g} % of the least CPU time as "
-             "equally cheap and takes the smallest model among them, then the smallest error "
+             f"'Cheapest' treats runs within {100 * COST_TIE:g} % (or {1e3 * COST_TIE_ABS_S:g} ms, the "
+             "scatter of identical millisecond solves) of the least CPU time as "
+             "equally cheap and takes the smallest model among them, then the smallest error, "
+             "then the scene's default settings "
              "(`ancf/selection.py`), so that timing noise does not pick between equivalent "
              "models. "
              "`ancf recommend SCENE --tol TOL` answers the last question of each section for a "
