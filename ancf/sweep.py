@@ -43,12 +43,12 @@ import numpy as np
 import pandas as pd
 
 from ancf.references import ReferenceFailed, spec, stable_hash
+from ancf.threads import BLAS_ENV
 from ancf.scenes.base import InputError
 
 STATUSES = ("ok", "not-converged", "failed", "timeout", "invalid", "worker-died")
 RETRY = ("failed", "timeout", "worker-died")
-_ENV = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
-        "PYTHONWARNINGS": "ignore"}
+_ENV = {**BLAS_ENV, "PYTHONWARNINGS": "ignore"}
 
 
 # ---------------------------------------------------------------------------------------

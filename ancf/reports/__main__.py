@@ -4,7 +4,11 @@ from __future__ import annotations
 import sys
 import time
 
-import pandas as pd
+from ancf.threads import one_blas_thread
+
+one_blas_thread()  # before numpy: reproducible numbers and single-thread CPU times
+
+import pandas as pd  # noqa: E402
 
 from analytic import timoshenko
 from ancf.extremes import extremes_chapter
