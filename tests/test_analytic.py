@@ -1,7 +1,7 @@
 """Tests of the analytic references: analytic.timoshenko and analytic.reissner.
 
 Published values: Kerkkänen 2006 thesis Tables 2.1-2.4 and the 2003 report Tables 1-4
-(/work/shared/papers/).  Tolerances are stated at each assertion.
+(../shared/papers/ beside the project root).  Tolerances are stated at each assertion.
 """
 from __future__ import annotations
 
