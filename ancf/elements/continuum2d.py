@@ -8,8 +8,9 @@ rotated reference it stays in the beam's axes, which the anisotropic linear
 element (E, E, ks G) needs.  The energy density is ``W = 1/2 eps^T C eps`` in Voigt form
 ``eps = [eps_xx, eps_yy, 2 eps_xy]``.  An element's strain energy is a sum of
 :class:`EnergyTerm` s, each with its own material matrix and quadrature (this is
-how selective integration is expressed).  Everything is vectorised over
-elements x quadrature points; there is no Python loop over points.
+how selective integration is expressed).  The points of all terms are set up
+once (:class:`PointSet`); energy, gradient and tangent are then one call of the
+compiled kernel (:mod:`ancf.elements.kernel2d`) over elements x points.
 
 Array shapes: ``E`` element coordinates (nel, nshape, 2), i.e. the element
 vector ``e`` reshaped so that ``E[:, k, :]`` multiplies the scalar shape
@@ -21,7 +22,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ancf.elements import kernel2d
 from ancf.quadrature import EXACT, RectangularSection, gauss01
+
+_NO_TANGENT = np.zeros((0, 0, 0))
 
 
 @dataclass(frozen=True)
@@ -62,53 +66,20 @@ def _grad(B, E):
     return np.einsum("eqk,ekd->eqd", B, E)
 
 
-def _strains(tq: TermQuadrature, E):
-    """Current gradients r_x, r_y and local Green strains written with the
-    displacement gradients u_x, u_y (u = r - r0):
-    eps_xx = r0_x.u_x + u_x.u_x / 2, eps_yy = r0_y.u_y + u_y.u_y / 2,
-    gamma = r0_x.u_y + r0_y.u_x + u_x.u_y.  This avoids the cancellation of
-    (r_x.r_x - 1) / 2 under small displacements."""
-    U = E - tq.E0
-    uX, uY = _grad(tq.BX, U), _grad(tq.BY, U)
-    dot = lambda a, b: np.einsum("eqd,eqd->eq", a, b)  # noqa: E731
-    eps = np.stack([dot(tq.dX0, uX) + 0.5 * dot(uX, uX),
-                    dot(tq.dY0, uY) + 0.5 * dot(uY, uY),
-                    dot(tq.dX0, uY) + dot(tq.dY0, uX) + dot(uX, uY)], axis=-1)
-    return tq.dX0 + uX, tq.dY0 + uY, eps
+class PointSet:
+    """The quadrature points of all energy terms side by side: gradients BX, BY
+    (nel, nq, nshape), reference gradients dX0, dY0 (nel, nq, 2), weights w (nel, nq),
+    material matrices C (nterm, 3, 3) and the term of each point ``cidx`` (nq,)."""
 
+    def __init__(self, quads):
+        cat = lambda name: np.ascontiguousarray(np.concatenate([getattr(t, name) for t in quads], 1))  # noqa: E731
+        self.BX, self.BY, self.dX0, self.dY0, self.w = (cat(a) for a in ("BX", "BY", "dX0", "dY0", "w"))
+        self.C = np.ascontiguousarray(np.stack([t.C for t in quads]))
+        self.cidx = np.concatenate([np.full(t.w.shape[1], i, dtype=np.int64) for i, t in enumerate(quads)])
+        self.E0 = np.ascontiguousarray(quads[0].E0)
 
-def term_energy(tq: TermQuadrature, E) -> np.ndarray:
-    """Strain energy per element of one term, J."""
-    _, _, eps = _strains(tq, E)
-    W = 0.5 * np.einsum("eqi,ij,eqj->eq", eps, tq.C, eps)
-    return np.einsum("eq,eq->e", tq.w, W)
-
-
-def term_gradient(tq: TermQuadrature, E, tangent: bool = False):
-    """dU/de per element (nel, nshape, 2) and, if asked, d2U/de2 (nel, ndof, ndof)."""
-    dX, dY, eps = _strains(tq, E)
-    s = eps @ tq.C  # second Piola-Kirchhoff stresses (Voigt), C symmetric
-    PX = s[..., 0, None] * dX + s[..., 2, None] * dY
-    PY = s[..., 1, None] * dY + s[..., 2, None] * dX
-    grad = (np.einsum("eq,eqk,eqd->ekd", tq.w, tq.BX, PX)
-            + np.einsum("eq,eqk,eqd->ekd", tq.w, tq.BY, PY))
-    if not tangent:
-        return grad, None
-    nel, nq, n = tq.BX.shape
-    # strain derivatives G[e,q,i,k,d] = d eps_i / d E_kd
-    G = np.stack([tq.BX[..., None] * dX[:, :, None, :],
-                  tq.BY[..., None] * dY[:, :, None, :],
-                  tq.BX[..., None] * dY[:, :, None, :] + tq.BY[..., None] * dX[:, :, None, :]],
-                 axis=2)
-    wG = tq.w[:, :, None, None, None] * G
-    Kmat = np.einsum("eqikd,ij,eqjlf->ekdlf", wG, tq.C, G, optimize=True)
-    ws = tq.w[..., None] * s
-    Kgeo = (np.einsum("eq,eqk,eql->ekl", ws[..., 0], tq.BX, tq.BX)
-            + np.einsum("eq,eqk,eql->ekl", ws[..., 1], tq.BY, tq.BY)
-            + np.einsum("eq,eqk,eql->ekl", ws[..., 2], tq.BX, tq.BY)
-            + np.einsum("eq,eqk,eql->ekl", ws[..., 2], tq.BY, tq.BX))
-    Kmat += Kgeo[:, :, None, :, None] * np.eye(2)[None, None, :, None, :]
-    return grad, Kmat.reshape(nel, 2 * n, 2 * n)
+    def args(self, E):
+        return (E, self.E0, self.BX, self.BY, self.dX0, self.dY0, self.w, self.C, self.cidx)
 
 
 def lame_matrix(E: float, nu: float) -> np.ndarray:
@@ -177,7 +148,8 @@ class ContinuumBeam2D:
         self.ndof = 2 * self.nshape
         self.section, self.rho, self.terms = section, rho, tuple(terms)
         E0 = np.asarray(e0, dtype=float).reshape(self.nel, self.nshape, 2)
-        self.quad = [TermQuadrature(self.shapes, self.lengths, E0, section, t) for t in self.terms]
+        self.points = PointSet([TermQuadrature(self.shapes, self.lengths, E0, section, t)
+                                for t in self.terms])
 
     @classmethod
     def scheme_terms(cls, integration: str, C_normal, C_shear):
@@ -204,25 +176,19 @@ class ContinuumBeam2D:
         return _merge_same_rule(terms)
 
     def _E(self, e):
-        return np.asarray(e, dtype=float).reshape(self.nel, self.nshape, 2)
+        return np.ascontiguousarray(e, dtype=float).reshape(self.nel, self.nshape, 2)
 
     def energy(self, e) -> np.ndarray:
         """Strain energy U of each element, J (e: (nel, ndof))."""
-        E = self._E(e)
-        return sum(term_energy(tq, E) for tq in self.quad)
+        return kernel2d.energy(*self.points.args(self._E(e)))
 
     def gradient(self, e, tangent: bool = False):
         """dU/de per element (nel, ndof) (Qe = -dU/de, Eq. 2.20) and optionally the
         exact tangent d2U/de2 (nel, ndof, ndof)."""
-        E = self._E(e)
-        g = np.zeros_like(E)
-        K = np.zeros((self.nel, self.ndof, self.ndof)) if tangent else None
-        for tq in self.quad:
-            gi, Ki = term_gradient(tq, E, tangent)
-            g += gi
-            if tangent:
-                K += Ki
-        return g.reshape(self.nel, self.ndof), K
+        g = np.zeros((self.nel, self.ndof))
+        K = np.zeros((self.nel, self.ndof, self.ndof)) if tangent else _NO_TANGENT
+        kernel2d.gradient_tangent(*self.points.args(self._E(e)), tangent, g, K)
+        return g, (K if tangent else None)
 
     def mass(self) -> np.ndarray:
         """Exact consistent mass matrices (nel, ndof, ndof), Eq. 2.26, kg."""
