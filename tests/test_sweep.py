@@ -112,7 +112,7 @@ def test_failures_are_rows_and_do_not_stop_the_others(workdir):
              {"element": ["omar-shabana"], "integration": ["report-fix"]},  # invalid pair
              {"n_elements": [4096], "element": ["omar-shabana"], "stability_check": ["off"]},
              {"F": [-5e6], "load_steps": [1], "max_iterations": [1]}]  # cannot converge
-    df = run_sweep("cantilever", grids, out=out, workers=2, time_limit=1.5, progress=False,
+    df = run_sweep("cantilever", grids, out=out, workers=2, time_limit=0.5, progress=False,
                    log=lambda m: None)
     by = {(r["element"], r["integration"], r["n_elements"], r["max_iterations"]): r
           for _, r in df.iterrows()}
@@ -122,17 +122,17 @@ def test_failures_are_rows_and_do_not_stop_the_others(workdir):
     inv = df[df["status"] == "invalid"]
     assert len(inv) == 1 and "integration" in inv["message"].iloc[0]
     slow = df[df["status"] == "timeout"]
-    assert len(slow) == 1 and slow["message"].iloc[0] == "time limit exceeded (1.5 s)"
+    assert len(slow) == 1 and slow["message"].iloc[0] == "time limit exceeded (0.5 s)"
     nc = df[df["status"] == "not-converged"]
     assert len(nc) == 1 and "No convergence" in nc["message"].iloc[0]
     assert df.loc[df["status"] != "ok", "error"].isna().all()
     # a rerun skips every recorded row, failures included, unless asked to retry them
     msgs = []
-    run_sweep("cantilever", grids, out=out, workers=1, time_limit=1.5, progress=False,
+    run_sweep("cantilever", grids, out=out, workers=1, time_limit=0.5, progress=False,
               log=msgs.append)
     assert "5 already in" in msgs[0]
     msgs = []
-    run_sweep("cantilever", grids, out=out, workers=1, time_limit=1.5, progress=False,
+    run_sweep("cantilever", grids, out=out, workers=1, time_limit=0.5, progress=False,
               log=msgs.append, retry_failed=True)
     assert "1 to run" in msgs[0]  # only the timeout is a retryable failure
 

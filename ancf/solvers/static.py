@@ -6,11 +6,12 @@ result (``converged=False`` and a ``message``), never an exception or a NaN.
 """
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.sparse.linalg as spla
+
+from ancf.pattern import ReducedPattern
+from ancf.solvers.linear import Singular, factor, stability
 
 
 @dataclass
@@ -22,6 +23,9 @@ class StaticResult:
     iterations: int
     load_steps: int
     residual_history: list = field(default_factory=list)  # one list of |r| per load step
+    tangent_evaluations: int = 0
+    factorizations: int = 0
+    pattern: object = None  # the ReducedPattern the solve used
 
 
 @dataclass(frozen=True)
@@ -41,67 +45,62 @@ class NewtonOptions:
             raise ValueError(f"rtol must be > 0 (got {self.rtol})")
 
 
-class _Singular(Exception):
-    pass
-
-
-def _solve(K, r):
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        try:
-            dz = spla.splu(K.tocsc()).solve(r)
-        except (RuntimeError, Warning) as exc:
-            raise _Singular(str(exc)) from None
-    if not np.all(np.isfinite(dz)):
-        raise _Singular("non-finite Newton step")
-    return dz
-
-
-def _roundoff_floor(Kr, z) -> float:
+def _roundoff_floor(k_inf: float, z) -> float:
     """Smallest residual that can be resolved: absolute nodal coordinates carry an
     error of eps |q|, which the stiffest terms turn into forces of eps |q| |K|_inf
     (e.g. 1e-5 N for a 64-element beam with EA = 4e8 N)."""
-    k_inf = float(abs(Kr).sum(axis=1).max())
     return 10.0 * np.finfo(float).eps * (1.0 + float(np.abs(z).max(initial=0.0))) * k_inf
 
 
-def _newton(assembly, T, g, z, Qk, lam, opt, history):
-    """Newton iterations at load factor lam; returns (z, converged, iterations, why)."""
-    TT = T.T.tocsr()
-    scale = max(np.linalg.norm(TT @ Qk), 1.0)
-    small_step = False
-    for it in range(1, opt.max_iter + 1):
-        grad, K = assembly.gradient_tangent(T @ z + g)
-        r = TT @ (lam * Qk - grad)
-        rn = float(np.linalg.norm(r))
-        history.append(rn)
-        if not np.isfinite(rn):
-            return z, False, it, "residual is not finite"
-        Kr = TT @ K @ T
-        stalled = len(history) > 1 and rn > 0.25 * history[-2]  # no longer contracting
-        if rn <= opt.rtol * scale or (small_step and rn <= 1e3 * opt.rtol * scale) or (
-                stalled and rn <= _roundoff_floor(Kr, z)):
-            return z, True, it, ""
-        try:
-            dz = _solve(Kr, r)
-        except _Singular as exc:
-            return z, False, it, f"singular tangent stiffness ({exc})"
-        z = z + dz
-        small_step = np.linalg.norm(dz) <= opt.xtol * (1.0 + np.linalg.norm(z))
-    return z, False, opt.max_iter, f"no convergence in {opt.max_iter} iterations (|r| = {rn:.3e})"
+class _Newton:
+    """Newton iterations on the reduced system ``T^T (lam Qk - dU/dq) = 0``, assembled
+    straight into the pattern's storage and solved by the pattern's solver."""
+
+    def __init__(self, assembly, pattern, g, Qk_r, opt):
+        self.assembly, self.pattern, self.g, self.Qk_r, self.opt = assembly, pattern, g, Qk_r, opt
+        self.scale = max(np.linalg.norm(Qk_r), 1.0)
+        self.tangents = self.factorizations = 0
+
+    def run(self, z, lam, history):
+        """Iterate at load factor lam; returns (z, converged, iterations, why)."""
+        opt, small_step = self.opt, False
+        for it in range(1, opt.max_iter + 1):
+            grad, K = self.pattern.assemble(self.assembly, self.pattern.expand(z, self.g))
+            self.tangents += 1
+            r = lam * self.Qk_r - grad
+            rn = float(np.linalg.norm(r))
+            history.append(rn)
+            if not np.isfinite(rn):
+                return z, False, it, "residual is not finite"
+            stalled = len(history) > 1 and rn > 0.25 * history[-2]  # no longer contracting
+            if rn <= opt.rtol * self.scale or (small_step and rn <= 1e3 * opt.rtol * self.scale) or (
+                    stalled and rn <= _roundoff_floor(self.pattern.inf_norm(K), z)):
+                return z, True, it, ""
+            try:
+                self.factorizations += 1
+                dz = factor(self.pattern, K).solve(r)
+            except Singular as exc:
+                return z, False, it, f"singular tangent stiffness ({exc})"
+            z = z + dz
+            small_step = np.linalg.norm(dz) <= opt.xtol * (1.0 + np.linalg.norm(z))
+        return z, False, opt.max_iter, f"no convergence in {opt.max_iter} iterations (|r| = {rn:.3e})"
 
 
 def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = None) -> StaticResult:
     """Equilibrium under the external load vector ``Qk`` (global, N), starting at ``q0``."""
     opt = options or NewtonOptions()
-    T, g, free = elimination.build()
-    z = np.asarray(q0, dtype=float)[free].copy()
+    T, g, _ = elimination.build()
+    pattern = ReducedPattern(assembly.n_dofs, [grp.dofmap for grp in assembly.groups], T)
+    newton = _Newton(assembly, pattern, g, pattern.reduce(Qk), opt)
+    z = pattern.restrict(q0)
     lam, step = 0.0, 1.0 / opt.n_steps
     total, steps, histories, why = 0, 0, [], ""
+    result = lambda ok, msg, lf: StaticResult(pattern.expand(z, g), ok, msg, lf, total, steps,  # noqa: E731
+                                              histories, newton.tangents, newton.factorizations, pattern)
     while lam < 1.0 - 1e-14:
         step = min(step, 1.0 - lam)
         hist = []
-        z_new, ok, its, why = _newton(assembly, T, g, z, Qk, lam + step, opt, hist)
+        z_new, ok, its, why = newton.run(z, lam + step, hist)
         total += its
         histories.append(hist)
         if ok:
@@ -110,7 +109,12 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
         else:
             step *= 0.5
             if step < opt.min_step or total > opt.max_total_iter:
-                msg = (f"No convergence: {why}; load factor reached {lam:.4f} "
-                       f"(increment fell below {opt.min_step:g})")
-                return StaticResult(T @ z + g, False, msg, lam, total, steps, histories)
-    return StaticResult(T @ z + g, True, "converged", 1.0, total, steps, histories)
+                return result(False, f"No convergence: {why}; load factor reached {lam:.4f} "
+                                     f"(increment fell below {opt.min_step:g})", lam)
+    return result(True, "converged", 1.0)
+
+
+def stability_at(assembly, pattern, q):
+    """(negative, zero, lowest/largest) eigenvalues of the reduced tangent at q, by inertia."""
+    _, K = pattern.assemble(assembly, q)
+    return stability(pattern, K)

@@ -1,0 +1,165 @@
+"""The sparsity of a reduced system, computed once, and compiled scatters into it.
+
+Constraints eliminated as ``q = T z + g`` with ``T`` a 0/1 selection (fixed and
+prescribed coordinates dropped, tied ones sharing a column) turn the reduced
+tangent ``T^T K T`` into a plain scatter: element entry (a, b) of element e goes to
+(z(a), z(b)) or nowhere.  :class:`ReducedPattern` numbers the independent
+coordinates ``z`` (reverse Cuthill-McKee when that narrows the band, e.g. for a
+closed loop), picks the storage from the pattern (band rows of width 3 kl + 1,
+see :mod:`ancf.solvers.banded`, or CSR) and keeps, per element group, the target
+index of every element vector and matrix entry (-1: eliminated).  The scatter then
+writes straight into the solver's storage: no COO, no CSR rebuild, no ``T^T K T``.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+from numba import njit
+from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+#: band storage is used while it holds at most this many times the nonzeros
+BAND_FILL_LIMIT = 8.0
+
+
+def width(kl: int) -> int:
+    """Row width of band storage with half-bandwidth kl (``ancf.solvers.banded``)."""
+    return 3 * kl + 1
+
+
+@njit(cache=True)
+def scatter(ge, Ke, vidx, midx, vec, mat, want_K):
+    """vec[vidx] += ge and, if want_K, mat.flat[midx] += Ke (negative index: dropped)."""
+    nel, nd = ge.shape
+    flat = mat.reshape(-1)
+    for e in range(nel):
+        for a in range(nd):
+            i = vidx[e, a]
+            if i >= 0:
+                vec[i] += ge[e, a]
+            if want_K:
+                for b in range(nd):
+                    j = midx[e, a, b]
+                    if j >= 0:
+                        flat[j] += Ke[e, a, b]
+
+
+def _selection_columns(T, n_dofs: int) -> np.ndarray:
+    """Column of each global coordinate in T (a 0/1 selection), -1 where none."""
+    T = sp.csr_matrix(T)
+    counts = np.diff(T.indptr)
+    if counts.max(initial=0) > 1 or not np.all(T.data == 1.0):
+        raise ValueError("the elimination matrix T must be a 0/1 selection (one entry per row)")
+    col = np.full(n_dofs, -1, dtype=np.int64)
+    col[counts == 1] = T.indices
+    return col
+
+
+def _bandwidth(r, c, order) -> int:
+    return int(np.abs(order[r] - order[c]).max(initial=0))
+
+
+class ReducedPattern:
+    """Reduced numbering and storage of ``T^T K T`` for element groups with DOF maps
+    ``dofmaps`` (each (nel, nd)) over ``n_dofs`` global coordinates."""
+
+    def __init__(self, n_dofs: int, dofmaps, T):
+        self.n_dofs = n_dofs
+        col = _selection_columns(T, n_dofs)
+        self.n = int(T.shape[1])
+        pairs = [(col[d][:, :, None], col[d][:, None, :]) for d in map(np.asarray, dofmaps)]
+        r = np.concatenate([np.broadcast_to(a, (a.shape[0], a.shape[1], b.shape[2])).ravel() for a, b in pairs])
+        c = np.concatenate([np.broadcast_to(b, (a.shape[0], a.shape[1], b.shape[2])).ravel() for a, b in pairs])
+        keep = (r >= 0) & (c >= 0)
+        r, c = r[keep], c[keep]
+        self.order = self._numbering(r, c)
+        ro, co = self.order[r], self.order[c]
+        self.nnz = int(np.unique(ro * self.n + co).size)
+        self.kl = _bandwidth(r, c, self.order)
+        self.band = width(self.kl) * self.n <= BAND_FILL_LIMIT * max(self.nnz, 1)
+        sel = np.flatnonzero(col >= 0)
+        self.qsel, self.zsel = sel, self.order[col[sel]]
+        self._csr = None if self.band else self._csr_pattern(ro, co)
+        self.groups = [self._targets(col[np.asarray(d)]) for d in dofmaps]
+
+    def _numbering(self, r, c) -> np.ndarray:
+        """order[z] = position; natural unless RCM narrows the band."""
+        natural = np.arange(self.n)
+        if self.n == 0 or _bandwidth(r, c, natural) * 3 < 64:
+            return natural
+        g = sp.csr_matrix((np.ones(r.size), (r, c)), shape=(self.n, self.n))
+        perm = reverse_cuthill_mckee(g, symmetric_mode=True)
+        order = np.empty(self.n, dtype=np.int64)
+        order[perm] = natural
+        return order if _bandwidth(r, c, order) < _bandwidth(r, c, natural) else natural
+
+    def _csr_pattern(self, ro, co):
+        self._keys = np.unique(ro * self.n + co)  # row-major order = CSR data order
+        rows, cols = self._keys // self.n, self._keys % self.n
+        return sp.csr_matrix((np.ones(self._keys.size), (rows, cols)), shape=(self.n, self.n))
+
+    def _targets(self, zc):
+        """(vidx, midx) of one group from its reduced columns zc (nel, nd), -1 = dropped."""
+        z = np.where(zc >= 0, self.order[np.maximum(zc, 0)], -1)
+        a, b = z[:, :, None], z[:, None, :]
+        ok = (a >= 0) & (b >= 0)
+        if self.band:
+            target = a * width(self.kl) + (b - a + self.kl)
+        else:
+            target = self._csr_slot(np.maximum(a, 0), np.maximum(b, 0))
+        return np.ascontiguousarray(z), np.ascontiguousarray(np.where(ok, target, -1))
+
+    def _csr_slot(self, a, b):
+        return np.searchsorted(self._keys, a * self.n + b)
+
+    # --- storage -----------------------------------------------------------------------
+    def zeros_matrix(self) -> np.ndarray:
+        """Empty storage: band rows (n, 3 kl + 1) or CSR data (nnz,)."""
+        return np.zeros((self.n, width(self.kl)) if self.band else (self.nnz,))
+
+    def as_csr(self, data) -> sp.csr_matrix:
+        """The stored matrix as CSR in the reduced (possibly reordered) numbering."""
+        if not self.band:
+            A = self._csr
+            return sp.csr_matrix((data, A.indices, A.indptr), shape=A.shape)
+        kl = self.kl
+        i, off = np.nonzero(data[:, : 2 * kl + 1])
+        j = i + off - kl
+        ok = (j >= 0) & (j < self.n)
+        return sp.csr_matrix((data[i[ok], off[ok]], (i[ok], j[ok])), shape=(self.n, self.n))
+
+    def inf_norm(self, data) -> float:
+        """Largest absolute row sum of the stored matrix."""
+        if self.band:
+            return float(np.abs(data).sum(axis=1).max(initial=0.0))
+        return float(abs(self.as_csr(data)).sum(axis=1).max(initial=0.0))
+
+    # --- vectors -----------------------------------------------------------------------
+    def expand(self, z, g) -> np.ndarray:
+        """q = T z + g."""
+        q = np.array(g, dtype=float)
+        q[self.qsel] += z[self.zsel]
+        return q
+
+    def restrict(self, q) -> np.ndarray:
+        """z from a global q that satisfies the ties."""
+        z = np.zeros(self.n)
+        z[self.zsel] = np.asarray(q)[self.qsel]
+        return z
+
+    def reduce(self, Q) -> np.ndarray:
+        """T^T Q (a global force vector in the reduced numbering)."""
+        out = np.zeros(self.n)
+        np.add.at(out, self.zsel, np.asarray(Q)[self.qsel])
+        return out
+
+    def assemble(self, assembly, q, want_K=True, vec=None, mat=None):
+        """T^T dU/dq and T^T K T at q, scattered into ``vec``/``mat`` (fresh if None)."""
+        vec = np.zeros(self.n) if vec is None else vec
+        mat = (self.zeros_matrix() if want_K else np.zeros((1, 1))) if mat is None else mat
+        for grp, (vidx, midx) in zip(assembly.groups, self.groups):
+            ge, Ke = grp.element.gradient(q[grp.dofmap], tangent=want_K)
+            scatter(ge, Ke if want_K else _EMPTY3, vidx, midx, vec, mat, want_K)
+        return vec, mat
+
+
+_EMPTY3 = np.zeros((0, 0, 0))
