@@ -217,7 +217,8 @@ def _worker_main() -> int:
     out = os.fdopen(os.dup(1), "w")
     os.dup2(2, 1)
     sys.stdout = sys.stderr
-    import ancf.scenes  # noqa: F401 - warm the imports before saying ready
+    from ancf.scenes import SCENES  # warm the imports and the compiled kernels (a
+    SCENES["axial-bar"].execute({"n_elements": 1})  # one-element solve) before saying ready
     out.write(json.dumps({"ready": os.getpid()}) + "\n")
     out.flush()
     for line in sys.stdin:

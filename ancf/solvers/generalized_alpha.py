@@ -31,6 +31,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ancf.solvers.alpha_compiled import BLOW_UP, BUDGET, DONE, NON_FINITE, CompiledAlpha, march
 from ancf.solvers.dynamics import DynamicResult, _finish
 
 
@@ -204,18 +205,101 @@ def _run_steps(st: _Stepper, s: _State, t_out, ts, limit):
     return X, V, L, True, "reached t_end"
 
 
+def _near(t, tb) -> bool:
+    return abs(t - tb) <= 1e-12 * max(1.0, abs(tb))
+
+
+def _keep_slots(t_out, ts):
+    """slot[i] >= 0 for the step ends whose states the samples need (the step a
+    sample falls on, or both ends of the step it is interpolated in)."""
+    slot = np.full(ts.size, -1, dtype=np.int64)
+    need = {0}
+    for t in t_out[1:]:
+        i = min(int(np.searchsorted(ts, t - 1e-12 * max(1.0, abs(t)))), ts.size - 1)
+        need.update((i,) if _near(t, ts[i]) else (i - 1, i))
+    for k, i in enumerate(sorted(need)):
+        slot[i] = k
+    return slot, len(need)
+
+
+def _compiled_samples(t_out, ts, slot, out_x, out_v, reached):
+    """Samples (X, V) up to the step index reached, from the kept step-end states."""
+    X, V = [], []
+    for t in t_out:
+        i = min(int(np.searchsorted(ts, t - 1e-12 * max(1.0, abs(t)))), ts.size - 1)
+        if i > reached:
+            break
+        if _near(t, ts[i]):
+            X.append(out_x[slot[i]]), V.append(out_v[slot[i]])
+            continue
+        s0, s1 = (_State(out_x[slot[j]], out_v[slot[j]], None, None, np.zeros(0)) for j in (i - 1, i))
+        x, v, _ = _hermite(s0, s1, ts[i - 1], ts[i], t)
+        X.append(x), V.append(v)
+    return X, V
+
+
+def _python_fallback(ca, st, state, ts, k, slot, out_x, out_v):
+    """Take step k with the Python stepper (step halving), updating state in place;
+    returns (ok, message, step reached, next step)."""
+    cur = _State(*(ca.from_pattern(a) for a in state), np.zeros(0))
+    try:
+        new = st.advance(cur, ts[k], ts[k + 1] - ts[k])
+    except _Failed as exc:
+        return False, str(exc), k, k
+    for arr, val in zip(state, (new.x, new.v, new.acc, new.a)):
+        arr[:] = ca.to_pattern(val)
+    if slot[k + 1] >= 0:
+        out_x[slot[k + 1]], out_v[slot[k + 1]] = state[0], state[1]
+    return True, "reached t_end", ts.size - 1, k + 1
+
+
+def _run_compiled(model, st, s, t_out, ts, limit, opt):
+    """March with the compiled loop, handing failed steps to the Python stepper."""
+    ca = CompiledAlpha(model, opt, ts)
+    slot, kept = _keep_slots(t_out, ts)
+    state = tuple(ca.to_pattern(a) for a in (s.x, s.v, s.acc, s.a))
+    out_x, out_v = np.zeros((kept, s.x.size)), np.zeros((kept, s.x.size))
+    out_x[slot[0]], out_v[slot[0]] = state[0], state[1]
+    k, ok, msg, reached = 0, True, "reached t_end", ts.size - 1
+    while ok:
+        status, k = march(ts, k, state, ca.fs, ca.cf, ca.mdl, ca.sys, ca.count, opt.newton_tol,
+                          opt.max_iter, limit, opt.max_steps - st.steps, slot, out_x, out_v)
+        if status == DONE:
+            break
+        ok, reached = False, k - 1
+        if status == BUDGET:
+            msg, reached = f"step budget of {opt.max_steps} exhausted at t = {ts[k]:.6g} s", k
+        elif status == NON_FINITE:
+            msg = f"non-finite coordinates at t = {ts[k]:.6g} s"
+        elif status == BLOW_UP:
+            msg = (f"blow-up: |q| exceeded {limit:.3g} at t = {ts[k]:.6g} s "
+                   "(energy growing without bound)")
+        else:
+            ok, msg, reached, k = _python_fallback(ca, st, state, ts, k, slot, out_x, out_v)
+    X, V = _compiled_samples(t_out, ts, slot, out_x, out_v, reached)
+    X, V = [ca.from_pattern(x) for x in X], [ca.from_pattern(v) for v in V]
+    return X, V, [np.zeros(0)] * len(X), ok, msg, ca.count
+
+
 def integrate_generalized_alpha(model, x0, v0, t_out, opt: AlphaOptions) -> DynamicResult:
-    """Fixed-step generalised-alpha over the samples ``t_out`` (see :func:`step_times`)."""
+    """Fixed-step generalised-alpha over the samples ``t_out`` (see :func:`step_times`);
+    compiled (:mod:`ancf.solvers.alpha_compiled`) where the model allows."""
     st, t_out = _Stepper(model, opt), np.asarray(t_out, dtype=float)
     limit = opt.q_limit * (1.0 + np.max(np.abs(x0)))
+    count = np.zeros(5, dtype=np.int64)  # residuals, tangents, factorisations, iterations, steps
     t0 = time.process_time()
     with np.errstate(all="ignore"):
         s = st.initial(np.asarray(x0, float), np.asarray(v0, float), t_out[0])
-        X, V, L, ok, msg = _run_steps(st, s, t_out, step_times(t_out, opt.dt), limit)
+        ts = step_times(t_out, opt.dt)
+        if CompiledAlpha.applies(model):
+            X, V, L, ok, msg, count = _run_compiled(model, st, s, t_out, ts, limit, opt)
+        else:
+            X, V, L, ok, msg = _run_steps(st, s, t_out, ts, limit)
     cpu = time.process_time() - t0
     tt = t_out[: len(X)]
     pairs = [model.full(x, v, t) for x, v, t in zip(X, V, tt)]
     res = DynamicResult(tt, np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs]), ok,
-                        msg, "generalized-alpha", st.steps, st.nfev, st.nfev, st.nlu, st.iters,
+                        msg, "generalized-alpha", st.steps + int(count[4]), st.nfev + int(count[0]),
+                        st.nfev + int(count[1]), st.nlu + int(count[2]), st.iters + int(count[3]),
                         st.rejected, cpu, multipliers=np.array(L) if st.m else None)
     return _finish(model, res, np.array(X))
