@@ -44,6 +44,7 @@ class AlphaOptions:
     max_halvings: int = 6
     max_steps: int = 200_000
     q_limit: float = 1e6          # blow-up: |q|_inf above q_limit (1 + |q0|_inf)
+    compiled: bool = True         # use the compiled loop where the model allows
 
     def coefficients(self):
         r = self.rho_inf
@@ -291,7 +292,7 @@ def integrate_generalized_alpha(model, x0, v0, t_out, opt: AlphaOptions) -> Dyna
     with np.errstate(all="ignore"):
         s = st.initial(np.asarray(x0, float), np.asarray(v0, float), t_out[0])
         ts = step_times(t_out, opt.dt)
-        if CompiledAlpha.applies(model):
+        if opt.compiled and CompiledAlpha.applies(model):
             X, V, L, ok, msg, count = _run_compiled(model, st, s, t_out, ts, limit, opt)
         else:
             X, V, L, ok, msg = _run_steps(st, s, t_out, ts, limit)
