@@ -154,6 +154,9 @@ def main(argv=None) -> int:
     if hasattr(signal, "SIGPIPE"):
         signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # `ancf scenes | head` ends quietly
     try:
+        if args.cmd == "run":  # scenes only: no sympy, pandas, dask or matplotlib
+            from ancf.scenes import SCENES
+            return _run(SCENES, "run", args)
         scenes, refs = _registries()
         if args.cmd == "scenes":
             _list(scenes, "Scenes (ancf run NAME):")

@@ -1,5 +1,16 @@
-"""Scene registry: one declarative scene per paper example."""
-from ancf.scenes import axial_bar, cantilever, pendulum, simply_supported, spinning_beam
+"""Scene registry: one declarative scene per paper example.
 
-SCENES = {s.name: s for s in (simply_supported.SCENE, cantilever.SCENE, axial_bar.SCENE,
-                              pendulum.SCENE, spinning_beam.SCENE)}
+``SCENES`` is built on first use, so that importing ``ancf.scenes.base`` (the
+scene API, also used by ``analytic``) loads no scene, solver or element.
+"""
+from __future__ import annotations
+
+
+def __getattr__(name):
+    if name != "SCENES":
+        raise AttributeError(name)
+    from ancf.scenes import axial_bar, cantilever, pendulum, simply_supported, spinning_beam
+    scenes = {s.name: s for s in (simply_supported.SCENE, cantilever.SCENE, axial_bar.SCENE,
+                                  pendulum.SCENE, spinning_beam.SCENE)}
+    globals()["SCENES"] = scenes
+    return scenes

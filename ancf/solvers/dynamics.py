@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import time
 import warnings
-from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.integrate as si
@@ -31,37 +30,11 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ancf.solvers.result import DynamicResult, finish
+
 IVP_METHODS = {"rk45": si.RK45, "dop853": si.DOP853, "radau": si.Radau, "bdf": si.BDF}
 IMPLICIT = ("radau", "bdf")
 INTEGRATORS = tuple(IVP_METHODS) + ("generalized-alpha",)
-
-
-@dataclass
-class DynamicResult:
-    """Samples (t, global q and q') up to where the run got, with its statistics."""
-
-    t: np.ndarray
-    q: np.ndarray
-    v: np.ndarray
-    converged: bool
-    message: str
-    integrator: str
-    steps: int = 0
-    nfev: int = 0
-    njev: int = 0
-    nlu: int = 0
-    newton_iterations: int = 0
-    rejected_steps: int = 0
-    cpu_time_s: float = 0.0
-    constraint_violation: float = 0.0  # max |C(q, t)| over the samples, m (0 by elimination)
-    multipliers: np.ndarray | None = None  # (n_samples, m) for the multiplier form
-    extra: dict = field(default_factory=dict)
-
-    def stats(self) -> dict:
-        return {"integrator": self.integrator, "steps": self.steps, "nfev": self.nfev,
-                "njev": self.njev, "nlu": self.nlu, "newton_iterations": self.newton_iterations,
-                "rejected_steps": self.rejected_steps, "integration_cpu_s": self.cpu_time_s,
-                "constraint_violation_m": self.constraint_violation}
 
 
 class _Dense:
@@ -332,17 +305,7 @@ def integrate_ivp(model, x0, v0, t_out, method="dop853", rtol=1e-8, atol=1e-10,
     res = DynamicResult(t_out[:len(X)], q, v, ok, msg if ok else f"{method}: {msg}", method, count[0],
                         getattr(solver, "nfev", 0), getattr(solver, "njev", 0),
                         getattr(solver, "nlu", 0), cpu_time_s=cpu)
-    return _finish(model, res, X[:, :n])
-
-
-def _finish(model, res: DynamicResult, X) -> DynamicResult:
-    """Constraint violation and multipliers at the samples (multiplier form)."""
-    if model.constraints is not None and len(X):
-        res.constraint_violation = max(model.violation(x, t) for x, t in zip(X, res.t))
-        if res.multipliers is None:
-            res.multipliers = np.array([model.multipliers(q, v, t)[1]
-                                        for q, v, t in zip(res.q, res.v, res.t)])
-    return res
+    return finish(model, res, X[:, :n])
 
 
 def integrate(model, q0, v0, t_out, integrator: str, *, rtol=1e-8, atol=1e-10, dt=1e-3,

@@ -32,7 +32,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ancf.solvers.alpha_compiled import BLOW_UP, BUDGET, DONE, NON_FINITE, CompiledAlpha, march
-from ancf.solvers.dynamics import DynamicResult, _finish
+from ancf.solvers.result import DynamicResult, finish
 
 
 @dataclass(frozen=True)
@@ -303,4 +303,4 @@ def integrate_generalized_alpha(model, x0, v0, t_out, opt: AlphaOptions) -> Dyna
                         msg, "generalized-alpha", st.steps + int(count[4]), st.nfev + int(count[0]),
                         st.nfev + int(count[1]), st.nlu + int(count[2]), st.iters + int(count[3]),
                         st.rejected, cpu, multipliers=np.array(L) if st.m else None)
-    return _finish(model, res, np.array(X))
+    return finish(model, res, np.array(X))

@@ -1,0 +1,45 @@
+"""The outcome of a time integration: samples, statistics and constraint checks."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+@dataclass
+class DynamicResult:
+    """Samples (t, global q and q') up to where the run got, with its statistics."""
+
+    t: np.ndarray
+    q: np.ndarray
+    v: np.ndarray
+    converged: bool
+    message: str
+    integrator: str
+    steps: int = 0
+    nfev: int = 0
+    njev: int = 0
+    nlu: int = 0
+    newton_iterations: int = 0
+    rejected_steps: int = 0
+    cpu_time_s: float = 0.0
+    constraint_violation: float = 0.0  # max |C(q, t)| over the samples, m (0 by elimination)
+    multipliers: np.ndarray | None = None  # (n_samples, m) for the multiplier form
+    extra: dict = field(default_factory=dict)
+
+    def stats(self) -> dict:
+        return {"integrator": self.integrator, "steps": self.steps, "nfev": self.nfev,
+                "njev": self.njev, "nlu": self.nlu, "newton_iterations": self.newton_iterations,
+                "rejected_steps": self.rejected_steps, "integration_cpu_s": self.cpu_time_s,
+                "constraint_violation_m": self.constraint_violation}
+
+
+
+def finish(model, res: DynamicResult, X) -> DynamicResult:
+    """Constraint violation and multipliers at the samples (multiplier form)."""
+    if model.constraints is not None and len(X):
+        res.constraint_violation = max(model.violation(x, t) for x, t in zip(X, res.t))
+        if res.multipliers is None:
+            res.multipliers = np.array([model.multipliers(q, v, t)[1]
+                                        for q, v, t in zip(res.q, res.v, res.t)])
+    return res
