@@ -152,6 +152,14 @@ class ReducedPattern:
         np.add.at(out, self.zsel, np.asarray(Q)[self.qsel])
         return out
 
+    def mass(self, assembly) -> np.ndarray:
+        """T^T M T from the element mass matrices, in this pattern's storage."""
+        mat, dummy = self.zeros_matrix(), np.zeros(self.n)
+        for grp, (vidx, midx) in zip(assembly.groups, self.groups):
+            el = grp.element
+            scatter(np.zeros((el.nel, el.ndof)), el.mass(), vidx, midx, dummy, mat, True)
+        return mat
+
     def assemble(self, assembly, q, want_K=True, vec=None, mat=None):
         """T^T dU/dq and T^T K T at q, scattered into ``vec``/``mat`` (fresh if None)."""
         vec = np.zeros(self.n) if vec is None else vec

@@ -96,4 +96,5 @@ def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> Sce
                        f"is singular ({zero} eigenvalue(s) below {ZERO_EIGENVALUE_REL:g} of the "
                        f"largest: a zero-energy mode of the integration scheme)")
     return SceneResult(converged, message, results,
-                       extra={"q": res.q, "q0": q0, "mesh": mesh, "residuals": res.residual_history})
+                       extra={"q": res.q, "q0": q0, "mesh": mesh, "residuals": res.residual_history,
+                              "assembly": assembly, "pattern": res.pattern})

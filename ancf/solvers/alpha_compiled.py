@@ -145,18 +145,14 @@ def march(ts, k, st, fs, cf, mdl, sys, count, tol, max_iter, limit, max_steps, s
 
 
 class CompiledAlpha:
-    """Data of the compiled march for one model; :meth:`applies` says whether it can."""
+    """The arrays of the compiled march for one model (in its pattern's numbering);
+    :meth:`applies` says whether the model can use it."""
 
     def __init__(self, model, opt, ts):
-        from ancf.pattern import ReducedPattern
-        asm, rheo = model.assembly, model.rheo
+        asm, rheo, p = model.assembly, model.rheo, model.pattern
         grp = asm.groups[0]
-        el = grp.element
-        self.pattern = p = ReducedPattern(asm.n_dofs, [grp.dofmap], rheo.T)
+        pts = grp.element.points
         vidx, midx = p.groups[0]
-        Mb, dummy = p.zeros_matrix(), np.zeros(p.n)
-        scatter(np.zeros((el.nel, el.ndof)), el.mass(), vidx, midx, dummy, Mb, True)
-        pts = el.points
         elarrays = (pts.E0, pts.BX, pts.BY, pts.dX0, pts.dY0, pts.w, pts.C, pts.cidx)
         self.mdl = (p.qsel, p.zsel, np.ascontiguousarray(grp.dofmap), elarrays, vidx, midx)
         presc = np.array(sorted({int(d) for dofs, _ in rheo.motions for d in dofs} | set(rheo.follow)),
@@ -167,7 +163,7 @@ class CompiledAlpha:
         Mp = np.zeros((p.n, presc.size))
         np.add.at(Mp, p.zsel, Mcols[p.qsel])
         Q = model.forces.value(rheo.g0, np.zeros(asm.n_dofs), 0.0)
-        self.sys = (Mb, p.kl, p.reduce(Q), Mp, gdd, presc, gvals, np.array(rheo.g0, dtype=float))
+        self.sys = (model.Mb, p.kl, p.reduce(Q), Mp, gdd, presc, gvals, np.array(rheo.g0, dtype=float))
         self.fs = (p.zeros_matrix(), np.zeros(p.n, dtype=np.int64), np.array([np.nan]))
         self.cf = np.array(opt.coefficients())
         self.count = np.zeros(5, dtype=np.int64)
@@ -175,16 +171,8 @@ class CompiledAlpha:
     @staticmethod
     def applies(model) -> bool:
         from ancf.forces import Gravity
-        asm = getattr(model, "assembly", None)
-        return (getattr(model, "form", "") == "elimination" and asm is not None
-                and len(asm.groups) == 1
-                and hasattr(asm.groups[0].element, "points")
+        p = getattr(model, "pattern", None)
+        return (getattr(model, "form", "") == "elimination" and p is not None and p.band
+                and len(model.assembly.groups) == 1
+                and hasattr(model.assembly.groups[0].element, "points")
                 and all(isinstance(t, Gravity) for t in model.forces.terms))
-
-    def to_pattern(self, z):
-        out = np.empty_like(z)
-        out[self.pattern.order] = z
-        return out
-
-    def from_pattern(self, zp):
-        return zp[self.pattern.order]

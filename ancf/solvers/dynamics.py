@@ -30,6 +30,8 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ancf.pattern import ReducedPattern
+from ancf.solvers.linear import factor
 from ancf.solvers.result import DynamicResult, finish
 
 IVP_METHODS = {"rk45": si.RK45, "dop853": si.DOP853, "radau": si.Radau, "bdf": si.BDF}
@@ -85,7 +87,9 @@ def _mul(A, B):
 
 
 class ReducedModel:
-    """Elimination form q = T z + g(t) (``rheo`` from ``Elimination.rheonomic()``)."""
+    """Elimination form q = T z + g(t) (``rheo`` from ``Elimination.rheonomic()``), in
+    the numbering of its :class:`~ancf.pattern.ReducedPattern`: forces and tangents
+    are scattered straight into the reduced system, M_r is factored once (band LU)."""
 
     form = "elimination"
     constraints = None
@@ -93,45 +97,52 @@ class ReducedModel:
     def __init__(self, assembly, forces, rheo, dense: bool | None = None):
         self.assembly, self.forces, self.rheo = assembly, forces, rheo
         self.dense = assembly.n_dofs <= DENSE_MAX if dense is None else dense
-        self.T = rheo.T.tocsr()
+        self.pattern = p = ReducedPattern(assembly.n_dofs, [g.dofmap for g in assembly.groups], rheo.T)
+        self.n = p.n
+        self.T = rheo.T.tocsr()[:, np.argsort(p.order)].tocsr()  # columns in the pattern's order
         self.TT = self.T.T.tocsr()
         self.M_full = assembly.mass()
-        M = (self.TT @ self.M_full @ self.T).tocsr()
-        self.n = self.T.shape[1]
-        self.lu = _factor(M)
+        self.Mb = p.mass(assembly)
+        self.lu = factor(p, self.Mb)
         self.minv = _Dense(self.lu, self.n)
+        M = p.as_csr(self.Mb)
         self.M = M.toarray() if self.dense else M
-        self._Td = self.T.toarray() if self.dense else None
+        self._zero = np.zeros(assembly.n_dofs)
+
+    def _g(self, t, order=0):
+        if self.rheo.time_dependent:
+            return self.rheo.g(t, order)
+        return self.rheo.g0 if order == 0 else self._zero
 
     def full(self, z, zd, t):
-        return self.T @ z + self.rheo.g(t), self.T @ zd + self.rheo.g(t, 1)
+        return self.pattern.expand(z, self._g(t)), self.pattern.expand(zd, self._g(t, 1))
 
     def initial(self, q0, v0):
-        return np.asarray(q0)[self.rheo.free].copy(), np.asarray(v0)[self.rheo.free].copy()
+        return self.pattern.restrict(q0), self.pattern.restrict(v0)
 
     def _inertial(self, t):
         if not self.rheo.time_dependent:
             return 0.0
-        return self.TT @ (self.M_full @ self.rheo.g(t, 2))
+        return self.pattern.reduce(self.M_full @ self.rheo.g(t, 2))
 
     def force(self, z, zd, t):
         q, v = self.full(z, zd, t)
-        Q = self.forces.value(q, v, t) - self.assembly.gradient(q)
-        return self.TT @ Q - self._inertial(t)
+        grad, _ = self.pattern.assemble(self.assembly, q, want_K=False)
+        return self.pattern.reduce(self.forces.value(q, v, t)) - grad - self._inertial(t)
 
     def tangent(self, z, zd, t):
-        """(F_r, K_r = -dF_r/dz, D_r = -dF_r/dz' or None), sparse."""
+        """(F_r, K_r = -dF_r/dz, D_r = -dF_r/dz' or None), dense or sparse."""
         q, v = self.full(z, zd, t)
-        grad, K = assembled_tangent(self.assembly, q, self.dense)
+        grad, Kb = self.pattern.assemble(self.assembly, q)
+        F = self.pattern.reduce(self.forces.value(q, v, t)) - grad - self._inertial(t)
+        K = self.pattern.as_csr(Kb)
         Kq, Kv = self.forces.jacobians(q, v, t)
-        F = self.TT @ (self.forces.value(q, v, t) - grad) - self._inertial(t)
         if Kq is not None:
-            K = K - (_dense(Kq) if self.dense else Kq)
-        if self.dense:
-            Td = self._Td
-            return F, Td.T @ K @ Td, None if Kv is None else -(Td.T @ _dense(Kv) @ Td)
+            K = K - self.TT @ Kq @ self.T
         D = None if Kv is None else -(self.TT @ Kv @ self.T).tocsr()
-        return F, (self.TT @ K @ self.T).tocsr(), D
+        if self.dense:
+            return F, _dense(K), None if D is None else _dense(D)
+        return F, K.tocsr(), D
 
     def acc(self, z, zd, t):
         return self.lu.solve(self.force(z, zd, t))

@@ -239,16 +239,16 @@ def _compiled_samples(t_out, ts, slot, out_x, out_v, reached):
     return X, V
 
 
-def _python_fallback(ca, st, state, ts, k, slot, out_x, out_v):
+def _python_fallback(st, state, ts, k, slot, out_x, out_v):
     """Take step k with the Python stepper (step halving), updating state in place;
     returns (ok, message, step reached, next step)."""
-    cur = _State(*(ca.from_pattern(a) for a in state), np.zeros(0))
+    cur = _State(*(a.copy() for a in state), np.zeros(0))
     try:
         new = st.advance(cur, ts[k], ts[k + 1] - ts[k])
     except _Failed as exc:
         return False, str(exc), k, k
     for arr, val in zip(state, (new.x, new.v, new.acc, new.a)):
-        arr[:] = ca.to_pattern(val)
+        arr[:] = val
     if slot[k + 1] >= 0:
         out_x[slot[k + 1]], out_v[slot[k + 1]] = state[0], state[1]
     return True, "reached t_end", ts.size - 1, k + 1
@@ -258,7 +258,7 @@ def _run_compiled(model, st, s, t_out, ts, limit, opt):
     """March with the compiled loop, handing failed steps to the Python stepper."""
     ca = CompiledAlpha(model, opt, ts)
     slot, kept = _keep_slots(t_out, ts)
-    state = tuple(ca.to_pattern(a) for a in (s.x, s.v, s.acc, s.a))
+    state = tuple(np.array(a, dtype=float) for a in (s.x, s.v, s.acc, s.a))
     out_x, out_v = np.zeros((kept, s.x.size)), np.zeros((kept, s.x.size))
     out_x[slot[0]], out_v[slot[0]] = state[0], state[1]
     k, ok, msg, reached = 0, True, "reached t_end", ts.size - 1
@@ -276,9 +276,8 @@ def _run_compiled(model, st, s, t_out, ts, limit, opt):
             msg = (f"blow-up: |q| exceeded {limit:.3g} at t = {ts[k]:.6g} s "
                    "(energy growing without bound)")
         else:
-            ok, msg, reached, k = _python_fallback(ca, st, state, ts, k, slot, out_x, out_v)
+            ok, msg, reached, k = _python_fallback(st, state, ts, k, slot, out_x, out_v)
     X, V = _compiled_samples(t_out, ts, slot, out_x, out_v, reached)
-    X, V = [ca.from_pattern(x) for x in X], [ca.from_pattern(v) for v in V]
     return X, V, [np.zeros(0)] * len(X), ok, msg, ca.count
 
 

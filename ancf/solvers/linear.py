@@ -44,7 +44,10 @@ class _BandLU:
             raise Singular(f"zero pivot in column {k - 1}")
 
     def solve(self, rhs):
+        """Solve for a vector, or for each column of a matrix."""
         x = np.array(rhs, dtype=float)
+        if x.ndim == 2:
+            return np.stack([self.solve(c) for c in x.T], axis=1)
         banded.solve(self.AB, self.kl, self.piv, x)
         if not np.all(np.isfinite(x)):
             raise Singular("non-finite solution")
