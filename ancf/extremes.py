@@ -22,14 +22,14 @@ from typing import Callable
 
 import pandas as pd
 
+from ancf.elements.catalogue import ELEMENTS
 from ancf.references import cache_root
 
 E, L, B = 2.07e11, 2.0, 0.1
 MODEL_1 = {"h": 0.1, "nu": 0.3}
 MODEL_2 = {"h": 0.5, "nu": 0.0}
 F1 = -5e8 * 0.1**3  # Model 1 tip load [N]
-SCHEMES = (("linear", "thesis"), ("linear", "exact"), ("linear", "report-selective"),
-           ("linear", "report-fix"), ("omar-shabana", "thesis"), ("omar-shabana", "exact"))
+SCHEMES = tuple((name, s) for name, cls in ELEMENTS.items() for s in cls.schemes)
 WORKS = 1e-2     # converged and error <= 1 %: works
 ROUGH = 1e-1     # 1 % < error <= 10 %: usable; beyond: locked / wrong
 

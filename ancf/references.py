@@ -35,6 +35,8 @@ from typing import Callable
 
 import numpy as np
 
+from ancf.elements.catalogue import ELEMENTS
+
 #: Physics a scene may need / a model may provide.
 PHYSICS = ("axial", "bending", "shear", "large-rotation", "inertia", "contact", "3D")
 
@@ -250,16 +252,10 @@ class SceneSpec:
         return {k: v for k, v in params.items() if k not in self.knobs}
 
 
-LINEAR_SCHEMES = ("thesis", "exact", "report-selective", "report-fix")
-OS_SCHEMES = ("thesis", "exact")
-
-
 def _element_grids(ns, **extra) -> tuple:
-    """Both elements with every scheme each accepts, times ``ns`` and ``extra``."""
-    return ({"element": ["linear"], "integration": list(LINEAR_SCHEMES), "n_elements": list(ns),
-             **extra},
-            {"element": ["omar-shabana"], "integration": list(OS_SCHEMES), "n_elements": list(ns),
-             **extra})
+    """Every catalogue element with every scheme it accepts, times ``ns`` and ``extra``."""
+    return tuple({"element": [name], "integration": list(cls.schemes), "n_elements": list(ns), **extra}
+                 for name, cls in ELEMENTS.items())
 
 
 _STATIC_RTOL = {"rtol": [1e-4, 1e-8]}

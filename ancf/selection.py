@@ -30,10 +30,9 @@ def tie_limit(least: float, band: float = COST_TIE, abs_band: float = COST_TIE_A
 def model_size(row) -> float:
     """Global coordinates of the run's mesh: (n_elements + 1) nodes x coordinates per
     node of its element; n_elements alone for elements of other families."""
-    from ancf.scenes.beam_static import ELEMENTS
-    n = float(row["n_elements"])
-    el = ELEMENTS.get(str(row.get("element")))
-    return (n + 1) * 2 * len(el.slots) if el is not None else n
+    from ancf.elements.catalogue import ELEMENTS, coordinates_per_node
+    n, name = float(row["n_elements"]), str(row.get("element"))
+    return (n + 1) * coordinates_per_node(name) if name in ELEMENTS else n
 
 
 def _departures(df: pd.DataFrame, defaults: dict | None) -> np.ndarray:

@@ -22,7 +22,6 @@ from pathlib import Path
 import numpy as np
 
 from ancf.scenes import SCENES
-from ancf.scenes import beam_static as bs
 from ancf.solvers.linear import factor, stability
 from ancf.pattern import scatter
 from benchmarks.conftest import ancf_machine

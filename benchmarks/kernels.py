@@ -13,10 +13,11 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 from ancf.constraints import Elimination
+from ancf.elements.catalogue import ELEMENTS as CATALOGUE_ELEMENTS
 from ancf.scenes import SCENES
 from ancf.scenes import beam_static as bs
 
-ELEMENTS = ("linear", "omar-shabana")
+ELEMENTS = tuple(CATALOGUE_ELEMENTS)
 N_ELEMENTS = (4, 16, 64, 256)
 THESIS_RATIO = 0.5  # thesis: a Newton iteration with the linear element is ~2x shorter
 

@@ -22,7 +22,7 @@ from ancf.scenes import SCENES
 from ancf.scenes import beam_static as bs
 from ancf.scenes import pendulum, spinning_beam
 from ancf.scenes import beam_dynamic as bd
-from ancf.solvers import banded, linear
+from ancf.solvers import banded
 from ancf.solvers.generalized_alpha import AlphaOptions, integrate_generalized_alpha
 
 

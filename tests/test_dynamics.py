@@ -17,7 +17,7 @@ import pytest
 from analytic.dynamics_refs import DYNAMIC_REFERENCES
 from ancf.constraints import Elimination
 from ancf.forces import Forces, Gravity
-from ancf.scenes import beam_dynamic as bd
+from ancf.scenes import beam_static as bs
 from ancf.scenes import pendulum, spinning_beam
 from ancf.scenes.base import InputError
 from ancf.energy import energy_history
@@ -39,7 +39,7 @@ def _tips(out):
 @pytest.mark.parametrize("element", ["linear", "omar-shabana"])
 def test_gravity_and_mass_are_exact_integrals(element):
     p = PEND.resolve({"element": element, "n_elements": 3})
-    mesh, q0, asm = bd.build(p)
+    mesh, q0, asm = bs.build(p)
     m = p["rho"] * p["L"] * p["b"] * p["h"]
     grav = Gravity(asm, (0.0, -9.81))
     Q = grav.Q.reshape(-1, 2)

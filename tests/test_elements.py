@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from ancf.assembly import Assembly, ElementGroup
+from ancf.elements.catalogue import ELEMENTS
 from ancf.elements.linear2d import LinearBeam2D
 from ancf.elements.omar_shabana import OmarShabana2D
 from ancf.mesh import BeamMesh
@@ -24,8 +25,7 @@ L = 2.0
 H = 1e-6
 RTOL = 1e-6
 
-CASES = [(LinearBeam2D, s) for s in ("thesis", "exact", "report-selective", "report-fix")] \
-    + [(OmarShabana2D, "thesis")]
+CASES = [(cls, s) for cls in ELEMENTS.values() for s in cls.schemes]  # the whole catalogue
 IDS = [f"{c.__name__}-{s}" for c, s in CASES]
 
 
@@ -87,8 +87,7 @@ def test_tangent_matches_gradient_differences(cls, scheme, nu):
     assert ok, (err / ref).max()
 
 
-@pytest.mark.parametrize("cls,scheme", CASES + [(OmarShabana2D, "exact")],
-                         ids=IDS + ["OmarShabana2D-exact"])
+@pytest.mark.parametrize("cls,scheme", CASES, ids=IDS)
 def test_tangent_symmetric(cls, scheme):
     m, q0, el = _build(cls, scheme)
     for q in (q0, _perturbed(m, q0, seed=2)):

@@ -16,6 +16,7 @@ import sympy as sp
 
 from analytic import shape_functions as sf
 from analytic.shape_functions import FAMILIES, a, b, derive, l, x, y, z
+from ancf.elements.catalogue import ELEMENTS
 from ancf.assembly import Assembly, ElementGroup
 from ancf.elements import _generated as gen
 from ancf.elements.linear2d import LinearBeam2D
@@ -193,8 +194,7 @@ def test_rigid_body_motion_reproduced(family):
         np.testing.assert_allclose(rk, np.broadcast_to(R[:, k], rk.shape), rtol=0, atol=1e-12)
 
 
-ELEMENT_SCHEMES = [(LinearBeam2D, s) for s in ("thesis", "exact", "report-selective", "report-fix")] \
-    + [(OmarShabana2D, s) for s in ("thesis", "exact")]
+ELEMENT_SCHEMES = [(cls, s) for cls in ELEMENTS.values() for s in cls.schemes]  # the catalogue
 
 
 def _rigid(mesh: BeamMesh, q, R, c):

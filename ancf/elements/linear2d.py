@@ -17,12 +17,11 @@ Integration schemes (``integration=``):
 """
 from __future__ import annotations
 
-import numpy as np
+from ancf.elements.continuum2d import ContinuumElement
+from ancf.elements.material import beam_material, scheme_terms
 
-from ancf.elements.continuum2d import ContinuumBeam2D
 
-
-class LinearBeam2D(ContinuumBeam2D):
+class LinearBeam2D(ContinuumElement):
     family = "linear2d"
     slots = ("r", "r_y")
     schemes = {
@@ -33,6 +32,5 @@ class LinearBeam2D(ContinuumBeam2D):
     }
 
     def __init__(self, lengths, e0, section, E, nu, rho=0.0, ks=5.0 / 6.0, integration="thesis"):
-        G = E / (2.0 * (1.0 + nu))
-        terms = self.scheme_terms(integration, np.diag([E, E, 0.0]), np.diag([0.0, 0.0, ks * G]))
+        terms = scheme_terms(self.schemes, integration, *beam_material(E, nu, ks))
         super().__init__(lengths, e0, section, terms, rho)

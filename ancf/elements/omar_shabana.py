@@ -12,15 +12,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf.elements.continuum2d import ContinuumBeam2D, lame_matrix
+from ancf.elements.continuum2d import ContinuumElement
+from ancf.elements.material import lame_matrix, scheme_terms
 
 
-class OmarShabana2D(ContinuumBeam2D):
+class OmarShabana2D(ContinuumElement):
     family = "cubic2d"
     slots = ("r", "r_x", "r_y")
     schemes = {"thesis": "all=4xe", "exact": "all=5xe"}
 
     def __init__(self, lengths, e0, section, E, nu, rho=0.0, integration="thesis"):
-        C = lame_matrix(E, nu)
-        terms = self.scheme_terms(integration, C, np.zeros((3, 3)))
+        terms = scheme_terms(self.schemes, integration, lame_matrix(E, nu), np.zeros((3, 3)))
         super().__init__(lengths, e0, section, terms, rho)

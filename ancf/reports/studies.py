@@ -17,9 +17,10 @@ from analytic import timoshenko  # noqa: E402
 from ancf.reports import published as pub  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, reference, run,  # noqa: E402
                                  save_figure, write_csv)
+from ancf.elements.catalogue import ELEMENTS  # noqa: E402
 from ancf.scenes import beam_static as bs  # noqa: E402
 
-SCHEMES = ("thesis", "exact", "report-selective", "report-fix")
+SCHEMES = tuple(ELEMENTS["linear"].schemes)  # the linear element's schemes
 
 
 def _base(**kw):

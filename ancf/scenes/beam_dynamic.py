@@ -1,20 +1,16 @@
 """Shared pieces of the dynamic planar-beam scenes (thesis 2.4, dynamic examples).
 
-Parameters of the integrators and constraint forms, the model builder (the
-static ``beam_static.build`` has no density), the two constraint forms of one
-``Elimination`` and the run statistics in the public results.
+Parameters of the integrators and constraint forms, the two constraint forms of
+one ``Elimination`` and the run statistics in the public results; the model is
+built by ``beam_static.build`` (with the density ``rho``).
 """
 from __future__ import annotations
 
 import numpy as np
 
-from ancf.assembly import Assembly, ElementGroup
-from ancf.elements.linear2d import LinearBeam2D
 from ancf.energy import energy_history
 from ancf.forces import Forces
-from ancf.mesh import BeamMesh
 from ancf.multipliers import Baumgarte, LinearConstraints
-from ancf.quadrature import RectangularSection
 from ancf.scenes import beam_static as bs
 from ancf.scenes.base import InputError, Param
 from ancf.solvers.dynamics import INTEGRATORS, MultiplierModel, ReducedModel, integrate
@@ -64,17 +60,6 @@ def check(p: dict) -> None:
     if p["output_dt"] > p["t_end"]:
         raise InputError(f"output_dt = {p['output_dt']!r} is out of range; allowed: a number in "
                          f"(0, t_end = {p['t_end']:g}]")
-
-
-def build(p: dict):
-    """(mesh, q0, assembly) of a straight beam along +x from the origin, with density."""
-    cls = bs.ELEMENTS[p["element"]]
-    mesh = BeamMesh(p["L"], p["n_elements"], cls.slots)
-    q0 = mesh.reference()
-    kw = {"ks": p["ks"]} if cls is LinearBeam2D else {}
-    el = cls(mesh.lengths, q0[mesh.dofmap], RectangularSection(p["b"], p["h"]), p["E"], p["nu"],
-             rho=p["rho"], integration=p["integration"], **kw)
-    return mesh, q0, Assembly(mesh.n_dofs, [ElementGroup(el, mesh.dofmap)])
 
 
 def model(p: dict, assembly, terms, elim):

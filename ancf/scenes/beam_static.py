@@ -11,16 +11,13 @@ import numpy as np
 
 from ancf.assembly import Assembly, ElementGroup
 from ancf.constraints import Elimination
-from ancf.elements.linear2d import LinearBeam2D
-from ancf.elements.omar_shabana import OmarShabana2D
+from ancf.elements.catalogue import ELEMENTS, element_kwargs
 from ancf.mesh import BeamMesh
 from ancf.quadrature import RectangularSection
 from ancf.scenes.base import InputError, Param, SceneResult
 from ancf.solvers.linear import ZERO_EIGENVALUE_REL
 from ancf.solvers.static import NewtonOptions, solve_static, stability_at
 
-ELEMENTS = {"linear": LinearBeam2D, "omar-shabana": OmarShabana2D}
-SCHEMES = tuple(dict.fromkeys(list(LinearBeam2D.schemes) + list(OmarShabana2D.schemes)))
 
 
 def element_params(E=2.07e11, nu=0.0, h=0.1, n_elements=8) -> tuple:
@@ -61,13 +58,13 @@ def check_integration(p: dict) -> None:
 
 
 def build(p: dict):
-    """(mesh, q0, assembly) of a straight beam along +x from the origin."""
+    """(mesh, q0, assembly) of a straight beam along +x from the origin, of the
+    catalogue element ``p["element"]`` (density ``p["rho"]`` if given, else 0: statics)."""
     cls = ELEMENTS[p["element"]]
     mesh = BeamMesh(p["L"], p["n_elements"], cls.slots)
     q0 = mesh.reference()
-    kw = {"ks": p["ks"]} if cls is LinearBeam2D else {}
     el = cls(mesh.lengths, q0[mesh.dofmap], RectangularSection(p["b"], p["h"]), p["E"], p["nu"],
-             integration=p["integration"], **kw)
+             rho=p.get("rho", 0.0), integration=p["integration"], **element_kwargs(p["element"], p))
     return mesh, q0, Assembly(mesh.n_dofs, [ElementGroup(el, mesh.dofmap)])
 
 

@@ -13,12 +13,13 @@ import numpy as np
 from ancf.constraints import Elimination
 from ancf.forces import Gravity
 from ancf.scenes import beam_dynamic as bd
+from ancf.scenes import beam_static as bs
 from ancf.scenes.base import Param, Scene, SceneResult
 
 
 def setup(p: dict):
     """(mesh, q0, assembly, model, forces) of the pendulum."""
-    mesh, q0, asm = bd.build(p)
+    mesh, q0, asm = bs.build(p)
     elim = Elimination(mesh.n_dofs)
     for k in (0, 1):
         elim.fix(mesh.dof(0, "r", k), q0[mesh.dof(0, "r", k)])

@@ -29,6 +29,7 @@ import numpy as np
 from ancf.constraints import Elimination
 from ancf.quadrature import gauss01
 from ancf.scenes import beam_dynamic as bd
+from ancf.scenes import beam_static as bs
 from ancf.scenes.base import InputError, Param, Scene, SceneResult
 
 
@@ -55,7 +56,7 @@ def slope_motion(omega_s, T_s, slot):
 
 
 def setup(p: dict):
-    mesh, q0, asm = bd.build(p)
+    mesh, q0, asm = bs.build(p)
     elim = Elimination(mesh.n_dofs)
     for k in (0, 1):
         elim.fix(mesh.dof(0, "r", k), 0.0)

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ancf.elements.kernel2d import gradient_tangent
+from ancf.elements.green2d import GreenPlanar, gradient_tangent
 from ancf.pattern import scatter
 from ancf.solvers import banded
 
@@ -151,9 +151,9 @@ class CompiledAlpha:
     def __init__(self, model, opt, ts):
         asm, rheo, p = model.assembly, model.rheo, model.pattern
         grp = asm.groups[0]
-        pts = grp.element.points
+        el, pts = grp.element, grp.element.points
         vidx, midx = p.groups[0]
-        elarrays = (pts.E0, pts.BX, pts.BY, pts.dX0, pts.dY0, pts.w, pts.C, pts.cidx)
+        elarrays = (pts.E0, pts.BX, pts.BY, pts.dX0, pts.dY0, pts.w, el.C, pts.cidx)
         self.mdl = (p.qsel, p.zsel, np.ascontiguousarray(grp.dofmap), elarrays, vidx, midx)
         presc = np.array(sorted({int(d) for dofs, _ in rheo.motions for d in dofs} | set(rheo.follow)),
                          dtype=np.int64)
@@ -174,5 +174,5 @@ class CompiledAlpha:
         p = getattr(model, "pattern", None)
         return (getattr(model, "form", "") == "elimination" and p is not None and p.band
                 and len(model.assembly.groups) == 1
-                and hasattr(model.assembly.groups[0].element, "points")
+                and getattr(model.assembly.groups[0].element, "strain", None) is GreenPlanar
                 and all(isinstance(t, Gravity) for t in model.forces.terms))

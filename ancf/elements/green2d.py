@@ -1,6 +1,9 @@
-"""Compiled Green-strain kernel of the planar continuum beams (numba).
+"""Strain model: planar Green-Lagrange strains, compiled (numba).
 
-One call evaluates every element at every quadrature point of every energy term:
+:class:`GreenPlanar` declares the model; its kernels give the strain energy, its
+gradient and its exact tangent from the strains, their first derivatives ``G``
+and the geometric term.  One call evaluates every element at every quadrature
+point of every energy term:
 the points of all terms are concatenated, each carrying the index of its
 material matrix in ``C`` (nterm, 3, 3).  Per point, with the displacement
 gradients ``u_x = sum_k BX_k (E_k - E0_k)`` (no cancellation at small strain),
@@ -100,3 +103,13 @@ def gradient_tangent(E, E0, BX, BY, dX0, dY0, w, C, cidx, want_K, g, K):
             for a in range(nd):
                 for b in range(a + 1, nd):
                     K[e, b, a] = K[e, a, b]
+
+
+class GreenPlanar:
+    """Planar Green-Lagrange strains in the element's local frame, Voigt
+    ``[eps_xx, eps_yy, 2 eps_xy]``, from the gradients ``r_x``, ``r_y`` (dim 2)."""
+
+    dim = 2
+    voigt = 3
+    energy = staticmethod(energy)
+    gradient_tangent = staticmethod(gradient_tangent)

@@ -1,0 +1,64 @@
+"""A basis: a generated shape-function family bound to a mesh, at elements x points.
+
+The family (``analytic/shape_functions.py`` -> ``_generated.py``) gives the shape
+functions S and their derivatives along x and y; the mesh gives the element
+lengths and the reference element coordinates ``E0`` (nel, nshape, dim); a
+quadrature rule (``nx`` Gauss points along the axis, ``ny`` across the section or
+``"exact"``) gives the points.  A :class:`Basis` holds, at every element x point,
+the shape-function derivatives ``BX``, ``BY`` (nel, nq, nshape), the reference
+gradients ``dX0``, ``dY0`` (nel, nq, dim) and the weights ``w`` (nel, nq) times the
+reference volume element; :meth:`Basis.concat` sets several rules side by side
+(one per energy term) for a single kernel call, ``cidx`` naming each point's term.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ancf.quadrature import RectangularSection, gauss01
+
+
+def family_shapes(family: str) -> dict:
+    """The generated shape-function evaluators of a family (see analytic/shape_functions):
+    ``S``, ``x``, ``y`` (callables of X, Y, L arrays), ``n`` shape functions, ``mass``."""
+    from ancf.elements import _generated as gen
+
+    fns = {d: getattr(gen, f"{family}_{d}") for d in ("S", "x", "y")}
+    fns["n"] = fns["S"](np.zeros(1), np.zeros(1), np.ones(1)).shape[-1]
+    fns["mass"] = getattr(gen, f"{family}_mass")
+    return fns
+
+
+def _grad(B, E):
+    return np.einsum("eqk,ekd->eqd", B, E)
+
+
+class Basis:
+    """``shapes`` of a family on elements of ``lengths`` (m) with reference coordinates
+    ``E0``, evaluated at the rule (nx, ny) over ``section``."""
+
+    def __init__(self, shapes, lengths, E0, section: RectangularSection, nx: int, ny):
+        xi, wx = gauss01(nx)
+        yq, wy = section.rule(ny)
+        nel = lengths.shape[0]
+        X = (xi[None, :, None] * lengths[:, None, None]) * np.ones((1, 1, yq.size))
+        Y = np.broadcast_to(yq[None, None, :], X.shape)
+        L = np.broadcast_to(lengths[:, None, None], X.shape)
+        self.BX = shapes["x"](X, Y, L).reshape(nel, -1, shapes["n"])
+        self.BY = shapes["y"](X, Y, L).reshape(nel, -1, shapes["n"])
+        w = (wx[None, :, None] * wy[None, None, :] * lengths[:, None, None]).reshape(nel, -1)
+        self.E0 = np.ascontiguousarray(E0)
+        self.dim = self.E0.shape[-1]
+        self.dX0, self.dY0 = _grad(self.BX, self.E0), _grad(self.BY, self.E0)
+        J0 = np.stack([self.dX0, self.dY0], axis=-1)  # (nel, nq, dim, 2)
+        self.w = w * np.abs(np.linalg.det(J0))  # reference volume element
+        self.cidx = np.zeros(self.w.shape[1], dtype=np.int64)
+
+    @classmethod
+    def concat(cls, bases) -> "Basis":
+        """The points of several bases side by side; ``cidx`` = index of each point's basis."""
+        out = cls.__new__(cls)
+        for name in ("BX", "BY", "dX0", "dY0", "w"):
+            setattr(out, name, np.ascontiguousarray(np.concatenate([getattr(b, name) for b in bases], 1)))
+        out.E0, out.dim = bases[0].E0, bases[0].dim
+        out.cidx = np.concatenate([np.full(b.w.shape[1], i, dtype=np.int64) for i, b in enumerate(bases)])
+        return out

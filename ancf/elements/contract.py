@@ -1,0 +1,35 @@
+"""The element contract: what solvers, forces, energies and scenes may rely on.
+
+Every element in :mod:`ancf.elements.catalogue` satisfies it, and the contract tests
+(``tests/test_elements.py``: finite-difference gradients and tangents, symmetry,
+rigid-motion invariance, zero-energy-mode counts, exact mass) run over the whole
+catalogue, so a new element gets them by being listed there.
+"""
+from __future__ import annotations
+
+from typing import Protocol
+
+import numpy as np
+
+
+class Element(Protocol):
+    family: str          # generated shape-function family (analytic/shape_functions.py)
+    slots: tuple         # nodal coordinate slots, each a dim-vector: ("r", "r_x", ...)
+    schemes: dict        # named integration schemes -> term specs
+    nel: int             # elements
+    nshape: int          # shape functions per element
+    dim: int             # space dimension of the nodal vectors
+    ndof: int            # coordinates per element = dim * nshape
+    lengths: np.ndarray  # (nel,) element lengths, m
+    rho: float           # density, kg/m^3
+    shapes: dict         # evaluators S, x, y of the family and its exact mass integral
+    section: object      # cross-section (RectangularSection: b, h, rule, moments)
+
+    def energy(self, e) -> np.ndarray:
+        """Strain energy of each element (nel,), J, at element coordinates e (nel, ndof)."""
+
+    def gradient(self, e, tangent: bool = False):
+        """dU/de (nel, ndof), N, and the exact tangent (nel, ndof, ndof), N/m, or None."""
+
+    def mass(self) -> np.ndarray:
+        """Consistent mass matrices (nel, ndof, ndof), kg."""

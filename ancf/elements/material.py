@@ -1,0 +1,90 @@
+"""Materials of the planar continuum beams and the energy terms they are split into.
+
+A material is a 3x3 matrix acting on Voigt Green strains ``[eps_xx, eps_yy, 2 eps_xy]``
+(Pa).  An element's strain energy is a sum of :class:`EnergyTerm` s, each a part of
+the material integrated with its own rule: this is how selective and reduced
+integration are expressed (``normal=2x2,shear=1x1``; ``e`` = exact across the height).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ancf.quadrature import EXACT
+
+
+@dataclass(frozen=True)
+class EnergyTerm:
+    """Material matrix ``C`` (3x3, Pa) integrated with ``nx`` Gauss points along the
+    axis and ``ny`` points (or ``"exact"``) across the height."""
+
+    name: str
+    C: np.ndarray
+    nx: int
+    ny: object
+
+
+def lame_matrix(E: float, nu: float) -> np.ndarray:
+    """Eq. 2.17: plane-strain matrix of Lamé constants, Pa."""
+    lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    mu = E / (2.0 * (1.0 + nu))
+    return np.array([[lam + 2 * mu, lam, 0.0], [lam, lam + 2 * mu, 0.0], [0.0, 0.0, mu]])
+
+
+def beam_material(E: float, nu: float, ks: float) -> tuple[np.ndarray, np.ndarray]:
+    """Eq. 2.18 without Poisson coupling, split into its normal part diag(E, E, 0)
+    and its shear part diag(0, 0, ks G), G = E / (2 (1 + nu))."""
+    G = E / (2.0 * (1.0 + nu))
+    return np.diag([E, E, 0.0]), np.diag([0.0, 0.0, ks * G])
+
+
+def parse_rule(text: str):
+    """'2x2' -> (2, 2); '1xe' -> (1, 'exact')."""
+    try:
+        nx, ny = text.lower().split("x")
+        ny = EXACT if ny in ("e", "exact") else int(ny)
+        nx = int(nx)
+        if nx < 1 or (ny != EXACT and ny < 1):
+            raise ValueError
+        return nx, ny
+    except ValueError:
+        raise ValueError(f"integration rule {text!r} must look like 'NXxNY' with NX >= 1 "
+                         f"Gauss points along x and NY >= 1 or 'e' (exact) across y") from None
+
+
+def _merge_same_rule(terms):
+    """Terms sharing a quadrature rule are one term with the summed material matrix
+    (the thesis scheme then costs one kernel evaluation, not two)."""
+    merged = {}
+    for t in terms:
+        key = (t.nx, t.ny)
+        if key in merged:
+            m = merged[key]
+            merged[key] = EnergyTerm(f"{m.name}+{t.name}", m.C + t.C, t.nx, t.ny)
+        else:
+            merged[key] = t
+    return list(merged.values())
+
+
+def scheme_terms(schemes: dict, integration: str, C_normal, C_shear):
+    """Energy terms of a named scheme of ``schemes`` or of a spec 'normal=2x2,shear=1x1'."""
+    usage = (f"integration must be one of {sorted(schemes)} or a spec like "
+             f"'normal=2x2,shear=1x1' (got {integration!r})")
+    if not isinstance(integration, str):
+        raise ValueError(usage)
+    terms = []
+    for part in schemes.get(integration, integration).split(","):
+        try:
+            group, rule = (s.strip() for s in part.split("="))
+        except ValueError:
+            raise ValueError(usage) from None
+        C = {"normal": C_normal, "shear": C_shear, "all": C_normal + C_shear}.get(group)
+        if C is None:
+            raise ValueError(f"integration group {group!r} must be normal, shear or all")
+        terms.append(EnergyTerm(group, C, *parse_rule(rule)))
+    groups = sorted(t.name for t in terms)
+    if groups not in (["all"], ["normal", "shear"]):
+        raise ValueError(f"integration spec {integration!r} must give each of 'normal' and "
+                         f"'shear' once, or 'all' alone (got {', '.join(groups)})")
+    return _merge_same_rule(terms)
