@@ -14,6 +14,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 TD, TP = "tests/test_dynamics.py::", "tests/test_published_tables.py::"
+TA = "tests/test_analytic.py::"
 
 
 def plus_1_percent(before: str, value: str, after: str = "") -> tuple[str, str]:
@@ -48,6 +49,12 @@ MUTATIONS = [
      plus_1_percent("bs.element_params(nu=", "0.3"), TP + "test_model_1_is_the_cantilever_defaults"),
     ("cantilever h +1 %", "ancf/scenes/cantilever.py",
      plus_1_percent("bs.element_params(nu=0.3, h=", "0.1"), TP + "test_model_1_is_the_cantilever_defaults"),
+    ("Timoshenko reference's ks default +1 %", "analytic/timoshenko.py",
+     plus_1_percent("F: float,\n                   ks: float = ", "5.0 / 6.0"),
+     TA + "test_nu0_matches_published_analytic"),
+    ("Reissner reference's ks default +1 %", "analytic/reissner.py",
+     plus_1_percent("Fx: float = 0.0, ks: float = ", "5.0 / 6.0"),
+     TA + "test_reissner_matches_independent_shooting"),
     ("pendulum E +1 %", "ancf/scenes/pendulum.py",
      plus_1_percent("n_elements=4, E=", "2.07e7"), TD + "test_defaults_are_the_thesis_problem"),
     ("spinning beam E +1 %", "ancf/scenes/spinning_beam.py",
