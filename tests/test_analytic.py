@@ -1,7 +1,8 @@
 """Tests of the analytic references: analytic.timoshenko and analytic.reissner.
 
 Published values: Kerkkänen 2006 thesis Tables 2.1-2.4 and the 2003 report Tables 1-4
-(../shared/papers/ beside the project root).  Tolerances are stated at each assertion.
+(../shared/papers/ beside the project root).  Tolerances are stated at each assertion:
+today's value with a margin of 1.25 unless the value is round-off or a solver tolerance.
 """
 from __future__ import annotations
 
@@ -11,13 +12,13 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from analytic import reissner, timoshenko
 from analytic.reissner import BEAM188_64, MODELS, tip_position
 from analytic.timoshenko import (
     PUBLISHED, cantilever_tip_deflection, closed_form_text, derive_cantilever_tip_deflection,
     derive_mid_deflection, mid_deflection, published_analytic_check)
 
 E, L, H, B = 2.07e11, 2.0, 0.1, 0.1
+MARGIN = 1.25
 
 
 # --------------------------------------------------------------------------- Timoshenko
@@ -44,9 +45,10 @@ def test_closed_form_text_mentions_both_terms():
 
 
 def test_nu0_matches_published_analytic():
-    # Report Table 1: -0.09719807 mm; tolerance 1e-6 relative (observed 2.4e-8).
+    # Report Table 1: -0.09719807 mm (half a unit of the last digit: 5.1e-8 relative);
+    # today 2.4e-8 relative, tolerance 1.25 x.
     w_mm = mid_deflection(E, 0.0, L, H, B, -1000.0) * 1e3
-    assert w_mm == pytest.approx(-0.09719807, rel=1e-6)
+    assert w_mm == pytest.approx(-0.09719807, rel=MARGIN * 2.44e-8)
     # thesis Table 2.1 (6 decimals): -0.097198
     assert round(w_mm, 6) == -0.097198
 
@@ -104,12 +106,6 @@ def test_fitted_ks_and_fe_extrapolation_evidence():
     assert rich0 == pytest.approx(-0.09719807, abs=1e-8)
 
 
-def test_check_rows_are_computed_consistently():
-    for r in published_analytic_check():
-        assert math.isfinite(r["computed_mm"])
-        assert r["rel_diff"] == pytest.approx(r["computed_mm"] / r["published_mm"] - 1, abs=1e-15)
-
-
 @pytest.mark.parametrize("field,val", [("L", -1.0), ("h", 0.0), ("b", -0.1), ("E", 0.0)])
 def test_timoshenko_bad_input(field, val):
     kw = dict(E=E, nu=0.3, L=L, h=H, b=B, F=-1000.0)
@@ -126,25 +122,25 @@ def test_reissner_small_load_matches_linear_timoshenko(model):
     r = tip_position(**m)
     assert r.converged, r.message
     lin = cantilever_tip_deflection(**m)
-    # linear limit; tolerance 1e-6 relative (observed ~2e-13)
-    assert r.tip_y == pytest.approx(lin, rel=1e-6)
-    assert abs(r.tip_x - m["L"]) < 1e-6 * abs(lin)
+    # linear limit: today 1.6e-13 relative, tolerance the BVP tolerance 1e-10; the tip's
+    # axial shift (stretch and foreshortening) is today 2.32e-7 of the deflection, 1.25 x
+    assert r.tip_y == pytest.approx(lin, rel=1e-10)
+    assert abs(r.tip_x - m["L"]) < MARGIN * 2.32e-7 * abs(lin)
 
 
-# Observed differences to BEAM188 (64 elements):
-#   Model 1: reference (1.855232, -0.680886), d = (+8.2e-5, +1.9e-4) m
-#   Model 2: reference (1.851098, -0.704518), d = (-3.5e-4, -1.15e-3) m
+# |Reissner - BEAM188 (64 elements)| today, (x, y) m; tolerance 1.25 x
+BEAM188_TODAY = {"model1": (8.23e-5, 1.94e-4), "model2": (3.52e-4, 1.148e-3)}
+
+
 @pytest.mark.parametrize("model", ["model1", "model2"])
 def test_reissner_models_close_to_beam188(model):
     r = tip_position(**MODELS[model])
     assert r.converged, r.message
-    bx, by = BEAM188_64[model]
-    assert abs(r.tip_x - bx) < 2e-3
-    assert abs(r.tip_y - by) < 2e-3
+    d = np.abs(np.subtract((r.tip_x, r.tip_y), BEAM188_64[model]))
+    assert np.all(d < MARGIN * np.array(BEAM188_TODAY[model])), d
     # a downward load bends the beam down and shortens its horizontal reach
     assert r.tip_y < 0 and r.tip_x < MODELS[model]["L"] and r.tip_rotation < 0
     assert r.s[0] == 0 and r.s[-1] == pytest.approx(MODELS[model]["L"])
-    assert (r.x[-1], r.y[-1], r.theta[-1]) == (r.tip_x, r.tip_y, r.tip_rotation)
     assert r.M[-1] == pytest.approx(0, abs=1e-6 * abs(MODELS[model]["F"]) * MODELS[model]["L"])
 
 
@@ -224,8 +220,3 @@ def test_reissner_bad_input_raises(field, val, msg):
     kw[field] = val
     with pytest.raises(ValueError, match=msg):
         tip_position(**kw)
-
-
-def test_modules_importable_names():
-    assert hasattr(timoshenko, "published_analytic_check")
-    assert hasattr(reissner, "ReissnerResult")

@@ -5,7 +5,9 @@ pieces.  Tolerances of the unit checks: gravity, mass and kinetic energy are
 exact integrals, so 1e-12 relative (round-off); the Jacobian checks use central
 differences with step h = 1e-6 on states of size ~1, whose truncation error is
 ~1e-12 |f'''|, hence 1e-6 relative to the largest entry, plus the round-off
-10 eps |acc| / h.
+10 eps |acc| / h.  Acceptance checks: today's value (stated at each) with a margin of
+1.25 where the value is deterministic (fixed steps, or far above the integrator
+tolerance), and the published or issue-3 figure as a separate, looser assertion.
 """
 from __future__ import annotations
 
@@ -14,9 +16,11 @@ import math
 import numpy as np
 import pytest
 
-from analytic.dynamics_refs import DYNAMIC_REFERENCES
+from analytic.dynamics_refs import DYNAMIC_REFERENCES, rigid_pendulum, spinning_extension
 from ancf.constraints import Elimination
 from ancf.forces import Forces, Gravity
+from ancf.reports import published as pub
+from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
 from ancf.scenes import pendulum, spinning_beam
 from ancf.scenes.base import InputError
@@ -24,9 +28,8 @@ from ancf.energy import energy_history
 from ancf.solvers.dynamics import integrate
 
 PEND, SPIN = pendulum.SCENE, spinning_beam.SCENE
-L_PEND = 2.0
-THESIS_ENERGY_DEVIATION = 0.62e-4  # J, thesis 2.4 (4 elements)
-THESIS_EXTENSION = 1.09545e-4      # m, thesis 2.4 (Eq. 2.36)
+L_PEND = pub.PENDULUM["L"]
+MARGIN = 1.25
 
 
 def _tips(out):
@@ -171,16 +174,20 @@ def test_generalized_alpha_is_second_order():
     ref = _tips(PEND.execute({"t_end": 0.3, "rtol": 1e-11, "atol": 1e-13})[0])
     err = [np.abs(_tips(PEND.execute({"t_end": 0.3, "integrator": "generalized-alpha", "dt": dt,
                                       "rho_inf": 0.9})[0]) - ref).max() for dt in (2e-3, 1e-3)]
-    assert 3.0 < err[0] / err[1] < 5.0  # ~4 for second order
+    assert err[0] / err[1] == pytest.approx(4.0, abs=MARGIN * 0.055)  # today 3.945
 
 
 def test_generalized_alpha_steps_longer_than_the_sampling():
-    """dt > output_dt: equal steps of dt over [0, t_end], samples by cubic Hermite."""
+    """dt > output_dt: equal steps of dt over [0, t_end] (the samples at the step times are
+    those of a run sampled at dt), samples in between by cubic Hermite."""
+    ga = {"integrator": "generalized-alpha", "dt": 0.05}
     fine = _tips(PEND.execute({"integrator": "generalized-alpha", "dt": 1e-3})[0])
-    out, _ = PEND.execute({"integrator": "generalized-alpha", "dt": 0.05})
-    assert out["converged"] and out["results"]["steps"] == 20
-    assert len(out["results"]["times"]) == 101
-    assert np.hypot(*(_tips(out) - fine)).max() < 0.05 * L_PEND  # first-order-ish at 0.05 s
+    out, _ = PEND.execute(ga)
+    at_steps = _tips(PEND.execute(dict(ga, output_dt=0.05))[0])
+    assert out["converged"] and len(out["results"]["times"]) == 101
+    np.testing.assert_allclose(_tips(out)[:, ::5], at_steps, rtol=0, atol=1e-12)
+    # today 4.01 % of L off the dt = 1e-3 run; tolerance 5 % (1.25 x)
+    assert np.hypot(*(_tips(out) - fine)).max() < MARGIN * 0.0401 * L_PEND
 
 
 # ---------------------------------------------------------------- acceptance (issue 3)
@@ -189,29 +196,42 @@ def test_pendulum_energy_deviation_below_thesis():
     out, _ = PEND.execute({})
     assert out["converged"]
     r = out["results"]
-    assert r["energy_max_deviation_J"] < THESIS_ENERGY_DEVIATION
+    assert r["energy_max_deviation_J"] < pub.PENDULUM_ENERGY_DEVIATION_J  # the thesis's
+    # today 3.6e-9 J, at DOP853's rtol 1e-8: a platform may step differently, so 3 x
+    assert r["energy_max_deviation_J"] < 3 * 3.6e-9
     assert len(r["times"]) == 101 and r["times"][-1] == pytest.approx(1.0)
     assert r["steps"] > 0 and r["nfev"] > 0
 
 
 def test_pendulum_8_and_16_elements_agree_within_1_percent_of_L():
-    """Each tip coordinate (Fig. 2.6 plots the vertical one) within 1 % of L.  The
+    """Each tip coordinate (Fig. 2.6 plots the vertical one) within 1 % of L (issue 3).  The
     Euclidean tip distance is 1.03 % of L for the linear element (0.45 % for
-    Omar-Shabana): the criterion holds per coordinate, not on the distance."""
+    Omar-Shabana): the criterion holds per coordinate, not on the distance.  Today
+    (x, y) differ by (0.876, 0.612) % of L; tolerance 1.25 x."""
     a, b = (PEND.execute({"n_elements": n})[0] for n in (8, 16))
     assert a["converged"] and b["converged"]
     d = np.abs(_tips(a) - _tips(b)).max(axis=1)
-    assert d[1] < 0.01 * L_PEND and d[0] < 0.01 * L_PEND
-    assert np.hypot(*(_tips(a) - _tips(b))).max() < 0.011 * L_PEND
+    assert np.all(d < 0.01 * L_PEND)
+    assert np.all(d < MARGIN * np.array([0.00876, 0.00612]) * L_PEND)
+    assert np.hypot(*(_tips(a) - _tips(b))).max() < MARGIN * 0.0103 * L_PEND
 
 
 def test_stiff_pendulum_follows_rigid_compound_pendulum():
+    """E = 2.07e11: the rigid compound pendulum of the thesis's data (g, L, h, rho).  Issue 3:
+    within 0.5 % of L of the slender rod (today 0.093 %).  With the section's rotary inertia
+    h^2/12 the tip is today 1.89e-5 L off and the kinetic energy, against
+    1/2 I theta'^2 = -m g L/2 sin(theta), 9.0e-6 of its largest value; tolerance 1.25 x."""
     out, _ = PEND.execute({"E": 2.07e11, "integrator": "generalized-alpha", "dt": 1e-3,
                            "rho_inf": 0.8})
-    ref = DYNAMIC_REFERENCES["rigid-pendulum"].execute({})[0]["results"]
+    rod = DYNAMIC_REFERENCES["rigid-pendulum"].execute({})[0]["results"]
     assert out["converged"]
-    d = np.hypot(*(_tips(out) - np.array([ref["tip_x"], ref["tip_y"]]))).max()
-    assert d < 0.005 * L_PEND
+    assert np.hypot(*(_tips(out) - np.array([rod["tip_x"], rod["tip_y"]]))).max() < 0.005 * L_PEND
+    P = pub.PENDULUM
+    r = out["results"]
+    theta, x, y = rigid_pendulum(P["L"], P["g"], r["times"], P["h"])
+    assert np.hypot(*(_tips(out) - np.array([x, y]))).max() < MARGIN * 1.89e-5 * P["L"]
+    kinetic = -P["rho"] * P["b"] * P["h"] * P["L"] * P["g"] * P["L"] / 2 * np.sin(theta)
+    assert np.abs(r["energy_kinetic"] - kinetic).max() < MARGIN * 9.0e-6 * kinetic.max()
 
 
 @pytest.mark.parametrize("integrator,tol", [("dop853", {"rtol": 1e-10, "atol": 1e-12}),
@@ -220,8 +240,10 @@ def test_elimination_and_multipliers_agree(integrator, tol):
     outs = {c: PEND.execute({"integrator": integrator, "constraints": c, **tol})[0]
             for c in ("elimination", "lagrange")}
     assert all(o["converged"] for o in outs.values())
-    assert np.abs(_tips(outs["elimination"]) - _tips(outs["lagrange"])).max() < 1e-6
-    assert outs["lagrange"]["results"]["constraint_violation_m"] < 1e-8
+    # today <= 1.1e-14 m and a violation <= 1.3e-16 m: round-off; the bounds allow the two
+    # forms to step differently elsewhere (10 x rtol x L) and 1e-12 m of round-off
+    assert np.abs(_tips(outs["elimination"]) - _tips(outs["lagrange"])).max() < 1e-9 * L_PEND
+    assert outs["lagrange"]["results"]["constraint_violation_m"] < 1e-12
 
 
 @pytest.mark.parametrize("constraints", ["elimination", "lagrange"])
@@ -229,7 +251,7 @@ def test_elimination_and_multipliers_agree(integrator, tol):
 def test_dense_and_sparse_paths_agree(monkeypatch, constraints, integrator):
     """The model switches from dense to sparse algebra above DENSE_MAX coordinates;
     both paths solve the same equations, so the trajectories agree to round-off
-    amplified by the Newton tolerance (1e-9 m over 0.1 s)."""
+    amplified by the Newton tolerance (1e-9 m over 0.1 s; today <= 6.6e-15 m)."""
     from ancf.solvers import dynamics
     run = {"t_end": 0.1, "n_elements": 4, "integrator": integrator, "constraints": constraints}
     tips = {}
@@ -247,28 +269,81 @@ def test_rheonomic_constraint_both_forms_agree():
     a = SPIN.execute(dict(common, constraints="elimination"))[0]
     b = SPIN.execute(dict(common, constraints="lagrange"))[0]
     assert a["converged"] and b["converged"]
+    # today 3.1e-10 m and a violation of 1.7e-11 m; Radau's Newton iterations may differ
+    # with round-off on another platform: 3 x
     for key in ("tip_dx", "tip_dy"):
-        assert np.abs(np.subtract(a["results"][key], b["results"][key])).max() < 1e-6
-    assert b["results"]["constraint_violation_m"] < 1e-8
+        assert np.abs(np.subtract(a["results"][key], b["results"][key])).max() < 3 * 3.1e-10
+    assert b["results"]["constraint_violation_m"] < 3 * 1.7e-11
 
 
-def test_spinning_beam_axial_extension_within_2_percent():
-    out, _ = SPIN.execute({})
-    assert out["converged"]
-    ext = out["results"]["axial_extension_m"]
-    assert abs(ext / THESIS_EXTENSION - 1) < 0.02
+@pytest.mark.parametrize("integrator", ["dop853", "rk45"])
+def test_baumgarte_restores_a_violated_pin_critically_damped(integrator):
+    """Multipliers from a pin violated by d (the beam shifted rigidly): the stabilised
+    constraint acceleration C'' = -2 alpha C' - beta^2 C holds exactly (constant C_e), so with
+    alpha = beta (the scenes' choice) C(t) = d (1 + beta t) exp(-beta t).  Today within
+    1.7e-17 m (dop853) and 1.4e-17 m (rk45) of it for |d| = 2e-3 m, i.e. round-off (the steps
+    the beam needs make beta h ~ 1e-2); tolerance 1e-12 x |d|.  Without the position term C
+    stays at d; without the velocity term it oscillates."""
+    p = PEND.resolve({"constraints": "lagrange", "integrator": integrator, "t_end": 0.25,
+                      "rtol": 1e-10, "atol": 1e-12})
+    mesh, q0, _, mdl, _ = pendulum.setup(p)
+    d = np.array([1e-3, -2e-3])
+    q = q0.copy()
+    for node in range(mesh.n_nodes):
+        q[[mesh.dof(node, "r", 0), mesh.dof(node, "r", 1)]] += d
+    res = bd.simulate(p, mdl, q, np.zeros_like(q))
+    assert res.converged, res.message
+    C = np.array([mdl.constraints.value(qt, t) for qt, t in zip(res.q, res.t)])
+    beta = p["baumgarte"]
+    expected = np.outer((1 + beta * res.t) * np.exp(-beta * res.t), d)
+    assert np.abs(C - expected).max() < 1e-12 * np.abs(d).max()
+
+
+def _spin(omega_factor):
+    """(steady extension, Eq. 2.36 with the thesis's data, largest |lateral tip offset| over
+    the last mean_window) of the spinning beam at omega_factor x the thesis's omega_s."""
+    P = pub.SPINNING_BEAM
+    out, _ = SPIN.execute({"omega_s": omega_factor * P["omega_s"]})
+    assert out["converged"], out["message"]
+    r, p = out["results"], out["params"]
+    exact = spinning_extension(P["L"], P["E"], P["rho"], omega_factor * P["omega_s"])
+    steady = np.array(r["times"]) >= p["t_end"] - p["mean_window"]
+    return r["axial_extension_m"], exact, np.abs(np.array(r["tip_lateral"])[steady]).max()
+
+
+def test_spinning_beam_axial_extension_against_eq_2_36():
+    """Issue 3: within 2 % of the thesis's 1.09545e-4 m, which Eq. 2.36 gives with Wu & Haug's
+    tabulated area in rho A (today 5.5e-6 apart).  Today -0.0105 % off Eq. 2.36 with the
+    thesis's data and a steady lateral vibration of 8.56 mm; tolerance 1.25 x."""
+    ext, exact, lateral = _spin(1)
+    assert abs(ext / pub.SPINNING_EXTENSION_M - 1) < 0.02
     ref = DYNAMIC_REFERENCES["spinning-extension"].execute({})[0]["results"]
-    assert ref["axial_extension_thesis_m"] == pytest.approx(THESIS_EXTENSION, rel=1e-5)
-    assert abs(ext / ref["axial_extension_m"] - 1) < 0.02
+    assert ref["axial_extension_thesis_m"] == pytest.approx(pub.SPINNING_EXTENSION_M,
+                                                            rel=MARGIN * 5.5e-6)
+    assert abs(ext / exact - 1) < MARGIN * 1.055e-4
+    assert lateral < MARGIN * 8.56e-3
 
 
 def test_spinning_beam_tenfold_speed_stays_stable():
-    out, _ = SPIN.execute({"omega_s": 40.0})
-    r = out["results"]
-    assert out["converged"], out["message"]
-    assert np.all(np.isfinite(r["tip_dx"])) and max(np.abs(r["tip_lateral"])) < 8.0
-    ref = DYNAMIC_REFERENCES["spinning-extension"].execute({"omega_s": 40.0})[0]["results"]
-    assert abs(r["axial_extension_m"] / ref["axial_extension_m"] - 1) < 0.02
+    """omega_s x 10: today +0.465 % off Eq. 2.36 and a steady lateral vibration of 38.3 mm
+    (no blow-up); tolerance 1.25 x."""
+    ext, exact, lateral = _spin(10)
+    assert abs(ext / exact - 1) < MARGIN * 4.65e-3
+    assert lateral < MARGIN * 3.83e-2
+
+
+@pytest.mark.parametrize("scene,data", [
+    (PEND, pub.PENDULUM), (SPIN, pub.SPINNING_BEAM),
+    (DYNAMIC_REFERENCES["rigid-pendulum"], {k: pub.PENDULUM[k] for k in ("L", "g")}),
+    (DYNAMIC_REFERENCES["spinning-extension"],
+     {k: pub.SPINNING_BEAM[k] for k in ("L", "b", "h", "E", "rho", "omega_s")})],
+    ids=["pendulum", "spinning-beam", "rigid-pendulum", "spinning-extension"])
+def test_defaults_are_the_thesis_problem(scene, data):
+    """The defaults are the problem data the thesis states (the checks above compare
+    results with references built from these data; this one also covers the constants whose
+    effect no reference resolves, e.g. the flexible pendulum's E)."""
+    p = scene.resolve({})
+    assert {k: p[k] for k in data} == data
 
 
 @pytest.mark.parametrize("scene", [PEND, SPIN], ids=["pendulum", "spinning-beam"])

@@ -32,14 +32,19 @@ def slender(workdir):
 
 
 def test_thesis_scheme_does_not_lock_at_slenderness_1e4(slender):
+    """The issue asks < 1 %; today 6.21e-5 (the 64 elements' discretisation error), 1.25 x."""
     r = slender[slender["integration"] == "thesis"].iloc[0]
     assert r["h"] == pytest.approx(2e-4)
     assert r["status"] == "ok" and r["error"] < 0.01
+    assert r["error"] < 1.25 * 6.21e-5
 
 
 def test_exact_integration_locks_at_slenderness_1e4(slender):
+    """The issue asks > 50 %; today the locked tip deflects 1.28e-4 of Timoshenko's value
+    (error 1 - 1.28e-4); at most 1.25 x that."""
     r = slender[slender["integration"] == "exact"].iloc[0]
     assert r["status"] == "ok" and r["error"] > 0.5
+    assert 1 - r["error"] < 1.25 * 1.28e-4
 
 
 def test_diverging_cases_are_reported_with_a_diagnosis(workdir):
@@ -72,7 +77,7 @@ def test_diverging_cases_are_reported_with_a_diagnosis(workdir):
 def test_stiff_pendulum_steps_end_in_a_result_or_a_diagnosis(workdir):
     """E = 2.07e11 pendulum: an explicit scheme runs out of its step budget (stable step
     ~1e-5 s), BDF at a loose tolerance blows up, generalised-alpha at 1000x the explicit
-    step stays within 1 % of L of the rigid pendulum."""
+    step stays within 1 % of L of the rigid pendulum (today 7.62e-4; tolerance 1.25 x)."""
     stiff = {"E": [2.07e11], "n_elements": [4], "t_end": [0.05]}
     grids = [{"integrator": ["dop853"], "rtol": [1e-2], "max_steps": [200], **stiff},
              {"integrator": ["bdf"], "rtol": [1e-2], **stiff},
@@ -83,7 +88,7 @@ def test_stiff_pendulum_steps_end_in_a_result_or_a_diagnosis(workdir):
     assert diag == {"dop853": "step budget exceeded", "bdf": "energy blow-up",
                     "generalized-alpha": "ok"}
     ok = df[df["integrator"] == "generalized-alpha"].iloc[0]
-    assert ok["error"] < 1e-2
+    assert ok["error"] < 1e-2 and ok["error"] < 1.25 * 7.62e-4
 
 
 def test_every_issue_axis_is_declared_and_missing_scenes_are_said():

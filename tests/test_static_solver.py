@@ -10,13 +10,14 @@ def test_small_load_converges_to_the_linear_solution(slenderness):
     """L/h = 100: a 0.1 N load sits near the round-off floor of the axial stiffness
     (absolute coordinates carry eps |q| errors): Newton must stop at that floor, not fail.
     L/h = 2000: the load (4e-6 N) is below that floor, so the floor must not accept the
-    undeformed start.  Both must equal Timoshenko within 0.01 % (64 elements: 6e-5)."""
+    undeformed start.  Both equal Timoshenko to the 64 elements' discretisation error,
+    today 6.10e-5 relative at both slendernesses; tolerance 1.25 x."""
     h = 2.0 / slenderness
     F = -1e-5 * 2.0 / abs(cantilever_tip_deflection(2.07e11, 0.3, 2.0, h, 0.1, -1.0))
     ref = cantilever_tip_deflection(2.07e11, 0.3, 2.0, h, 0.1, F)
     out, res = SCENES["cantilever"].execute(dict(h=h, F=F, n_elements=64, load_steps=1))
     assert out["converged"], out["message"]
-    assert out["results"]["tip_y"] / ref == pytest.approx(1.0, abs=1e-4)
+    assert out["results"]["tip_y"] / ref == pytest.approx(1.0, abs=1.25 * 6.10e-5)
     assert res.extra["residuals"][0][-1] < res.extra["residuals"][0][0]
 
 

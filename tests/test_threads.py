@@ -3,8 +3,9 @@ their numbers agree with each other and do not depend on the machine's core coun
 import os
 import subprocess
 import sys
+from pathlib import Path
 
-from ancf.sweep import _ENV
+from ancf.sweep import _Runner
 from ancf.threads import BLAS_ENV
 
 
@@ -18,5 +19,15 @@ def test_report_generator_pins_one_blas_thread_before_numpy():
     assert out == "1,1,1"
 
 
-def test_sweep_workers_get_the_same_environment():
-    assert all(_ENV[k] == v for k, v in BLAS_ENV.items())
+def test_sweep_workers_start_with_one_blas_thread(monkeypatch):
+    """The environment a sweep worker process actually has once it is ready, with a user's
+    OPENBLAS_NUM_THREADS=2 in ours (OpenBLAS, OpenMP and MKL read it when they load)."""
+    monkeypatch.setenv("OPENBLAS_NUM_THREADS", "2")
+    runner = _Runner()
+    try:
+        runner.wait_ready()
+        raw = Path(f"/proc/{runner.proc.pid}/environ").read_bytes().decode()
+    finally:
+        runner.close()
+    env = dict(kv.split("=", 1) for kv in raw.split("\0") if "=" in kv)
+    assert {k: env.get(k) for k in BLAS_ENV} == dict.fromkeys(BLAS_ENV, "1")

@@ -94,3 +94,13 @@ REPORT_6 = {"analytic": 0.048309, "beam3": 0.048309,
 
 # --- Dynamics and timing quoted in the thesis (used by later chapters) ----------------
 THESIS_NEWTON_TIME_RATIO = 0.5  # "computer times in iterations ... two times shorter" (2.4)
+
+# --- Dynamic examples (thesis 2.4): the stated problem data and results ----------------
+# Pendulum (Fig. 2.5): 2.0 m, 0.1 m square, E = 2.07e7 N/m^2, nu = 0, rho = 7850 kg/m^3,
+# g = 9.81 m/s^2; largest deviation of the energy sum from its constant (4 elements).
+PENDULUM = dict(L=2.0, b=0.1, h=0.1, E=2.07e7, nu=0.0, rho=7850.0, g=9.81)
+PENDULUM_ENERGY_DEVIATION_J = 0.62e-4
+# Spinning beam (Wu & Haug, Fig. 2.9, Eq. 2.35) and its printed Eq. 2.36 extension.
+SPINNING_BEAM = dict(L=8.0, b=1.986e-3, h=3.675e-2, E=6.895e10, rho=2766.67, omega_s=4.0,
+                     T_s=15.0)
+SPINNING_EXTENSION_M = 1.09545e-4

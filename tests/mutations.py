@@ -1,0 +1,97 @@
+"""Deliberate bugs, one at a time: each must fail the test named next to it.
+
+    .venv/bin/python tests/mutations.py [NAME ...]     # from the project root
+
+For each mutation: replace one string in one source file (it must occur exactly once),
+run the named test, put the file back as it was, and print a markdown row.  Exit code 0
+when every mutation was caught.  Not collected by pytest (no ``test_`` prefix).
+"""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+TD, TP = "tests/test_dynamics.py::", "tests/test_published_tables.py::"
+TA = "tests/test_analytic.py::"
+
+
+def plus_1_percent(before: str, value: str, after: str = "") -> tuple[str, str]:
+    """(old, new) source text with the literal ``value`` raised by 1 %."""
+    return f"{before}{value}{after}", f"{before}1.01 * {value}{after}"
+
+
+# (name, file, (old, new), test that must fail)
+MUTATIONS = [
+    ("pendulum g 9.81 -> 9.80", "ancf/scenes/pendulum.py",
+     ('Param("g", 9.81,', 'Param("g", 9.80,'), TD + "test_stiff_pendulum_follows_rigid_compound_pendulum"),
+    ("spinning beam rho +1 %", "ancf/scenes/spinning_beam.py",
+     plus_1_percent('Param("rho", ', "2766.67"), TD + "test_spinning_beam_axial_extension_against_eq_2_36"),
+    ("pendulum rho +1 %", "ancf/scenes/beam_dynamic.py",
+     plus_1_percent('Param("rho", ', "7850.0"), TD + "test_stiff_pendulum_follows_rigid_compound_pendulum"),
+    ("Baumgarte position term dropped", "ancf/multipliers.py",
+     ("out = out - self.beta ** 2 * con.value(q, t)", "out = out"),
+     TD + "test_baumgarte_restores_a_violated_pin_critically_damped"),
+    ("Baumgarte velocity term dropped", "ancf/multipliers.py",
+     ("out = out - 2.0 * self.alpha * (con.jacobian(q, t) @ v + con.time_derivative(q, t))",
+      "out = out"), TD + "test_baumgarte_restores_a_violated_pin_critically_damped"),
+    ("LinearBeam2D's own ks default +1 %", "ancf/elements/linear2d.py",
+     plus_1_percent("rho=0.0, ks=", "5.0 / 6.0", ", integration"),
+     TP + "test_linear_element_default_ks_reproduces_report_table_1"),
+    ("static scenes' ks default +1 %", "ancf/scenes/beam_static.py",
+     plus_1_percent('Param("ks", ', "5.0 / 6.0"), TP + "test_simply_supported_tables"),
+    ("static scenes' E +1 %", "ancf/scenes/beam_static.py",
+     plus_1_percent("def element_params(E=", "2.07e11"), TP + "test_simply_supported_tables"),
+    ("static scenes' h +1 %", "ancf/scenes/beam_static.py",
+     plus_1_percent("def element_params(E=2.07e11, nu=0.0, h=", "0.1"), TP + "test_simply_supported_tables"),
+    ("cantilever nu = 0.3 +1 %", "ancf/scenes/cantilever.py",
+     plus_1_percent("bs.element_params(nu=", "0.3"), TP + "test_model_1_is_the_cantilever_defaults"),
+    ("cantilever h +1 %", "ancf/scenes/cantilever.py",
+     plus_1_percent("bs.element_params(nu=0.3, h=", "0.1"), TP + "test_model_1_is_the_cantilever_defaults"),
+    ("Timoshenko reference's ks default +1 %", "analytic/timoshenko.py",
+     plus_1_percent("F: float,\n                   ks: float = ", "5.0 / 6.0"),
+     TA + "test_nu0_matches_published_analytic"),
+    ("Reissner reference's ks default +1 %", "analytic/reissner.py",
+     plus_1_percent("Fx: float = 0.0, ks: float = ", "5.0 / 6.0"),
+     TA + "test_reissner_matches_independent_shooting"),
+    ("pendulum E +1 %", "ancf/scenes/pendulum.py",
+     plus_1_percent("n_elements=4, E=", "2.07e7"), TD + "test_defaults_are_the_thesis_problem"),
+    ("spinning beam E +1 %", "ancf/scenes/spinning_beam.py",
+     plus_1_percent("n_elements=3, E=", "6.895e10"), TD + "test_spinning_beam_axial_extension_against_eq_2_36"),
+]
+
+
+def caught(path: str, old: str, new: str, test: str) -> str:
+    """Apply, run ``test``, restore; 'yes: <first failing assertion>' if the test failed,
+    'NO' if it passed."""
+    src = ROOT / path
+    text = src.read_text()
+    if text.count(old) != 1:
+        return f"not applied ({old!r} occurs {text.count(old)} times)"
+    try:
+        src.write_text(text.replace(old, new))
+        run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-x", "-p", "no:cacheprovider",
+                              test], cwd=ROOT, capture_output=True, text=True)
+    finally:
+        src.write_text(text)
+    if run.returncode != 1:
+        return "NO" if run.returncode == 0 else f"pytest exit code {run.returncode}"
+    why = next((ln[1:].strip() for ln in run.stdout.splitlines() if ln.startswith("E ")), "")
+    return f"yes: `{why[:90]}`"
+
+
+def main(names) -> int:
+    print("| mutation | file | test that must fail | caught |\n|---|---|---|---|")
+    missed = 0
+    for name, path, (old, new), test in MUTATIONS:
+        if names and name not in names:
+            continue
+        verdict = caught(path, old, new, test)
+        missed += not verdict.startswith("yes")
+        print(f"| {name} | `{path}` | `{test.split('::')[1]}` | {verdict} |", flush=True)
+    return 1 if missed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
