@@ -26,10 +26,12 @@ import math
 
 import numpy as np
 
+from ancf import accuracy
 from ancf.constraints import Elimination
 from ancf.quadrature import gauss01
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes.base import InputError, Param, Scene, SceneResult
+from ancf.validity import check_dynamic
 
 
 def hub_angle(t: float, omega_s: float, T_s: float):
@@ -105,7 +107,8 @@ def run(p: dict) -> SceneResult:
                "max_abs_tip_lateral_m": float(np.abs(lateral).max()) if res.t.size else None,
                "frame": "tip_dx/tip_dy global axes; tip_axial/tip_lateral rotating hub frame"}
     results.update(bd.stats(res))
-    return SceneResult(res.converged, res.message, results, extra={"result": res, "mesh": mesh})
+    out = SceneResult(res.converged, res.message, results, extra={"result": res, "mesh": mesh})
+    return check_dynamic(out, asm, q0, res.t, res.q)
 
 
 def _check(p):
@@ -135,4 +138,4 @@ def _params():
 SCENE = Scene(
     "spinning-beam",
     "Spin-up of a flexible beam driven at the hub (Wu & Haug; thesis Figs 2.9-2.11).",
-    _params(), run, _check)
+    _params(), run, _check, warn=accuracy.spinning)

@@ -1,0 +1,35 @@
+"""Numerical warnings raised during a run become one diagnosis line.
+
+Inputs at the edge of the floating-point range (``E = 1e-300``) make numpy warn on
+every kernel evaluation (overflow, invalid value...).  A run collects them and
+reports one line in its ``warnings`` list instead of printing each.
+"""
+from __future__ import annotations
+
+import contextlib
+import warnings
+from collections import Counter
+
+
+def summary(counts: Counter) -> list[str]:
+    """One line for the warnings counted by text (none: an empty list)."""
+    if not counts:
+        return []
+    first, n = next(iter(counts)), sum(counts.values())
+    more = f" and {len(counts) - 1} other kind(s)" if len(counts) > 1 else ""
+    return [f"numerical: {n} floating-point warning(s) during the run ({first}{more}); "
+            "the inputs are probably outside the range the model can represent"]
+
+
+@contextlib.contextmanager
+def numerical_warnings():
+    """Count the warnings of the enclosed block instead of printing them; the yielded
+    list receives the summary line."""
+    noted: list[str] = []
+    counts: Counter = Counter()
+    with warnings.catch_warnings():
+        warnings.simplefilter("always")
+        warnings.showwarning = lambda message, category, *_, **__: counts.update(
+            [f"{category.__name__}: {message}"])
+        yield noted
+    noted += summary(counts)
