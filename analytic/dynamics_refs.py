@@ -18,7 +18,8 @@ import math
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from ancf.scenes.base import InputError, Param, Scene, SceneResult
+from ancf.inputs import check_sampling, following, intervals
+from ancf.scenes.base import Param, Scene, SceneResult
 
 
 def spinning_extension(L: float, E: float, rho: float, omega_s: float) -> float:
@@ -51,18 +52,12 @@ def rigid_pendulum(L: float, g: float, t, h: float = 0.0):
 
 
 def _rigid(p):
-    n = int(np.ceil(p["t_end"] / p["output_dt"] - 1e-9))
+    n = intervals(p["t_end"], p["output_dt"])
     t = np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
     th, x, y = rigid_pendulum(p["L"], p["g"], t, p["h"])
     return SceneResult(True, "theta'' = -(g L / 2) cos(theta) / (L^2/3 + h^2/12), DOP853 rtol 1e-12",
                        {"times": t.tolist(), "theta": th.tolist(), "tip_x": x.tolist(),
                         "tip_y": y.tolist()})
-
-
-def _check_grid(p):
-    if p["output_dt"] > p["t_end"]:
-        raise InputError(f"output_dt = {p['output_dt']!r} is out of range; allowed: a number in "
-                         f"(0, t_end = {p['t_end']:g}]")
 
 
 DYNAMIC_REFERENCES = {
@@ -83,6 +78,7 @@ DYNAMIC_REFERENCES = {
          Param("g", 9.81, float, "m/s^2", "gravitational acceleration", lo=0),
          Param("h", 0.0, float, "m", "section height (0: slender rod, the stated reference)", lo=0),
          Param("t_end", 1.0, float, "s", "simulated time", lo=0, lo_open=True, hi=1e4),
-         Param("output_dt", 0.01, float, "s", "sampling interval", lo=0, lo_open=True, hi=10)),
-        _rigid, _check_grid),
+         Param("output_dt", following(0.01, "t_end"), float, "s",
+               "sampling interval (default 0.01 s, at most t_end)", lo=0, lo_open=True, hi=10)),
+        _rigid, check_sampling),
 }

@@ -28,6 +28,7 @@ import numpy as np
 
 from ancf import accuracy
 from ancf.constraints import Elimination
+from ancf.inputs import following
 from ancf.quadrature import gauss01
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes.base import InputError, Param, Scene, SceneResult
@@ -130,8 +131,9 @@ def _params():
                      doc="Omar-Shabana only: 'prescribed' also drives r_x = (cos, sin) at the hub, "
                          "which forces zero axial strain there; 'free' clamps r and r_y only, like "
                          "the static cantilever", choices=("free", "prescribed")),
-               Param("mean_window", 5.0, float, "s",
-                     "window at the end over which the axial extension is averaged",
+               Param("mean_window", following(5.0, "t_end"), float, "s",
+                     "window at the end over which the axial extension is averaged "
+                     "(default 5 s, at most t_end)",
                      lo=0, lo_open=True)))
 
 
