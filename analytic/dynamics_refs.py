@@ -47,6 +47,8 @@ def rigid_pendulum(L: float, g: float, t, h: float = 0.0):
     t = np.asarray(t, dtype=float)
     sol = solve_ivp(lambda _, y: [y[1], -c * math.cos(y[0])], (0.0, float(t[-1])), [0.0, 0.0],
                     method="DOP853", t_eval=t, rtol=1e-12, atol=1e-14)
+    if not sol.success:
+        raise FloatingPointError(f"DOP853 failed: {sol.message}")
     th = sol.y[0]
     return th, L * np.cos(th), L * np.sin(th)
 
@@ -54,7 +56,11 @@ def rigid_pendulum(L: float, g: float, t, h: float = 0.0):
 def _rigid(p):
     n = intervals(p["t_end"], p["output_dt"])
     t = np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
-    th, x, y = rigid_pendulum(p["L"], p["g"], t, p["h"])
+    try:
+        th, x, y = rigid_pendulum(p["L"], p["g"], t, p["h"])
+    except FloatingPointError as exc:
+        return SceneResult(False, str(exc), {"times": t.tolist(), "theta": None, "tip_x": None,
+                                             "tip_y": None})
     return SceneResult(True, "theta'' = -(g L / 2) cos(theta) / (L^2/3 + h^2/12), DOP853 rtol 1e-12",
                        {"times": t.tolist(), "theta": th.tolist(), "tip_x": x.tolist(),
                         "tip_y": y.tolist()})

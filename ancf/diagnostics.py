@@ -1,4 +1,5 @@
-"""Numerical warnings raised during a run become one diagnosis line.
+"""Numerical warnings raised during a run become one diagnosis line; a run that
+reports convergence with a non-finite result has not converged.
 
 Inputs at the edge of the floating-point range (``E = 1e-300``) make numpy warn on
 every kernel evaluation (overflow, invalid value...).  A run collects them and
@@ -7,6 +8,7 @@ reports one line in its ``warnings`` list instead of printing each.
 from __future__ import annotations
 
 import contextlib
+import math
 import warnings
 from collections import Counter
 
@@ -33,3 +35,12 @@ def numerical_warnings():
             [f"{category.__name__}: {message}"])
         yield noted
     noted += summary(counts)
+
+
+def nonfinite(results: dict) -> list[str]:
+    """Names of the results holding NaN or infinity (a number or inside a list)."""
+    def bad(v):
+        if isinstance(v, (list, tuple)):
+            return any(bad(x) for x in v)
+        return isinstance(v, float) and not math.isfinite(v)
+    return [k for k, v in (results or {}).items() if bad(v)]

@@ -12,7 +12,7 @@ import time
 from dataclasses import dataclass, field
 from typing import Callable
 
-from ancf.diagnostics import numerical_warnings
+from ancf.diagnostics import nonfinite, numerical_warnings
 
 
 class InputError(ValueError):
@@ -128,6 +128,9 @@ class Scene:
             res = self.run(params)
         cpu = time.process_time() - t0
         res.warnings += noted + (self.warn(params, res) if self.warn else [])
+        bad = nonfinite(res.results) if res.converged else []
+        if bad:
+            res.converged, res.message = False, f"non-finite result(s): {', '.join(bad)}"
         out = {"scene": self.name, "params": params, "converged": bool(res.converged),
                "message": res.message, "results": res.results, "cpu_time_s": cpu,
                "warnings": list(res.warnings)}
