@@ -26,9 +26,9 @@ def _registries():
 def _parse_sets(items):
     out = {}
     for item in items or []:
-        if "=" not in item:
+        k, eq, v = item.partition("=")
+        if not (eq and k.strip()):
             raise InputError(f"--set {item!r}: expected key=value")
-        k, v = item.split("=", 1)
         out[k.strip()] = v.strip()
     return out
 
