@@ -20,7 +20,7 @@ from ancf.scenes import beam_static as bs
 from ancf.scenes.base import Param
 from ancf.solvers.dynamics import INTEGRATORS, MultiplierModel, ReducedModel, integrate
 
-RTOL_FLOOR = 100 * np.finfo(float).eps  # scipy's solve_ivp raises smaller rtol to this
+RTOL_FLOOR = float(100 * np.finfo(float).eps)  # scipy's solve_ivp raises smaller rtol to this
 
 
 def section_params(**defaults) -> tuple:
