@@ -43,7 +43,7 @@ def static(p: dict, res) -> list[str]:
                    "the digits double precision resolves here")
     if res.converged and res.results.get("negative_tangent_eigenvalues") is None:
         out.append(f"stability of the equilibrium not checked (stability_check = "
-                   f"{p['stability_check']}; 'on' checks any size)")
+                   f"{p['stability_check']})")
     return out
 
 

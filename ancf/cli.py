@@ -122,15 +122,12 @@ def _positive(kind):
     return parse
 
 
-class _UsageError(Exception):
-    """A command-line syntax error, reported as one line."""
-
-
 class _Parser(argparse.ArgumentParser):
-    """argparse with its errors as one line (``--help`` unchanged)."""
+    """argparse with its errors as one line instead of a usage block (still exit 2;
+    ``--help`` unchanged)."""
 
     def error(self, message):
-        raise _UsageError(f"{message} (see '{self.prog} --help')")
+        self.exit(2, f"error: {message} (see '{self.prog} --help')\n")
 
 
 def main(argv=None) -> int:
@@ -170,11 +167,7 @@ def main(argv=None) -> int:
     p.add_argument("--time-limit", type=_positive(float), default=300.0, metavar="SECONDS")
     p.add_argument("--no-progress", action="store_true")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    try:
-        args = ap.parse_args(argv)
-    except _UsageError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
+    args = ap.parse_args(argv)
     if hasattr(signal, "SIGPIPE"):
         signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # `ancf scenes | head` ends quietly
     with numerical_warnings() as noted:

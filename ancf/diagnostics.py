@@ -25,14 +25,21 @@ def summary(counts: Counter) -> list[str]:
 
 @contextlib.contextmanager
 def numerical_warnings():
-    """Count the warnings of the enclosed block instead of printing them; the yielded
-    list receives the summary line."""
+    """Count the RuntimeWarnings (numpy's floating-point category) of the enclosed block
+    instead of printing them; the yielded list receives the summary line.  Other
+    warnings are shown as usual."""
     noted: list[str] = []
     counts: Counter = Counter()
+    show = warnings.showwarning
+
+    def count(message, category, *args, **kw):
+        if issubclass(category, RuntimeWarning):
+            counts.update([f"{category.__name__}: {message}"])
+        else:
+            show(message, category, *args, **kw)
     with warnings.catch_warnings():
-        warnings.simplefilter("always")
-        warnings.showwarning = lambda message, category, *_, **__: counts.update(
-            [f"{category.__name__}: {message}"])
+        warnings.simplefilter("always", RuntimeWarning)
+        warnings.showwarning = count
         yield noted
     noted += summary(counts)
 

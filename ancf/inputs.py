@@ -8,8 +8,6 @@ from __future__ import annotations
 
 import math
 
-from ancf.scenes.base import InputError
-
 MAX_INTERVALS = 100_000  # output samples per time history: at most MAX_INTERVALS + 1
 
 
@@ -20,6 +18,7 @@ def intervals(t_end: float, output_dt: float) -> int:
 
 def check_sampling(p: dict) -> None:
     """output_dt within [t_end / MAX_INTERVALS, t_end]."""
+    from ancf.scenes.base import InputError  # not at the top: ancf.scenes imports this module
     t_end, dt = p["t_end"], p["output_dt"]
     if dt > t_end or intervals(t_end, dt) > MAX_INTERVALS:
         raise InputError(f"output_dt = {dt!r} is out of range; allowed: a number in "
@@ -39,6 +38,7 @@ def following(value: float, other: str):
 
 def validate_fixed(scene, fixed: dict) -> None:
     """Each fixed value parsed by its parameter (unknown names and bad values raise)."""
+    from ancf.scenes.base import InputError  # not at the top: ancf.scenes imports this module
     params = {p.name: p for p in scene.params}
     for k, v in fixed.items():
         if k not in params:

@@ -71,7 +71,8 @@ def check_static(res, assembly, q0):
 
 
 def check_dynamic(res, assembly, q0, t, Q):
-    """The first sample with an inverted element ends trust in the run."""
+    """The first sample with an inverted element ends trust in the run (a run that
+    already failed keeps its own message first)."""
     Q = np.asarray(Q, dtype=float)
     if Q.size == 0:
         return res
@@ -80,7 +81,7 @@ def check_dynamic(res, assembly, q0, t, Q):
     if bad.size:
         k = int(bad[0])
         el = int(np.argmin(d[k]))
+        note = f"Not trusted from t = {t[k]:.6g} s on: " + _inverted(float(d[k, el]), el, d.shape[1])
+        res.message = note if res.converged else f"{res.message}; {note}"
         res.converged = False
-        res.message = (f"Not trusted from t = {t[k]:.6g} s on: "
-                       + _inverted(float(d[k, el]), el, d.shape[1]))
     return res
