@@ -23,9 +23,9 @@ from ancf.scenes.base import Param, Scene, SceneResult
 
 
 def spinning_extension(L: float, E: float, rho: float, omega_s: float) -> float:
-    """Eq. 2.36, m."""
+    """Eq. 2.36, m (0 at rest: tan(a l) / (a l) -> 1)."""
     al = math.sqrt(rho / E) * omega_s * L
-    return L * (math.tan(al) / al - 1.0)
+    return L * (math.tan(al) / al - 1.0) if al else 0.0
 
 
 def _extension(p):

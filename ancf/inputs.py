@@ -1,7 +1,8 @@
 """Input rules shared by the scenes, the references and the CLI.
 
 * time histories: ``output_dt`` in ``[t_end / MAX_INTERVALS, t_end]`` (a bounded
-  number of samples), and sampling defaults that follow ``t_end``;
+  number of samples), a bounded number of fixed steps, and sampling defaults that
+  follow ``t_end``;
 * ``ancf sweep --set``: fixed values validated before any run starts.
 """
 from __future__ import annotations
@@ -9,6 +10,7 @@ from __future__ import annotations
 import math
 
 MAX_INTERVALS = 100_000  # output samples per time history: at most MAX_INTERVALS + 1
+MAX_STEPS = 10_000_000   # steps of any integrator (fixed-step schedules are allocated upfront)
 
 
 def intervals(t_end: float, output_dt: float) -> int:
@@ -24,6 +26,15 @@ def check_sampling(p: dict) -> None:
         raise InputError(f"output_dt = {dt!r} is out of range; allowed: a number in "
                          f"[t_end/{MAX_INTERVALS}, t_end] = [{t_end / MAX_INTERVALS:g}, {t_end:g}] "
                          f"(at most {MAX_INTERVALS + 1} samples)")
+
+
+def check_fixed_step(p: dict) -> None:
+    """generalized-alpha's dt within [t_end / MAX_STEPS, ...]: its step schedule is one array."""
+    from ancf.scenes.base import InputError  # not at the top: ancf.scenes imports this module
+    if p["integrator"] == "generalized-alpha" and p["t_end"] / p["dt"] > MAX_STEPS:
+        raise InputError(f"dt = {p['dt']!r} is out of range for generalized-alpha; allowed: a "
+                         f"number in [t_end/{MAX_STEPS}, 1] = [{p['t_end'] / MAX_STEPS:g}, 1] "
+                         f"(at most {MAX_STEPS} steps)")
 
 
 def following(value: float, other: str):

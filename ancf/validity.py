@@ -16,6 +16,7 @@ import numpy as np
 from ancf.quadrature import gauss01
 
 N_AXIAL, N_SECTION = 3, 3  # check points per element: 3 Gauss points along x x 3 across y
+AREA_FACTOR = 2.0  # det F beyond [1 / AREA_FACTOR, AREA_FACTOR]: strains far past the material's range
 
 
 def _gradients(el, E):
@@ -59,14 +60,24 @@ def _inverted(det, element, n) -> str:
 
 def check_static(res, assembly, q0):
     """A converged static point with an inverted element becomes non-convergence
-    (results kept, flagged by the message, as for an unstable equilibrium)."""
+    (results kept, flagged by the message, as for an unstable equilibrium); one whose
+    area changes by more than AREA_FACTOR somewhere gets a warning."""
     if not res.converged:
         return res
-    det, el = min_det(assembly.groups, res.extra["q"], q0)
-    if det <= 0:
-        n = sum(g.element.nel for g in assembly.groups)
+    d = deformation_dets(assembly.groups, res.extra["q"], q0)
+    lo, hi = d.min(axis=-1), d.max(axis=-1)
+    n = lo.size
+    if lo.min() <= 0:
         res.converged = False
-        res.message = "No convergence to a physical equilibrium: " + _inverted(det, el, n)
+        res.message = ("No convergence to a physical equilibrium: "
+                       + _inverted(float(lo.min()), int(lo.argmin()), n))
+        return res
+    factor = np.maximum(hi, 1.0 / lo)
+    k = int(factor.argmax())
+    if factor[k] > AREA_FACTOR:
+        res.warnings.append(f"element {k + 1} of {n} changes its area by a factor {factor[k]:.3g}: "
+                            "strains far beyond the small-strain range of the St Venant-Kirchhoff "
+                            "material, the result is a property of the model, not of a beam")
     return res
 
 

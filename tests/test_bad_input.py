@@ -12,13 +12,13 @@ import pytest
 from analytic.references import REFERENCES
 from ancf import accuracy
 from ancf.diagnostics import numerical_warnings
-from ancf.inputs import MAX_INTERVALS
+from ancf.inputs import MAX_INTERVALS, MAX_STEPS
 from ancf.scenes import SCENES
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
 from ancf.scenes.base import InputError, SceneResult
 from ancf.strict_json import dumps
-from ancf.validity import check_dynamic, deformation_dets, min_det
+from ancf.validity import AREA_FACTOR, check_dynamic, check_static, deformation_dets, min_det
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -71,6 +71,15 @@ def test_static_inverted_equilibrium_is_not_converged():
     assert f"element {element + 1} of {p['n_elements']} is inverted" in out["message"]
     assert f"{det:.3g}" in out["message"]
     assert out["results"]["elongation_m"] < -p["L"]  # kept, flagged: the bar passed through itself
+
+
+@pytest.mark.parametrize("s,warned", [(1.5, False), (3.0, True), (1 / 3.0, True)])
+def test_static_area_change_beyond_the_material_range_warns(s, warned):
+    mesh, q0, asm = _model("linear")
+    res = check_static(SceneResult(True, "converged", {}, extra={"q": _scaled_x(mesh, q0, s)}), asm, q0)
+    assert AREA_FACTOR == 2.0  # the cases above straddle it
+    assert res.converged and bool(res.warnings) is warned
+    assert all(f"changes its area by a factor {max(s, 1 / s):.3g}:" in w for w in res.warnings)
 
 
 def test_dynamic_history_is_trusted_up_to_the_first_inverted_sample():
@@ -133,12 +142,26 @@ def test_output_samples_are_capped(name, registry):
         sc.resolve({"output_dt": repr(0.999 * t_end / MAX_INTERVALS)})
 
 
+@pytest.mark.parametrize("name", ["pendulum", "spinning-beam"])
+def test_fixed_steps_are_capped(name):
+    sc = SCENES[name]
+    ga = {"integrator": "generalized-alpha", "t_end": "1"}
+    assert sc.resolve({**ga, "dt": repr(1.0 / MAX_STEPS)})["dt"] == 1.0 / MAX_STEPS
+    with pytest.raises(InputError, match=rf"^dt = .* \(at most {MAX_STEPS} steps\)"):
+        sc.resolve({**ga, "dt": repr(0.999 / MAX_STEPS)})
+    assert sc.resolve({"integrator": "bdf", "t_end": "1", "dt": repr(0.999 / MAX_STEPS)})  # unused
+
+
 # ---------------------------------------------------------------- 4. strict JSON
 def test_non_finite_values_are_null():
     text = dumps({"a": float("nan"), "b": [1.0, float("inf"), {"c": -float("inf")}], "d": np.float64("nan")})
     assert json.loads(text) == {"a": None, "b": [1.0, None, {"c": None}], "d": None}
     with pytest.raises(ValueError):
         json.dumps(float("nan"), allow_nan=False)
+
+
+def test_spinning_extension_at_rest_is_zero():
+    assert REFERENCES["spinning-extension"].execute({"omega_s": "0"})[0]["results"]["axial_extension_m"] == 0.0
 
 
 def test_a_converged_run_with_a_non_finite_result_is_not_converged():

@@ -12,7 +12,7 @@ from ancf.assembly import Assembly, ElementGroup
 from ancf.elements.linear2d import LinearBeam2D
 from ancf.energy import energy_history
 from ancf.forces import Forces
-from ancf.inputs import check_sampling, following, intervals
+from ancf.inputs import MAX_STEPS, check_fixed_step, check_sampling, following, intervals
 from ancf.mesh import BeamMesh
 from ancf.multipliers import Baumgarte, LinearConstraints
 from ancf.quadrature import RectangularSection
@@ -59,13 +59,14 @@ def dynamic_params(t_end=1.0, integrator="dop853", rtol=1e-8, atol=1e-10, dt=1e-
               "Baumgarte alpha = beta of the multiplier form with scipy integrators (0: off)",
               lo=0, hi=1e6),
         Param("max_steps", 50_000, int, doc="step budget (beyond it: not converged)",
-              lo=1, hi=10_000_000),
+              lo=1, hi=MAX_STEPS),
     )
 
 
 def check(p: dict) -> None:
     bs.check_integration(p)
     check_sampling(p)
+    check_fixed_step(p)
 
 
 def build(p: dict):
