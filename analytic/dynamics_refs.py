@@ -18,13 +18,14 @@ import math
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from ancf.scenes.base import InputError, Param, Scene, SceneResult
+from ancf.inputs import check_sampling, following, intervals
+from ancf.scenes.base import Param, Scene, SceneResult
 
 
 def spinning_extension(L: float, E: float, rho: float, omega_s: float) -> float:
-    """Eq. 2.36, m."""
+    """Eq. 2.36, m (0 at rest: tan(a l) / (a l) -> 1)."""
     al = math.sqrt(rho / E) * omega_s * L
-    return L * (math.tan(al) / al - 1.0)
+    return L * (math.tan(al) / al - 1.0) if al else 0.0
 
 
 def _extension(p):
@@ -46,23 +47,23 @@ def rigid_pendulum(L: float, g: float, t, h: float = 0.0):
     t = np.asarray(t, dtype=float)
     sol = solve_ivp(lambda _, y: [y[1], -c * math.cos(y[0])], (0.0, float(t[-1])), [0.0, 0.0],
                     method="DOP853", t_eval=t, rtol=1e-12, atol=1e-14)
+    if not sol.success:
+        raise FloatingPointError(f"DOP853 failed: {sol.message}")
     th = sol.y[0]
     return th, L * np.cos(th), L * np.sin(th)
 
 
 def _rigid(p):
-    n = int(np.ceil(p["t_end"] / p["output_dt"] - 1e-9))
+    n = intervals(p["t_end"], p["output_dt"])
     t = np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
-    th, x, y = rigid_pendulum(p["L"], p["g"], t, p["h"])
+    try:
+        th, x, y = rigid_pendulum(p["L"], p["g"], t, p["h"])
+    except FloatingPointError as exc:
+        return SceneResult(False, str(exc), {"times": t.tolist(), "theta": None, "tip_x": None,
+                                             "tip_y": None})
     return SceneResult(True, "theta'' = -(g L / 2) cos(theta) / (L^2/3 + h^2/12), DOP853 rtol 1e-12",
                        {"times": t.tolist(), "theta": th.tolist(), "tip_x": x.tolist(),
                         "tip_y": y.tolist()})
-
-
-def _check_grid(p):
-    if p["output_dt"] > p["t_end"]:
-        raise InputError(f"output_dt = {p['output_dt']!r} is out of range; allowed: a number in "
-                         f"(0, t_end = {p['t_end']:g}]")
 
 
 DYNAMIC_REFERENCES = {
@@ -83,6 +84,7 @@ DYNAMIC_REFERENCES = {
          Param("g", 9.81, float, "m/s^2", "gravitational acceleration", lo=0),
          Param("h", 0.0, float, "m", "section height (0: slender rod, the stated reference)", lo=0),
          Param("t_end", 1.0, float, "s", "simulated time", lo=0, lo_open=True, hi=1e4),
-         Param("output_dt", 0.01, float, "s", "sampling interval", lo=0, lo_open=True, hi=10)),
-        _rigid, _check_grid),
+         Param("output_dt", following(0.01, "t_end"), float, "s",
+               "sampling interval (default 0.01 s, at most t_end)", lo=0, lo_open=True, hi=10)),
+        _rigid, check_sampling),
 }

@@ -8,11 +8,13 @@ field and its allowed range), 3 no convergence (the JSON is still printed).
 from __future__ import annotations
 
 import argparse
-import json
+import math
 import signal
 import sys
 
+from ancf.diagnostics import numerical_warnings
 from ancf.scenes.base import InputError
+from ancf.strict_json import dumps
 
 
 def _registries():
@@ -24,9 +26,9 @@ def _registries():
 def _parse_sets(items):
     out = {}
     for item in items or []:
-        if "=" not in item:
+        k, eq, v = item.partition("=")
+        if not (eq and k.strip()):
             raise InputError(f"--set {item!r}: expected key=value")
-        k, v = item.split("=", 1)
         out[k.strip()] = v.strip()
     return out
 
@@ -44,8 +46,10 @@ def _run(registry, kind, args) -> int:
     if args.name not in registry:
         raise InputError(f"{kind}: unknown name {args.name!r}; allowed: {', '.join(registry)}")
     out, _ = registry[args.name].execute(_parse_sets(args.set))
+    for w in out["warnings"]:
+        print(f"warning: {w}", file=sys.stderr)
     if args.json:
-        print(json.dumps(out))
+        print(dumps(out))
     else:
         print(f"{out['scene']}: {'converged' if out['converged'] else 'NOT CONVERGED'} "
               f"({out['message']}), cpu {out['cpu_time_s']:.3f} s")
@@ -58,10 +62,12 @@ def _run(registry, kind, args) -> int:
 def _sweep(args) -> int:
     from ancf.scenes import SCENES
     from ancf.references import spec
+    from ancf.inputs import validate_fixed
     from ancf.sweep import parse_grid, run_sweep
     if args.name not in SCENES:
         raise InputError(f"sweep: unknown scene {args.name!r}; allowed: {', '.join(SCENES)}")
     grid = parse_grid(args.name, args.grid) if args.grid else None
+    validate_fixed(SCENES[args.name], _parse_sets(args.set))
     out = args.out or f"sweep-{args.name}.parquet"
 
     def _term(signum, frame):
@@ -78,7 +84,7 @@ def _sweep(args) -> int:
         return 130
     counts = {k: int(v) for k, v in df["status"].value_counts().items()} if len(df) else {}
     if args.json:
-        print(json.dumps({"scene": args.name, "out": str(out), "rows": int(len(df)),
+        print(dumps({"scene": args.name, "out": str(out), "rows": int(len(df)),
                           "status": counts,
                           "reference": args.reference or spec(args.name).default_reference}))
     else:
@@ -92,7 +98,7 @@ def _recommend(args) -> int:
                     data=args.data, workers=args.workers, scheduler=args.scheduler,
                     time_limit=args.time_limit, progress=not args.no_progress)
     if args.json:
-        print(json.dumps(public(res)))
+        print(dumps(public(res)))
     else:
         print(res["message"])
         if res["params"]:
@@ -102,19 +108,30 @@ def _recommend(args) -> int:
 
 
 def _positive(kind):
+    """argparse type: a finite number > 0 (an integer for ``int``); the error names the range."""
+    allowed = f"allowed: {'an integer' if kind is int else 'a number'} in (0, inf)"
+
     def parse(text):
         try:
             v = kind(text)
         except ValueError:
-            raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
-        if not v > 0:
-            raise argparse.ArgumentTypeError(f"{text!r} must be > 0")
+            raise argparse.ArgumentTypeError(f"{text!r} is not valid; {allowed}") from None
+        if not (v > 0 and math.isfinite(v)):
+            raise argparse.ArgumentTypeError(f"{text!r} is out of range; {allowed}")
         return v
     return parse
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse with its errors as one line instead of a usage block (still exit 2;
+    ``--help`` unchanged)."""
+
+    def error(self, message):
+        self.exit(2, f"error: {message} (see '{self.prog} --help')\n")
+
+
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(prog="ancf", description="ANCF benchmark suite")
+    ap = _Parser(prog="ancf", description="ANCF benchmark suite")
     sub = ap.add_subparsers(dest="cmd", required=True)
     sub.add_parser("scenes", help="list the scenes and their parameters")
     for cmd, what in (("run", "scene"), ("analytic", "analytic reference")):
@@ -153,6 +170,14 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     if hasattr(signal, "SIGPIPE"):
         signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # `ancf scenes | head` ends quietly
+    with numerical_warnings() as noted:
+        code = _dispatch(args)
+    for w in noted:
+        print(f"warning: {w}", file=sys.stderr)
+    return code
+
+
+def _dispatch(args) -> int:
     try:
         if args.cmd == "run":  # scenes only: no sympy, pandas, dask or matplotlib
             from ancf.scenes import SCENES

@@ -410,6 +410,7 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
 
 
 _LOCAL = threading.local()
+SCHEDULER_TIMEOUT = 5.0  # s to reach a Dask scheduler
 
 
 def dask_run(task: dict, time_limit: float) -> dict:
@@ -424,10 +425,26 @@ def dask_run(task: dict, time_limit: float) -> dict:
     return row
 
 
+def _connect(address):
+    """A Dask client, or one line naming the address after SCHEDULER_TIMEOUT seconds."""
+    from distributed import Client
+    try:
+        return Client(address, timeout=SCHEDULER_TIMEOUT)
+    except OSError:  # TimeoutError is an OSError
+        raise InputError(f"--scheduler {address}: no Dask scheduler answered within "
+                         f"{SCHEDULER_TIMEOUT:g} s") from None
+    except (ValueError, TypeError) as exc:
+        raise InputError(f"--scheduler {address}: not a scheduler address ({exc})") from None
+
+
 def _run_dask(todo: list[dict], scheduler, time_limit: float):
-    from distributed import Client, as_completed
+    """Connect now (an unreachable scheduler fails before any run), then yield rows."""
     own = not hasattr(scheduler, "submit")
-    client = Client(scheduler) if own else scheduler
+    return _dask_rows(_connect(scheduler) if own else scheduler, own, todo, time_limit)
+
+
+def _dask_rows(client, own: bool, todo: list[dict], time_limit: float):
+    from distributed import as_completed
     try:
         session = f"{os.getpid()}-{time.time_ns()}"
         futs = {client.submit(dask_run, t, time_limit, pure=False,
@@ -540,6 +557,8 @@ def run_sweep(scene: str, grids=None, *, out, fixed: dict | None = None,
     ref = s.reference(reference)
     log = log or (lambda msg: print(msg, file=sys.stderr, flush=True))
     tasks = make_tasks(scene, expand(grids, fixed), ref.name)
+    if tasks and all(t.get("invalid") for t in tasks):  # nothing to run: bad input, not rows
+        raise InputError(tasks[0]["invalid"])
     keys = [t["key"] for t in tasks]
 
     have = read_rows(out)

@@ -11,7 +11,7 @@ import pytest
 
 from ancf.cli import main
 
-KEYS = {"scene", "params", "converged", "message", "results", "cpu_time_s"}
+KEYS = {"scene", "params", "converged", "message", "results", "cpu_time_s", "warnings"}
 
 
 def _run(capsys, *argv):
@@ -37,7 +37,7 @@ def test_scenes_lists_every_scene_and_reference(capsys):
 def test_json_shape(capsys, argv, key):
     rc, out, _ = _run(capsys, *argv, "--json")
     data = json.loads(out)
-    assert rc == 0 and set(data) == KEYS and data["converged"] is True
+    assert rc == 0 and set(data) == KEYS and data["converged"] is True and data["warnings"] == []
     assert isinstance(data["results"][key], float)
     assert data["cpu_time_s"] >= 0
 

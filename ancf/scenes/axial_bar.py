@@ -7,9 +7,11 @@ zero, which the scene reports (``results.tip_reaction_y_N``) as evidence.
 """
 import numpy as np
 
+from ancf import accuracy
 from ancf.constraints import Elimination
 from ancf.scenes import beam_static as bs
 from ancf.scenes.base import Param, Scene
+from ancf.validity import check_static
 
 
 def run(p):
@@ -26,11 +28,11 @@ def run(p):
     def results(q):
         return {"elongation_m": float(q[ix] - q0[ix]),
                 "tip_reaction_y_N": float(asm.gradient(q)[iy_tip] - Qk[iy_tip])}
-    return bs.solve(p, mesh, q0, asm, elim, Qk, results)
+    return check_static(bs.solve(p, mesh, q0, asm, elim, Qk, results), asm, q0)
 
 
 SCENE = Scene(
     "axial-bar",
     "Pinned bar pulled by an axial tip force (linear axial deformation test).",
     bs.element_params(n_elements=4) + (Param("F", 5.0e4, float, "N", "axial tip force"),),
-    run, bs.check_integration)
+    run, bs.check_integration, warn=accuracy.static)

@@ -3,7 +3,7 @@
 A scene's ``run(params)`` returns a :class:`SceneResult`; the CLI and the reports
 only see ``Scene.execute(overrides)``, which validates the input, times the run
 and turns the outcome into the public JSON shape
-``{scene, params, converged, message, results, cpu_time_s}``.
+``{scene, params, converged, message, results, cpu_time_s, warnings}``.
 """
 from __future__ import annotations
 
@@ -11,6 +11,8 @@ import math
 import time
 from dataclasses import dataclass, field
 from typing import Callable
+
+from ancf.diagnostics import nonfinite, numerical_warnings
 
 
 class InputError(ValueError):
@@ -75,6 +77,7 @@ class SceneResult:
     message: str
     results: dict
     extra: dict = field(default_factory=dict)  # arrays etc. for reports, not in the JSON
+    warnings: list = field(default_factory=list)  # accuracy diagnoses, one line each
 
 
 @dataclass(frozen=True)
@@ -91,6 +94,8 @@ class Scene:
     knobs: tuple = ()
     needs: tuple = ()
     reference: str | None = None
+    # accuracy checks of a finished run: (params, result) -> list of one-line warnings
+    warn: Callable[[dict, SceneResult], list] | None = None
 
     def resolve(self, overrides: dict | None = None) -> dict:
         """All parameter values: defaults, then ``overrides`` (strings or values)."""
@@ -119,8 +124,14 @@ class Scene:
         """Validate, run and time; returns (public JSON dict, full result)."""
         params = self.resolve(overrides)
         t0 = time.process_time()
-        res = self.run(params)
+        with numerical_warnings() as noted:
+            res = self.run(params)
         cpu = time.process_time() - t0
+        res.warnings += noted + (self.warn(params, res) if self.warn else [])
+        bad = nonfinite(res.results) if res.converged else []
+        if bad:
+            res.converged, res.message = False, f"non-finite result(s): {', '.join(bad)}"
         out = {"scene": self.name, "params": params, "converged": bool(res.converged),
-               "message": res.message, "results": res.results, "cpu_time_s": cpu}
+               "message": res.message, "results": res.results, "cpu_time_s": cpu,
+               "warnings": list(res.warnings)}
         return out, res

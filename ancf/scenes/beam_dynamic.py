@@ -10,10 +10,13 @@ import numpy as np
 
 from ancf.energy import energy_history
 from ancf.forces import Forces
+from ancf.inputs import MAX_STEPS, check_fixed_step, check_sampling, following, intervals
 from ancf.multipliers import Baumgarte, LinearConstraints
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import InputError, Param
+from ancf.scenes.base import Param
 from ancf.solvers.dynamics import INTEGRATORS, MultiplierModel, ReducedModel, integrate
+
+RTOL_FLOOR = float(100 * np.finfo(float).eps)  # scipy's solve_ivp raises smaller rtol to this
 
 
 def section_params(**defaults) -> tuple:
@@ -33,8 +36,8 @@ def dynamic_params(t_end=1.0, integrator="dop853", rtol=1e-8, atol=1e-10, dt=1e-
     return (
         Param("rho", 7850.0, float, "kg/m^3", "density", lo=0, lo_open=True),
         Param("integrator", integrator, str, doc="time integrator", choices=INTEGRATORS),
-        Param("rtol", rtol, float, "-", "relative tolerance (scipy integrators)",
-              lo=0, lo_open=True, hi=0.1),
+        Param("rtol", rtol, float, "-", "relative tolerance (scipy integrators; their floor "
+              "is 100 machine epsilon)", lo=RTOL_FLOOR, hi=0.1),
         Param("atol", atol, float, "-", "absolute tolerance (scipy integrators; m and m/s)",
               lo=0, lo_open=True, hi=1.0),
         Param("dt", dt, float, "s", "time step (generalized-alpha; above output_dt the samples "
@@ -43,7 +46,8 @@ def dynamic_params(t_end=1.0, integrator="dop853", rtol=1e-8, atol=1e-10, dt=1e-
               "generalized-alpha spectral radius at infinite frequency (1 = no dissipation)",
               lo=0, hi=1),
         Param("t_end", t_end, float, "s", "simulated time", lo=0, lo_open=True, hi=1e4),
-        Param("output_dt", output_dt, float, "s", "sampling interval of the results",
+        Param("output_dt", following(output_dt, "t_end"), float, "s",
+              f"sampling interval of the results (default {output_dt:g} s, at most t_end)",
               lo=0, lo_open=True, hi=10),
         Param("constraints", "elimination", str, doc="constraint form",
               choices=("elimination", "lagrange")),
@@ -51,15 +55,14 @@ def dynamic_params(t_end=1.0, integrator="dop853", rtol=1e-8, atol=1e-10, dt=1e-
               "Baumgarte alpha = beta of the multiplier form with scipy integrators (0: off)",
               lo=0, hi=1e6),
         Param("max_steps", 50_000, int, doc="step budget (beyond it: not converged)",
-              lo=1, hi=10_000_000),
+              lo=1, hi=MAX_STEPS),
     )
 
 
 def check(p: dict) -> None:
     bs.check_integration(p)
-    if p["output_dt"] > p["t_end"]:
-        raise InputError(f"output_dt = {p['output_dt']!r} is out of range; allowed: a number in "
-                         f"(0, t_end = {p['t_end']:g}]")
+    check_sampling(p)
+    check_fixed_step(p)
 
 
 def model(p: dict, assembly, terms, elim):
@@ -73,7 +76,7 @@ def model(p: dict, assembly, terms, elim):
 
 def times(p: dict) -> np.ndarray:
     """Sample times 0, output_dt, 2 output_dt, ... and t_end."""
-    n = int(np.ceil(p["t_end"] / p["output_dt"] - 1e-9))
+    n = intervals(p["t_end"], p["output_dt"])
     return np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
 
 

@@ -10,11 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from ancf import accuracy
 from ancf.constraints import Elimination
 from ancf.forces import Gravity
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
 from ancf.scenes.base import Param, Scene, SceneResult
+from ancf.validity import check_dynamic
 
 
 def setup(p: dict):
@@ -42,8 +44,9 @@ def run(p: dict) -> SceneResult:
                "energy_strain": bd.as_list(tot["strain"]),
                "energy_total": bd.as_list(tot["total"])}
     results.update(bd.stats(res))
-    return SceneResult(res.converged, res.message, results,
-                       extra={"result": res, "energy": en, "mesh": mesh})
+    out = SceneResult(res.converged, res.message, results,
+                      extra={"result": res, "energy": en, "mesh": mesh})
+    return check_dynamic(out, asm, q0, res.t, res.q)
 
 
 SCENE = Scene(
@@ -52,4 +55,4 @@ SCENE = Scene(
     bd.section_params(n_elements=4, E=2.07e7, nu=0.0)
     + bd.dynamic_params(t_end=1.0)
     + (Param("g", 9.81, float, "m/s^2", "gravitational acceleration (-y)", lo=0),),
-    run, bd.check)
+    run, bd.check, warn=accuracy.pendulum)

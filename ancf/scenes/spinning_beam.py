@@ -26,11 +26,14 @@ import math
 
 import numpy as np
 
+from ancf import accuracy
 from ancf.constraints import Elimination
+from ancf.inputs import following
 from ancf.quadrature import gauss01
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
 from ancf.scenes.base import InputError, Param, Scene, SceneResult
+from ancf.validity import check_dynamic
 
 
 def hub_angle(t: float, omega_s: float, T_s: float):
@@ -106,7 +109,8 @@ def run(p: dict) -> SceneResult:
                "max_abs_tip_lateral_m": float(np.abs(lateral).max()) if res.t.size else None,
                "frame": "tip_dx/tip_dy global axes; tip_axial/tip_lateral rotating hub frame"}
     results.update(bd.stats(res))
-    return SceneResult(res.converged, res.message, results, extra={"result": res, "mesh": mesh})
+    out = SceneResult(res.converged, res.message, results, extra={"result": res, "mesh": mesh})
+    return check_dynamic(out, asm, q0, res.t, res.q)
 
 
 def _check(p):
@@ -128,12 +132,13 @@ def _params():
                      doc="Omar-Shabana only: 'prescribed' also drives r_x = (cos, sin) at the hub, "
                          "which forces zero axial strain there; 'free' clamps r and r_y only, like "
                          "the static cantilever", choices=("free", "prescribed")),
-               Param("mean_window", 5.0, float, "s",
-                     "window at the end over which the axial extension is averaged",
+               Param("mean_window", following(5.0, "t_end"), float, "s",
+                     "window at the end over which the axial extension is averaged "
+                     "(default 5 s, at most t_end)",
                      lo=0, lo_open=True)))
 
 
 SCENE = Scene(
     "spinning-beam",
     "Spin-up of a flexible beam driven at the hub (Wu & Haug; thesis Figs 2.9-2.11).",
-    _params(), run, _check)
+    _params(), run, _check, warn=accuracy.spinning)

@@ -1,0 +1,73 @@
+"""Accuracy checks of a finished run, per scene kind: the run did what was asked,
+but these say when its result is not to be trusted (the ``warnings`` list).
+
+* statics: Newton accepted a point at the round-off floor, above the requested
+  residual; the stability of the equilibrium was not checked;
+* conservative dynamics (pendulum): the energy drift against the energy scale
+  ``m g L``;
+* fixed-step integration: the step against the period of the first bending mode
+  (Euler-Bernoulli estimate, the fastest motion the results are meant to resolve);
+* spinning beam: an averaging window that reaches into the spin-up.
+"""
+from __future__ import annotations
+
+import math
+
+from scipy.optimize import brentq
+
+ENERGY_DRIFT_REL = 1e-3      # energy deviation / (m g L) above this: drift
+STEPS_PER_PERIOD = 20        # fixed steps per resolved period below this: too coarse
+# first roots of the Euler-Bernoulli frequency equations (beta L)
+PINNED_FREE = brentq(lambda x: math.tan(x) - math.tanh(x), 3.5, 4.5)
+CLAMPED_FREE = brentq(lambda x: math.cos(x) * math.cosh(x) + 1.0, 1.0, 3.0)
+
+
+def bending_period(p: dict, beta_l: float) -> float:
+    """First bending period of a uniform beam, s."""
+    EI = p["E"] * p["b"] * p["h"] ** 3 / 12.0
+    rho_a = p["rho"] * p["b"] * p["h"]
+    return 2.0 * math.pi / (beta_l**2 * math.sqrt(EI / (rho_a * p["L"] ** 4)))
+
+
+def _finite(v) -> bool:
+    return isinstance(v, (int, float)) and math.isfinite(v)
+
+
+def static(p: dict, res) -> list[str]:
+    out = []
+    hist = [h for h in res.extra.get("residuals") or [] if h]
+    target = p["rtol"] * max(abs(p["F"]), 1.0)  # the scenes' only load is F on a free DOF
+    if res.converged and hist and hist[-1][-1] > target:
+        out.append(f"Newton stopped at the round-off floor: final residual {hist[-1][-1]:.3g} N "
+                   f"is above the requested rtol |F| = {target:.3g} N; the result holds only "
+                   "the digits double precision resolves here")
+    if res.converged and res.results.get("negative_tangent_eigenvalues") is None:
+        out.append(f"stability of the equilibrium not checked (stability_check = "
+                   f"{p['stability_check']})")
+    return out
+
+
+def _step(p: dict, period: float, what: str) -> list[str]:
+    if p["integrator"] != "generalized-alpha" or p["dt"] * STEPS_PER_PERIOD <= period:
+        return []
+    return [f"dt = {p['dt']:g} s resolves the {what} (period {period:.3g} s) with "
+            f"{period / p['dt']:.3g} steps, fewer than {STEPS_PER_PERIOD}: the motion is not resolved"]
+
+
+def pendulum(p: dict, res) -> list[str]:
+    out = _step(p, bending_period(p, PINNED_FREE), "first bending mode")
+    dev = res.results.get("energy_max_deviation_J")
+    scale = p["rho"] * p["b"] * p["h"] * p["L"] * p["g"] * p["L"]
+    if _finite(dev) and dev > ENERGY_DRIFT_REL * scale:
+        out.append(f"energy drift {dev:.3g} J exceeds {ENERGY_DRIFT_REL:g} of the energy scale "
+                   f"m g L = {scale:.3g} J: the run does not conserve energy")
+    return out
+
+
+def spinning(p: dict, res) -> list[str]:
+    out = _step(p, bending_period(p, CLAMPED_FREE), "first bending mode")
+    if p["t_end"] - p["mean_window"] < p["T_s"]:
+        out.append(f"the averaging window starts at t = {p['t_end'] - p['mean_window']:g} s, "
+                   f"before the spin-up ends (T_s = {p['T_s']:g} s): axial_extension_m is not "
+                   "the steady value")
+    return out
