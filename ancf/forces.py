@@ -77,6 +77,11 @@ class Forces:
                 Kv = b if Kv is None else Kv + b
         return Kq, Kv
 
+    def dofmaps(self) -> list:
+        """The coordinate blocks (nblock, nd) whose couplings the terms' Jacobians may
+        fill (declared by a term as ``dofmap``), for the sparsity pattern."""
+        return [np.asarray(t.dofmap) for t in self.terms if getattr(t, "dofmap", None) is not None]
+
     def element_potential(self, q) -> list | None:
         """Summed potential of the conservative terms per group, or None if none."""
         parts = [t.element_potential(q) for t in self.terms if hasattr(t, "element_potential")]

@@ -1,42 +1,65 @@
-"""Straight beam meshes: node positions, reference nodal coordinates, DOF maps.
+"""Beam meshes: node positions, reference nodal coordinates, DOF maps.
 
-Global coordinates are ordered node by node, and within a node slot by slot
-(``r``, ``r_x``, ``r_y`` ... as the element declares), each slot a 2-vector.
+A mesh lays ``n_elements`` equal elements along a reference curve ``r(s)`` with
+unit tangent ``t(s)``, s in [0, L] the arc length: the straight line from the
+origin along +x by default, or any curve (an arc, a belt wrapped around two
+pulleys).  ``closed=True`` joins the last element to the first node (a closed
+loop has as many nodes as elements).  Global coordinates are registered in a
+:class:`~ancf.registry.Registry` block (``name``), ordered node by node and within a
+node slot by slot (``r``, ``r_x``, ``r_y`` ... as the element declares), each slot a
+2-vector; the reference slopes are ``r_x = t`` and ``r_y = n`` (t turned by +90°).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 
-_REFERENCE_SLOT = {"r": None, "r_x": (1.0, 0.0), "r_y": (0.0, 1.0)}
+from ancf.registry import Registry
+
+
+def straight(s):
+    """The default reference curve: r = (s, 0), t = (1, 0)."""
+    s = np.asarray(s, dtype=float)
+    return np.stack([s, np.zeros_like(s)], -1), np.tile([1.0, 0.0], (s.size, 1))
 
 
 @dataclass
 class BeamMesh:
-    """n_elements equal elements from (0, 0) to (L, 0) along +x; ``slots`` per node."""
+    """n_elements equal elements along ``curve`` (default: straight along +x), length L (m)."""
 
     L: float
     n_elements: int
     slots: tuple
+    closed: bool = False
+    curve: Callable = straight
+    registry: Registry = field(default_factory=Registry)
+    name: str = "beam"
 
     def __post_init__(self):
-        self.n_nodes = self.n_elements + 1
+        self.n_nodes = self.n_elements + (0 if self.closed else 1)
         self.per_node = 2 * len(self.slots)
-        self.n_dofs = self.n_nodes * self.per_node
-        self.X = np.linspace(0.0, self.L, self.n_nodes)
-        self.lengths = np.diff(self.X)
-        first = np.arange(self.n_elements) * self.per_node
-        self.dofmap = first[:, None] + np.arange(2 * self.per_node)[None, :]
+        self.block = self.registry.add(self.name, self.n_nodes * self.per_node, "nodes")
+        self.n_dofs = self.registry.n
+        self.s = np.linspace(0.0, self.L, self.n_elements + 1)[: self.n_nodes]
+        self.X = self.s  # arc length of each node (x of the straight default)
+        self.lengths = np.full(self.n_elements, self.L / self.n_elements)
+        nodes = np.arange(self.n_elements)
+        ends = np.stack([nodes, (nodes + 1) % self.n_nodes], 1)
+        slot = np.arange(self.per_node)
+        self.dofmap = (self.block.start + ends[:, :, None] * self.per_node + slot).reshape(self.n_elements, -1)
 
     def dof(self, node: int, slot: str, component: int) -> int:
         """Global index of one nodal coordinate (component 0 = x, 1 = y)."""
-        return node * self.per_node + 2 * self.slots.index(slot) + component
+        return self.block.start + node * self.per_node + 2 * self.slots.index(slot) + component
 
     def reference(self) -> np.ndarray:
-        """q0: the undeformed straight configuration."""
-        q = np.zeros((self.n_nodes, len(self.slots), 2))
-        for s, slot in enumerate(self.slots):
-            ref = _REFERENCE_SLOT[slot]
-            q[:, s, :] = np.stack([self.X, np.zeros_like(self.X)], 1) if ref is None else ref
-        return q.ravel()
+        """q0 over all registered coordinates: this mesh's block holds the reference
+        configuration on the curve, other blocks are zero."""
+        r, t = self.curve(self.s)
+        ref = {"r": r, "r_x": t, "r_y": np.stack([-t[:, 1], t[:, 0]], 1)}
+        q = np.zeros(self.registry.n)
+        q[self.block.start: self.block.start + self.block.size] = np.stack(
+            [ref[s] for s in self.slots], 1).ravel()
+        return q

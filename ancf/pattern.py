@@ -78,6 +78,8 @@ class ReducedPattern:
         self.band = width(self.kl) * self.n <= BAND_FILL_LIMIT * max(self.nnz, 1)
         sel = np.flatnonzero(col >= 0)
         self.qsel, self.zsel = sel, self.order[col[sel]]
+        self.z_of = np.full(n_dofs, -1, dtype=np.int64)  # global coordinate -> position
+        self.z_of[sel] = self.zsel
         self._csr = None if self.band else self._csr_pattern(ro, co)
         self.groups = [self._targets(col[np.asarray(d)]) for d in dofmaps]
 
@@ -151,6 +153,21 @@ class ReducedPattern:
         out = np.zeros(self.n)
         np.add.at(out, self.zsel, np.asarray(Q)[self.qsel])
         return out
+
+    def add_global(self, mat, A, scale=1.0) -> None:
+        """mat += scale T^T A T for a global sparse matrix A whose couplings lie in the
+        pattern (declared through a force term's ``dofmap``)."""
+        A = sp.coo_matrix(A)
+        r, c = self.z_of[A.row], self.z_of[A.col]
+        ok = (r >= 0) & (c >= 0)
+        r, c, v = r[ok], c[ok], scale * A.data[ok]
+        if self.band:
+            if np.any(np.abs(r - c) > self.kl):
+                raise ValueError("a force term couples coordinates outside the sparsity pattern; "
+                                 "declare them through the term's dofmap")
+            np.add.at(mat, (r, c - r + self.kl), v)
+        else:
+            np.add.at(mat, self._csr_slot(r, c), v)
 
     def mass(self, assembly) -> np.ndarray:
         """T^T M T from the element mass matrices, in this pattern's storage."""

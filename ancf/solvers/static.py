@@ -1,7 +1,9 @@
 """Static equilibrium: Newton-Raphson with adaptive load stepping.
 
-Solves ``Qe(q) + lambda Qk = 0`` for the independent coordinates ``z``
-(``q = T z + g``) as the load factor ``lambda`` goes 0 -> 1.  Non-convergence is a
+Solves ``Qe(q) + lambda (Qk + Q(q)) = 0`` for the independent coordinates ``z``
+(``q = T z + g``) as the load factor ``lambda`` goes 0 -> 1; ``Qk`` is a constant
+load vector and ``Q`` the sum of the model's force terms (``ancf.forces``: gravity,
+and any term with a value and Jacobians, which statics and dynamics share).  Non-convergence is a
 result (``converged=False`` and a ``message``), never an exception or a NaN.
 """
 from __future__ import annotations
@@ -53,21 +55,34 @@ def _roundoff_floor(k_inf: float, z) -> float:
 
 
 class _Newton:
-    """Newton iterations on the reduced system ``T^T (lam Qk - dU/dq) = 0``, assembled
+    """Newton iterations on the reduced system ``T^T (lam (Qk + Q(q)) - dU/dq) = 0``, assembled
     straight into the pattern's storage and solved by the pattern's solver."""
 
-    def __init__(self, assembly, pattern, g, Qk_r, opt):
+    def __init__(self, assembly, pattern, g, Qk_r, opt, forces, q0):
         self.assembly, self.pattern, self.g, self.Qk_r, self.opt = assembly, pattern, g, Qk_r, opt
-        self.scale = max(np.linalg.norm(Qk_r), 1.0)
+        self.forces = forces
+        self.scale = max(np.linalg.norm(Qk_r + self._force(q0, 1.0, None)), 1.0)
         self.tangents = self.factorizations = 0
+
+    def _force(self, q, lam, K):
+        """lam T^T Q(q), subtracting lam T^T dQ/dq T from the stored tangent K if given."""
+        if self.forces is None:
+            return 0.0
+        zero = np.zeros_like(q)
+        if K is not None:
+            Kq, _ = self.forces.jacobians(q, zero, 0.0)
+            if Kq is not None:
+                self.pattern.add_global(K, Kq, -lam)
+        return lam * self.pattern.reduce(self.forces.value(q, zero, 0.0))
 
     def run(self, z, lam, history):
         """Iterate at load factor lam; returns (z, converged, iterations, why)."""
         opt, small_step = self.opt, False
         for it in range(1, opt.max_iter + 1):
-            grad, K = self.pattern.assemble(self.assembly, self.pattern.expand(z, self.g))
+            q = self.pattern.expand(z, self.g)
+            grad, K = self.pattern.assemble(self.assembly, q)
             self.tangents += 1
-            r = lam * self.Qk_r - grad
+            r = lam * self.Qk_r + self._force(q, lam, K) - grad
             rn = float(np.linalg.norm(r))
             history.append(rn)
             if not np.isfinite(rn):
@@ -86,13 +101,16 @@ class _Newton:
         return z, False, opt.max_iter, f"no convergence in {opt.max_iter} iterations (|r| = {rn:.3e})"
 
 
-def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = None) -> StaticResult:
-    """Equilibrium under the external load vector ``Qk`` (global, N), starting at ``q0``."""
+def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = None,
+                 forces=None) -> StaticResult:
+    """Equilibrium under the external load vector ``Qk`` (global, N) and the force terms
+    ``forces`` (an ``ancf.forces.Forces``, or None), starting at ``q0``."""
     opt = options or NewtonOptions()
     T, g, _ = elimination.build()
-    pattern = ReducedPattern(assembly.n_dofs, [grp.dofmap for grp in assembly.groups], T)
-    newton = _Newton(assembly, pattern, g, pattern.reduce(Qk), opt)
+    pattern = ReducedPattern(assembly.n_dofs, [grp.dofmap for grp in assembly.groups]
+                             + ([] if forces is None else forces.dofmaps()), T)
     z = pattern.restrict(q0)
+    newton = _Newton(assembly, pattern, g, pattern.reduce(Qk), opt, forces, pattern.expand(z, g))
     lam, step = 0.0, 1.0 / opt.n_steps
     total, steps, histories, why = 0, 0, [], ""
     result = lambda ok, msg, lf: StaticResult(pattern.expand(z, g), ok, msg, lf, total, steps,  # noqa: E731
