@@ -15,6 +15,8 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 from numba import njit
+
+from ancf.elements.green2d import GreenPlanar, gradient_tangent
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 
 #: band storage is used while it holds at most this many times the nonzeros
@@ -41,6 +43,30 @@ def scatter(ge, Ke, vidx, midx, vec, mat, want_K):
                     j = midx[e, a, b]
                     if j >= 0:
                         flat[j] += Ke[e, a, b]
+
+
+@njit(cache=True)
+def assemble_compiled(z, gq, mdl, want_K, grad, K):
+    """grad = T^T dU/dq at q = T z + gq and, if want_K, K = T^T (d2U/dq2) T, for one
+    planar Green-strain element group (``ReducedPattern.compiled``), in one call."""
+    qsel, zsel, dofmap, el, vidx, midx = mdl
+    E0, BX, BY, dX0, dY0, w, C, cidx = el
+    q = gq.copy()
+    for i in range(qsel.size):
+        q[qsel[i]] += z[zsel[i]]
+    nel, nd = dofmap.shape
+    E = np.empty((nel, nd // 2, 2))
+    for e in range(nel):
+        for a in range(nd):
+            E[e, a // 2, a % 2] = q[dofmap[e, a]]
+    ge = np.zeros((nel, nd))
+    Ke = np.zeros((nel, nd, nd)) if want_K else np.zeros((0, 0, 0))
+    gradient_tangent(E, E0, BX, BY, dX0, dY0, w, C, cidx, want_K, ge, Ke)
+    grad[:] = 0.0
+    if want_K:
+        K[:, :] = 0.0
+    scatter(ge, Ke, vidx, midx, grad, K, want_K)
+
 
 
 def _selection_columns(T, n_dofs: int) -> np.ndarray:
@@ -112,6 +138,17 @@ class ReducedPattern:
 
     def _csr_slot(self, a, b):
         return np.searchsorted(self._keys, a * self.n + b)
+
+    def compiled(self, assembly):
+        """The arrays of :func:`assemble_compiled` for a single planar Green-strain
+        group on band storage, or None (then :meth:`assemble` serves)."""
+        grps = assembly.groups
+        if not self.band or len(grps) != 1 or getattr(grps[0].element, "strain", None) is not GreenPlanar:
+            return None
+        el, pts = grps[0].element, grps[0].element.points
+        vidx, midx = self.groups[0]
+        arrays = (pts.E0, pts.BX, pts.BY, pts.dX0, pts.dY0, pts.w, el.C, pts.cidx)
+        return (self.qsel, self.zsel, np.ascontiguousarray(grps[0].dofmap), arrays, vidx, midx)
 
     # --- storage -----------------------------------------------------------------------
     def zeros_matrix(self) -> np.ndarray:

@@ -24,34 +24,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ancf.elements.green2d import GreenPlanar, gradient_tangent
-from ancf.pattern import scatter
+from ancf.pattern import assemble_compiled
 from ancf.solvers import banded
 
 DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
 #: contraction ratio above which the kept iteration matrix is refreshed
 REFRESH_RATIO = 0.5
-
-
-@njit(cache=True)
-def _assemble(z, gq, qsel, zsel, dofmap, el, vidx, midx, want_K, grad, K):
-    """grad = T^T dU/dq at q = T z + gq and, if want_K, K = T^T (d2U/dq2) T (band)."""
-    E0, BX, BY, dX0, dY0, w, C, cidx = el
-    q = gq.copy()
-    for i in range(qsel.size):
-        q[qsel[i]] += z[zsel[i]]
-    nel, nd = dofmap.shape
-    E = np.empty((nel, nd // 2, 2))
-    for e in range(nel):
-        for a in range(nd):
-            E[e, a // 2, a % 2] = q[dofmap[e, a]]
-    ge = np.zeros((nel, nd))
-    Ke = np.zeros((nel, nd, nd)) if want_K else np.zeros((0, 0, 0))
-    gradient_tangent(E, E0, BX, BY, dX0, dY0, w, C, cidx, want_K, ge, Ke)
-    grad[:] = 0.0
-    if want_K:
-        K[:, :] = 0.0
-    scatter(ge, Ke, vidx, midx, grad, K, want_K)
 
 
 @njit(cache=True)
@@ -62,7 +40,6 @@ def _step(h, t_index, st, fs, cf, mdl, sys, count, tol, max_iter, fresh):
     S, piv, hf = fs
     am, af, gamma, beta = cf
     Mb, kl, Qr, Mp, gdd, presc, gvals, g0 = sys
-    qsel, zsel, dofmap, el, vidx, midx = mdl
     n = x.size
     bp = h * h * beta * (1 - af) / (1 - am)
     gq = g0.copy()
@@ -76,7 +53,7 @@ def _step(h, t_index, st, fs, cf, mdl, sys, count, tol, max_iter, fresh):
     for _ in range(max_iter):
         a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
         x1 = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
-        _assemble(x1, gq, qsel, zsel, dofmap, el, vidx, midx, refresh, grad, K)
+        assemble_compiled(x1, gq, mdl, refresh, grad, K)
         count[0] += 1
         r = banded.matvec(Mb, kl, acc1) - Qr + grad + inertial
         if refresh:
@@ -150,11 +127,7 @@ class CompiledAlpha:
 
     def __init__(self, model, opt, ts):
         asm, rheo, p = model.assembly, model.rheo, model.pattern
-        grp = asm.groups[0]
-        el, pts = grp.element, grp.element.points
-        vidx, midx = p.groups[0]
-        elarrays = (pts.E0, pts.BX, pts.BY, pts.dX0, pts.dY0, pts.w, el.C, pts.cidx)
-        self.mdl = (p.qsel, p.zsel, np.ascontiguousarray(grp.dofmap), elarrays, vidx, midx)
+        self.mdl = p.compiled(asm)
         presc = np.array(sorted({int(d) for dofs, _ in rheo.motions for d in dofs} | set(rheo.follow)),
                          dtype=np.int64)
         gvals = np.array([rheo.g(t)[presc] for t in ts]) if presc.size else np.zeros((ts.size, 0))
@@ -173,6 +146,5 @@ class CompiledAlpha:
         from ancf.forces import Gravity
         p = getattr(model, "pattern", None)
         return (getattr(model, "form", "") == "elimination" and p is not None and p.band
-                and len(model.assembly.groups) == 1
-                and getattr(model.assembly.groups[0].element, "strain", None) is GreenPlanar
+                and p.compiled(model.assembly) is not None
                 and all(isinstance(t, Gravity) for t in model.forces.terms))

@@ -19,32 +19,41 @@ from numba import njit
 
 @njit(cache=True)
 def lu(AB, kl, piv, pivoting):
-    """Factor in place; returns 0, or k + 1 if the pivot of column k is zero."""
+    """Factor in place; returns 0, or k + 1 if the pivot of column k is zero.  The
+    last nonzero column of each row is tracked, so the fill columns are only worked
+    on where row interchanges put something there."""
     n = AB.shape[0]
+    last = np.empty(n, dtype=np.int64)
+    for i in range(n):
+        last[i] = min(n - 1, i + kl)
     for k in range(n):
-        last = min(n - 1, k + kl)
+        end = min(n - 1, k + kl)
         p = k
         if pivoting:
             big = abs(AB[k, kl])
-            for r in range(k + 1, last + 1):
+            for r in range(k + 1, end + 1):
                 v = abs(AB[r, k - r + kl])
                 if v > big:
                     big, p = v, r
         piv[k] = p
         if AB[p, k - p + kl] == 0.0:
             return k + 1
-        cmax = min(n - 1, k + 2 * kl)
         if p != k:
+            cmax = max(last[k], last[p])
             for c in range(k, cmax + 1):
                 a, b = c - k + kl, c - p + kl
                 AB[k, a], AB[p, b] = AB[p, b], AB[k, a]
+            last[k], last[p] = cmax, cmax
         d = AB[k, kl]
-        for r in range(k + 1, last + 1):
+        cmax = last[k]
+        for r in range(k + 1, end + 1):
             m = AB[r, k - r + kl] / d
             AB[r, k - r + kl] = m
             if m != 0.0:
                 for c in range(k + 1, cmax + 1):
                     AB[r, c - r + kl] -= m * AB[k, c - k + kl]
+                if cmax > last[r]:
+                    last[r] = cmax
     return 0
 
 

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ancf.pattern import ReducedPattern
+from ancf.pattern import ReducedPattern, assemble_compiled
 from ancf.solvers.linear import Singular, factor, stability
 
 
@@ -63,11 +63,22 @@ class _Newton:
         self.forces = forces
         self.scale = max(np.linalg.norm(Qk_r + self._force(q0, 1.0, None)), 1.0)
         self.tangents = self.factorizations = 0
+        self.compiled = pattern.compiled(assembly)
+
+    def _assemble(self, z):
+        """(T^T dU/dq, T^T K T in the pattern's storage) at z: one compiled call where
+        the element group allows it."""
+        if self.compiled is None:
+            return self.pattern.assemble(self.assembly, self.pattern.expand(z, self.g))
+        grad, K = np.zeros(self.pattern.n), self.pattern.zeros_matrix()
+        assemble_compiled(z, self.g, self.compiled, True, grad, K)
+        return grad, K
 
     def _force(self, q, lam, K):
         """lam T^T Q(q), subtracting lam T^T dQ/dq T from the stored tangent K if given."""
         if self.forces is None:
             return 0.0
+        q = q if q is not None else self.pattern.expand(self._z, self.g)
         zero = np.zeros_like(q)
         if K is not None:
             Kq, _ = self.forces.jacobians(q, zero, 0.0)
@@ -79,10 +90,10 @@ class _Newton:
         """Iterate at load factor lam; returns (z, converged, iterations, why)."""
         opt, small_step = self.opt, False
         for it in range(1, opt.max_iter + 1):
-            q = self.pattern.expand(z, self.g)
-            grad, K = self.pattern.assemble(self.assembly, q)
+            grad, K = self._assemble(z)
             self.tangents += 1
-            r = lam * self.Qk_r + self._force(q, lam, K) - grad
+            self._z = z
+            r = lam * self.Qk_r + self._force(None, lam, K) - grad
             rn = float(np.linalg.norm(r))
             history.append(rn)
             if not np.isfinite(rn):
