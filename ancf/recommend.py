@@ -3,9 +3,10 @@
 From sweep data (``--data FILE``, or a sweep of the scene's recommendation grid run on
 demand and cached under ``reports/.cache/recommend/``), the cheapest configuration
 (least counted work, ties within the cost model's scatter going to the smallest model,
-see ``ancf.selection`` and ``ancf.cost``; the measured CPU time is reported, not ranked) whose error against the scene's reference is at most ``tol``, among the
-configurations that provide every physics the scene needs (``ancf.references``).  The
-answer carries its evidence: the error and CPU time of the chosen run, how many runs
+see ``ancf.selection`` and ``ancf.cost``; the measured CPU time is reported, not ranked)
+whose error against the scene's reference is at most ``tol``, among the configurations
+that provide every physics the scene needs (``ancf.references``).  The answer carries
+its evidence: the error, counted work and CPU time of the chosen run, how many runs
 were considered and met the tolerance, the runners-up, the runs excluded for lacking
 physics, and how the scene's default model compares (whether a lighter model suffices).
 """

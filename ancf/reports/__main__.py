@@ -16,7 +16,7 @@ from ancf.extremes import extremes_chapter
 from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
 from ancf.reports import studies, tables
-from ancf.reports.output import configure, markdown_table, progress, run, settings
+from ancf.reports.output import configure, markdown_table, progress, run
 from ancf.reports.speed_accuracy import speed_accuracy_chapter
 from ancf.schemas import schemas_markdown
 
