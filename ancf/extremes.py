@@ -12,6 +12,10 @@ against Reissner), tip load up to 10x Model 1 (against Reissner), load steps and
 iterations per step at 10x load, and a watchdog case that exceeds its time limit.
 Dynamic axes: time steps and tolerances on the soft and on the stiff pendulum (explicit,
 implicit and generalised-alpha), spinning speed up to 10x omega_s.
+
+The reduced configuration of the reports (``--quick``) runs the axes that declare
+``quick`` grids (the cells the acceptance checks read, and one case per outcome class)
+and says "skipped" for the others.
 """
 from __future__ import annotations
 
@@ -58,6 +62,7 @@ class Axis:
     doc: str = ""
     label: Callable[[pd.DataFrame], pd.Series] | None = None  # axis values for display
     extra: dict = field(default_factory=dict)
+    quick: Callable[[], list] | None = None  # reduced grids of ``--quick`` (None: skipped)
 
     def applicable(self) -> tuple[bool, str]:
         from ancf.scenes import SCENES
@@ -91,7 +96,19 @@ def _poisson_grids():
                               ("omar-shabana", "exact"))]
 
 
+def _slenderness_quick():
+    """The pinned cells: L/h = 1e4, 64 elements, linear thesis and exact."""
+    sl = small_load(10000)
+    return [{**g, "h": [sl["h"]], "F": [sl["F"]], "nu": [0.3], "load_steps": [1]}
+            for g in _schemes(("linear", "thesis"), ("linear", "exact"), n_elements=[64])]
+
+
 _NS = [2, 4, 8, 16, 32, 64, 128, 256, 512, 1024]
+
+
+def _elements_quick():
+    return [{"element": ["linear"], "integration": ["thesis"], "n_elements": [_NS[0], _NS[-1]],
+             **{k: [v] for k, v in MODEL_1.items()}}]
 
 
 def _elements_grids():
@@ -125,6 +142,10 @@ def _watchdog_grids():
              "stability_check": ["off"], **{k: [v] for k, v in MODEL_1.items()}}]
 
 
+def _step_quick():
+    return [{**_step_grids()[0], "load_steps": [1, 10], "max_iterations": [1, 25]}]
+
+
 def _dyn_step_grids():
     return [{"integrator": ["generalized-alpha"], "dt": [1e-4, 1e-3, 1e-2, 5e-2, 2e-1],
              "n_elements": [4], "t_end": [1.0]},
@@ -141,6 +162,11 @@ def _stiff_step_grids():
             {"integrator": ["rk45", "dop853"], "rtol": [1e-6, 1e-2], "max_steps": [2000], **stiff},
             {"integrator": ["radau"], "rtol": [1e-4], **stiff},
             {"integrator": ["bdf"], "rtol": [1e-6, 1e-2], **stiff}]
+
+
+def _stiff_step_quick():
+    return [{"integrator": ["generalized-alpha"], "dt": [1e-2], "E": [2.07e11],
+             "n_elements": [4], "t_end": [1.0]}]
 
 
 def _spin_grids():
@@ -166,7 +192,7 @@ def _slender_label(df):
 AXES = (
     Axis("slenderness", "Slenderness L/h from 1 to 10⁴ (locking per integration scheme)",
          "cantilever", _slenderness_grids, "L/h", ("element", "integration", "n_elements"),
-         reference="timoshenko", label=_slender_label,
+         reference="timoshenko", label=_slender_label, quick=_slenderness_quick,
          doc="Small-deflection cantilever (linear tip deflection 1e-3 L, ν = 0.3), error against "
              "the Timoshenko cantilever. At L/h = 1 the beam is a block and beam theory itself "
              "is approximate, so errors there measure the model more than the element. The "
@@ -176,7 +202,7 @@ AXES = (
          ("element", "integration", "n_elements"), reference="timoshenko",
          doc="Small-deflection cantilever, L/h = 20, error against Timoshenko (G = E/(2(1+ν)))."),
     Axis("elements", "2 to 1024 elements", "cantilever", _elements_grids, "n_elements",
-         ("h", "element", "integration"), reference="reissner",
+         ("h", "element", "integration"), reference="reissner", quick=_elements_quick,
          doc="Model 1 (h = 0.1) and Model 2 (h = 0.5) at the papers' load, error against the "
              "Reissner rod (includes the constitutive floor of static_beams.md)."),
     Axis("load", "Tip load up to 10× Model 1", "cantilever", _load_grids, "F",
@@ -185,11 +211,13 @@ AXES = (
              "same load (10 load steps, adaptive)."),
     Axis("load-steps", "Load steps (static) from 1 to 1000, 1 to 25 Newton iterations per step",
          "cantilever", _step_grids, "load_steps", ("max_iterations",), reference="reissner",
+         quick=_step_quick,
          doc="Linear element, thesis scheme, n = 16, at 10× the Model 1 load: the static "
              "analogue of the step-size axis (adaptive load stepping halves a failing increment "
              "down to 1/4096)."),
     Axis("watchdog", "Per-run time limit", "cantilever", _watchdog_grids, "n_elements",
          ("element", "integration"), reference="reissner", time_limit=0.5,
+         quick=_watchdog_grids,
          doc="A run that cannot finish within its (deliberately short, 0.5 s) time limit: 4096 "
              "Omar–Shabana elements. The worker process is killed and the row says so."),
     Axis("time-steps", "Time steps from tiny to far beyond the explicit stability limit",
@@ -204,7 +232,7 @@ AXES = (
              "pendulum that limit is mild, see the stiff axis below."),
     Axis("stiff-steps", "Time steps far beyond the explicit stability limit (stiff pendulum)",
          "pendulum", _stiff_step_grids, "dt", ("integrator",), reference="rigid-pendulum",
-         requires=("pendulum",), time_limit=300.0, label=_step_label,
+         requires=("pendulum",), time_limit=300.0, label=_step_label, quick=_stiff_step_quick,
          doc="The pendulum with E = 2.07e11 Pa (4 elements): its highest frequency (~1.8e5 rad/s) "
              "limits explicit schemes to steps of about 1e-5 s, so a 2000-step budget cannot "
              "reach 1 s whatever the tolerance; generalised-α (ρ∞ = 0.9) runs at up to 5000× "
@@ -232,6 +260,8 @@ AXES = (
          "nu_s", (), na_reason="not applicable yet: no contact scene"),
 )
 
+
+QUICK_SKIPPED = "skipped in the reduced configuration (--quick)"
 
 _LOAD_RE = re.compile(r"load factor reached ([0-9.eE+-]+)")
 
@@ -271,15 +301,18 @@ def diagnosis(row) -> str:
     return "not converged: " + msg[:60]
 
 
-def run_axis(axis: Axis, workers=None, fresh: bool = True, log=None) -> pd.DataFrame:
-    """Run one axis (resumable file under reports/.cache/extremes/)."""
+def run_axis(axis: Axis, workers=None, fresh: bool = True, log=None,
+             quick: bool = False) -> pd.DataFrame:
+    """Run one axis (resumable file under reports/.cache/extremes/); ``quick``: its
+    reduced grids."""
     from ancf.sweep import run_sweep
     out = cache_root() / "extremes" / f"{axis.name}.parquet"
     if fresh:
         for p in (out, out.with_name(out.name + ".journal.jsonl")):
             if p.exists():
                 p.unlink()
-    df = run_sweep(axis.scene, axis.grids(), out=out, reference=axis.reference, workers=workers,
+    grids = axis.quick() if quick else axis.grids()
+    df = run_sweep(axis.scene, grids, out=out, reference=axis.reference, workers=workers,
                    time_limit=axis.time_limit, progress=False, log=log)
     df = df.copy()
     df["diagnosis"] = [diagnosis(r) for _, r in df.iterrows()]
@@ -359,7 +392,8 @@ def pinned_numbers(df: pd.DataFrame) -> dict:
 def extremes_chapter(workers=None) -> tuple[str, dict]:
     """(markdown, status) of the extremes chapter: one map per axis of issue 4."""
     import os
-    from ancf.reports.output import markdown_table, progress, write_csv
+    from ancf.reports.output import markdown_table, progress, settings, write_csv
+    quick = settings().quick
     workers = workers or os.cpu_count()
     status = {}
     parts = ["# Stability at the extremes\n",
@@ -380,9 +414,15 @@ def extremes_chapter(workers=None) -> tuple[str, dict]:
             body += [f"## {axis.title}\n", f"{why}.\n"]
             status[f"Extremes: {axis.title}"] = why
             continue
+        if quick and axis.quick is None:
+            why = QUICK_SKIPPED
+            parts.append(f"| {axis.title} | {axis.scene} | {why} |")
+            body += [f"## {axis.title}\n", f"{why}.\n"]
+            status[f"Extremes: {axis.title}"] = why
+            continue
         progress(f"extremes: {axis.name}")
         try:
-            df = run_axis(axis, workers, log=progress)
+            df = run_axis(axis, workers, log=progress, quick=quick)
         except Exception as exc:  # noqa: BLE001 - one broken axis must not hide the others
             msg = f"FAIL: the axis did not run ({type(exc).__name__}: {exc})"
             parts.append(f"| {axis.title} | {axis.scene} | {msg} |")

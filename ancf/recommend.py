@@ -2,10 +2,11 @@
 
 From sweep data (``--data FILE``, or a sweep of the scene's recommendation grid run on
 demand and cached under ``reports/.cache/recommend/``), the cheapest configuration
-(least CPU time, ties within the timing noise going to the smallest model, see
-``ancf.selection``) whose error against the scene's reference is at most ``tol``, among the
-configurations that provide every physics the scene needs (``ancf.references``).  The
-answer carries its evidence: the error and CPU time of the chosen run, how many runs
+(least counted work, ties within the cost model's scatter going to the smallest model,
+see ``ancf.selection`` and ``ancf.cost``; the measured CPU time is reported, not ranked)
+whose error against the scene's reference is at most ``tol``, among the configurations
+that provide every physics the scene needs (``ancf.references``).  The answer carries
+its evidence: the error, counted work and CPU time of the chosen run, how many runs
 were considered and met the tolerance, the runners-up, the runs excluded for lacking
 physics, and how the scene's default model compares (whether a lighter model suffices).
 """
@@ -17,8 +18,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ancf.cost import calibrate, counts, with_work, work
 from ancf.references import cache_root, model_physics, spec, stable_hash
-from ancf.selection import COST_TIE, COST_TIE_ABS_S, cheapest_first
+from ancf.selection import WORK_TIE, cheapest_first
 from ancf.scenes.base import InputError
 from ancf.sweep import read_rows, rows_for, run_sweep
 
@@ -111,7 +113,7 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
                        scheduler=scheduler, time_limit=time_limit, progress=progress, log=log)
         df = rows_for(df, scene, physical)
 
-    df = df.copy()
+    df = with_work(df)
     needs = s.needs
     df["_provides"] = [model_physics(scene, _params(r, names)) for _, r in df.iterrows()]
     df["_lacks"] = [sorted(needs - p) for p in df["_provides"]]
@@ -123,7 +125,8 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     def entry(row):
         p = _params(row, names)
         return {"model": describe(p, s.dynamic), "params": {k: p[k] for k in s.knobs if k in p},
-                "error": float(row["error"]), "cpu_time_s": float(row["cpu_time_s"])}
+                "error": float(row["error"]), "cpu_time_s": float(row["cpu_time_s"]),
+                "work": float(row["work"])}
 
     evidence = {"source": source, "reference_doc": ref.doc, "runs": int(len(df)),
                 "converged_runs": int(len(ok)), "runs_meeting_tol": int(len(adequate)),
@@ -133,7 +136,7 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
         best = ok.loc[ok["error"].astype(float).idxmin()]
         evidence["most_accurate"] = entry(best)
     if len(excluded):
-        cheap_ex = excluded.loc[excluded["cpu_time_s"].astype(float).idxmin()]
+        cheap_ex = cheapest_first(excluded).iloc[0]
         evidence["excluded_for_physics"] = {**entry(cheap_ex), "lacks": cheap_ex["_lacks"],
                                             "count": int(len(excluded))}
     result = {"scene": scene, "tol": tol, "reference": ref.name, "found": bool(len(adequate))}
@@ -144,19 +147,21 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
         order = cheapest_first(adequate, defaults={k: base[k] for k in s.knobs if k in base})
         row = order.iloc[0]
         params = _params(row, names)
-        result.update(params=params, error=float(row["error"]), cpu_time_s=float(row["cpu_time_s"]))
+        result.update(params=params, error=float(row["error"]), cpu_time_s=float(row["cpu_time_s"]),
+                      work=float(row["work"]))
         evidence["runners_up"] = [entry(r) for _, r in order.iloc[1:4].iterrows()]
-        cheaper = ok[(ok["cpu_time_s"] < row["cpu_time_s"]) & (ok["error"] > tol)]
+        cheaper = ok[(ok["work"] < row["work"]) & (ok["error"] > tol)]
         if len(cheaper):
             c = cheaper.loc[cheaper["error"].astype(float).idxmin()]
             evidence["best_cheaper_run"] = entry(c)
         provides = sorted(model_physics(scene, params))
         result["model"] = describe(params, s.dynamic)
         lines.append(f"{scene}: cheapest model with error <= {tol:g} against {ref.name}: "
-                     f"{result['model']}; error {result['error']:.3g}, CPU {result['cpu_time_s']:.3g} s "
-                     f"({len(adequate)} of {len(df)} runs meet the tolerance; runs within "
-                     f"{100 * COST_TIE:g} % (or {1e3 * COST_TIE_ABS_S:g} ms) of the least CPU time "
-                     f"count as equally cheap and the smallest model among them is chosen).")
+                     f"{result['model']}; error {result['error']:.3g}, work {result['work']:.3g} "
+                     f"units, CPU {result['cpu_time_s']:.3g} s ({len(adequate)} of {len(df)} runs "
+                     f"meet the tolerance; ranked by counted work, not by the measured time: runs "
+                     f"within {100 * WORK_TIE:g} % of the least work count as equally cheap and "
+                     f"the smallest model among them is chosen).")
         lines.append(f"Physics needed: {', '.join(sorted(needs)) or 'none declared'}; the model "
                      f"provides {', '.join(provides)}.")
         if len(excluded):
@@ -167,24 +172,24 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
         if "best_cheaper_run" in evidence:
             c = evidence["best_cheaper_run"]
             lines.append(f"Nothing cheaper meets it: the most accurate cheaper run ({c['model']}) "
-                         f"has error {c['error']:.3g} at {c['cpu_time_s']:.3g} s.")
+                         f"has error {c['error']:.3g} at {c['work']:.3g} work units.")
         if default and default.get("error") is not None:
             dm, de, dc = default["model"], default["error"], default["cpu_time_s"]
             if de <= tol:
-                ratio = dc / max(result["cpu_time_s"], 1e-9)
+                ratio = default["work"] / result["work"]
                 lighter = params.get("n_elements", 0) < default["params"].get("n_elements", 0)
                 lines.append(f"The scene's default model ({dm}) also meets it (error {de:.3g}, "
                              f"{dc:.3g} s); " + ("a lighter model suffices: " if lighter else "")
-                             + f"the recommendation is {ratio:.2g}x cheaper.")
+                             + f"the recommendation takes {ratio:.2g}x less work.")
             else:
                 lines.append(f"The scene's default model ({dm}) does not meet it: error {de:.3g} "
                              f"at {dc:.3g} s.")
         code = 0
     else:
-        result.update(params=None, error=None, cpu_time_s=None)
+        result.update(params=None, error=None, cpu_time_s=None, work=None)
         if "most_accurate" in evidence:
             b = evidence["most_accurate"]
-            result.update(error=b["error"], cpu_time_s=b["cpu_time_s"])
+            result.update(error=b["error"], cpu_time_s=b["cpu_time_s"], work=b["work"])
             lines.append(f"{scene}: tolerance {tol:g} not reached against {ref.name} by any of "
                          f"{len(df)} runs; the most accurate: {b['model']} with error "
                          f"{b['error']:.3g} at {b['cpu_time_s']:.3g} s.")
@@ -197,6 +202,9 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
                              f"not discretisation (see the reference: {ref.doc}); "
                              f"`--reference {others[0]}` measures the discretisation error.")
         code = 3
+    cal = calibrate(df[df["status"] == "ok"])
+    evidence["cost_model"] = {"ranked_by": "work (ancf.cost: counted work, fixed weights)",
+                              "calibration": cal.as_dict() if cal else None}
     result["message"] = " ".join(x for x in lines if x)
     result["evidence"] = evidence
     result["exit_code"] = code
@@ -204,7 +212,7 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
 
 
 def _default_model(scene, base, s, ref, df, names) -> dict:
-    """Error and CPU time of the scene's default knobs at these physical parameters
+    """Error, CPU time and work of the scene's default knobs at these physical parameters
     (from the data when present, else run once here)."""
     from ancf.scenes import SCENES
     sc = SCENES[scene]
@@ -215,7 +223,7 @@ def _default_model(scene, base, s, ref, df, names) -> dict:
         r = rows.iloc[0]
         ok = r["status"] == "ok" and math.isfinite(float(r["error"]))
         out.update(error=float(r["error"]) if ok else None, cpu_time_s=float(r["cpu_time_s"]),
-                   status=str(r["status"]))
+                   work=float(r["work"]), status=str(r["status"]))
         return out
     res, _ = sc.execute(p)
     err = None
@@ -225,14 +233,14 @@ def _default_model(scene, base, s, ref, df, names) -> dict:
         except Exception:  # noqa: BLE001 - evidence only
             err = None
     out.update(error=err, cpu_time_s=float(res["cpu_time_s"]),
-               status="ok" if res["converged"] else "not-converged")
+               work=work(counts(p, res["results"])), status="ok" if res["converged"] else "not-converged")
     return out
 
 
 def public(result: dict) -> dict:
     """The JSON printed by ``ancf recommend --json``."""
     keys = ("scene", "tol", "params", "error", "reference", "cpu_time_s", "found", "model",
-            "message", "evidence")
+            "message", "evidence", "work")
     return {k: _clean(result.get(k)) for k in keys}
 
 

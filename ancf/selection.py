@@ -1,30 +1,33 @@
-"""Picking "the cheapest" run so that timing noise does not decide it.
+"""Picking "the cheapest" run reproducibly: by counted work, never by measured time.
 
-CPU times of one sweep scatter by 10-20 % from run to run on a shared machine, and many
-configurations of the small static scenes cost the same within that noise.  A pick by
-the smallest time alone would then flip between equivalent models from one report to
-the next.  Runs within ``COST_TIE`` of the cheapest time, or within ``COST_TIE_ABS_S`` of it
-for millisecond-scale runs (whichever band is wider), count as equally cheap; among
-them the smallest model wins (global coordinates), then the smallest error (to two
-significant digits: quadrature variants that agree to print precision are equivalent),
-then the run closest to the scene's defaults, then the least time.
+Measured CPU times scatter by 10-60 % between identical runs and shift between machines,
+so a pick by time (or by time with a tie band) flips between equivalent models from one
+report to the next (issue 15, item 11).  The rank here uses ``work`` from
+:mod:`ancf.cost`: the run's counted iterations, evaluations, factorisations and steps,
+weighted by a fixed model, identical on every machine and every repeat.  The timing
+columns stay in the tables but do not decide.
+
+The cost model describes measured seconds to about 5-20 % (its calibration is reported
+next to the tables), so runs within ``WORK_TIE`` of the least work count as equally
+cheap; among them the smallest model wins (global coordinates), then the smallest error
+(to two significant digits: quadrature variants that agree to print precision are
+equivalent), then the run closest to the scene's defaults, then the least work.  Every
+key is a deterministic function of the runs' parameters and counts.
 """
 from __future__ import annotations
 
 import numpy as np
 import pandas as pd
 
-#: relative CPU-time band treated as a tie (one sweep's timing scatter)
-COST_TIE = 0.25
-#: absolute band (s): the same static solve (same element, mesh and iterations, two rtol
-#: values) measured 0.7 ms apart at the median and 1.9 ms at worst in one sweep of
-#: reports/data/speed_accuracy_simply_supported.csv, i.e. up to 30-60 % of a 3-5 ms run
-COST_TIE_ABS_S = 2e-3
+from ancf.cost import with_work
+
+#: relative band of work treated as a tie (the cost model's typical scatter)
+WORK_TIE = 0.1
 
 
-def tie_limit(least: float, band: float = COST_TIE, abs_band: float = COST_TIE_ABS_S) -> float:
-    """CPU time (s) up to which a run ties with the cheapest one (``least`` s)."""
-    return max((1.0 + band) * least, least + abs_band)
+def tie_limit(least: float, band: float = WORK_TIE) -> float:
+    """Work up to which a run ties with the cheapest one (``least`` work units)."""
+    return (1.0 + band) * least
 
 
 def model_size(row) -> float:
@@ -44,20 +47,22 @@ def _departures(df: pd.DataFrame, defaults: dict | None) -> np.ndarray:
                     dtype=float)
 
 
-def cheapest_first(df: pd.DataFrame, err: str = "error", band: float = COST_TIE,
-                   defaults: dict | None = None, abs_band: float = COST_TIE_ABS_S) -> pd.DataFrame:
-    """``df`` ordered cheapest first: the runs within ``tie_limit`` of the least CPU time, by
-    model size, error (2 significant digits), departures from ``defaults`` and time,
-    followed by the rest by CPU time."""
+def cheapest_first(df: pd.DataFrame, err: str = "error", band: float = WORK_TIE,
+                   defaults: dict | None = None) -> pd.DataFrame:
+    """``df`` ordered cheapest first: the runs within ``tie_limit`` of the least work, by
+    model size, error (2 significant digits), departures from ``defaults`` and work,
+    followed by the rest by work (uncounted runs last).  Adds ``work`` when missing."""
     if not len(df):
         return df
-    cost = df["cpu_time_s"].astype(float)
-    tied = (cost <= tie_limit(cost.min(), band, abs_band)).to_numpy()
+    if "work" not in df:
+        df = with_work(df)
+    cost = df["work"].astype(float)
+    tied = (cost <= tie_limit(cost.min(), band)).to_numpy()
     size = np.array([model_size(r) for _, r in df.iterrows()])
     error = np.array([float(f"{e:.2g}") for e in df[err].astype(float)])
     keys = pd.DataFrame({"tied": ~tied, "size": np.where(tied, size, 0.0),
                          "err": np.where(tied, error, 0.0),
                          "dep": np.where(tied, _departures(df, defaults), 0.0),
-                         "cost": cost.to_numpy()}, index=df.index)
+                         "cost": cost.fillna(np.inf).to_numpy()}, index=df.index)
     order = keys.sort_values(["tied", "size", "err", "dep", "cost"], kind="stable").index
     return df.loc[order]

@@ -1,15 +1,40 @@
-"""Writing report artefacts: Markdown tables, CSV data, PNG figures, progress."""
+"""Writing report artefacts: Markdown tables, CSV data, PNG figures, progress.
+
+Where they go and how much is computed is one :class:`Settings` per report run
+(:func:`configure`): ``root`` (default ``reports/``) and ``quick`` (the reduced
+configuration of ``python -m ancf.reports --quick``, see each chapter).
+"""
 from __future__ import annotations
 
 import math
 import sys
 import time
+from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
 import pandas as pd
 
 ROOT = Path(__file__).resolve().parents[2] / "reports"
+
+
+@dataclass(frozen=True)
+class Settings:
+    root: Path = ROOT
+    quick: bool = False
+
+
+_SETTINGS = [Settings()]
+
+
+def configure(root=None, quick: bool = False) -> Settings:
+    """Set the output folder and the configuration of this report run."""
+    _SETTINGS[0] = Settings(Path(root) if root is not None else ROOT, bool(quick))
+    return _SETTINGS[0]
+
+
+def settings() -> Settings:
+    return _SETTINGS[0]
 
 
 def fmt(v, digits=6) -> str:
@@ -30,14 +55,14 @@ def markdown_table(df: pd.DataFrame, digits: int = 6) -> str:
 
 
 def write_csv(df: pd.DataFrame, name: str) -> Path:
-    path = ROOT / "data" / f"{name}.csv"
+    path = settings().root / "data" / f"{name}.csv"
     path.parent.mkdir(parents=True, exist_ok=True)
     df.to_csv(path, index=False)
     return path
 
 
 def save_figure(fig, name: str) -> Path:
-    path = ROOT / "figures" / f"{name}.png"
+    path = settings().root / "figures" / f"{name}.png"
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110, bbox_inches="tight")
     import matplotlib.pyplot as plt

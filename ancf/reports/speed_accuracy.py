@@ -4,6 +4,9 @@ cheapest configuration reaching 10 %, 1 %, 0.1 % and 0.01 % error.
 Each scene of ``SCENES`` is swept over its report grid (``ancf.references``: element x
 quadrature x element count x solver tolerance, and x integrator for dynamic scenes)
 with :func:`ancf.sweep.run_sweep`; the rows go to ``reports/data/speed_accuracy_SCENE.csv``.
+Cost is the counted work of :mod:`ancf.cost` (the same on every machine), so the fronts and
+the cheapest configurations do not move with timing noise; the measured CPU times are shown
+next to it, with the per-machine calibration of work to seconds.
 """
 from __future__ import annotations
 
@@ -16,17 +19,18 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from ancf.references import cache_root, rescore, specs  # noqa: E402
+from ancf.cost import FEATURES, calibrate, with_work  # noqa: E402
+from ancf.references import cache_root, rescore, spec, specs  # noqa: E402
 from ancf.reports.output import (fmt, markdown_table, progress, save_figure,  # noqa: E402
-                                 write_csv)
+                                 settings, write_csv)
 from ancf.sweep import run_sweep  # noqa: E402
-from ancf.selection import COST_TIE, COST_TIE_ABS_S, cheapest_first  # noqa: E402
+from ancf.selection import WORK_TIE, cheapest_first  # noqa: E402
 
 TOLERANCES = (1e-1, 1e-2, 1e-3, 1e-4)
 FLOOR = 1e-16  # plotted in place of an exact zero error
 
 
-def pareto(df: pd.DataFrame, cost: str = "cpu_time_s", err: str = "error") -> pd.DataFrame:
+def pareto(df: pd.DataFrame, cost: str = "work", err: str = "error") -> pd.DataFrame:
     """Rows not dominated in (cost, error): sorted by cost, each more accurate than every
     cheaper one."""
     d = df[np.isfinite(df[err].astype(float)) & np.isfinite(df[cost].astype(float))]
@@ -64,8 +68,8 @@ def _knob_defaults(name: str, s) -> dict:
 
 def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error",
                    defaults: dict | None = None) -> pd.DataFrame:
-    """Per tolerance: the cheapest run with error <= tolerance (ties within the timing
-    noise go to the smaller model, ``ancf.selection``), or 'not reached'."""
+    """Per tolerance: the cheapest run with error <= tolerance by counted work (ties within
+    the cost model's scatter go to the smaller model, ``ancf.selection``), or 'not reached'."""
     ok = df[(df["status"] == "ok") & np.isfinite(df[err].astype(float))]
     rows = []
     for tol in TOLERANCES:
@@ -74,12 +78,14 @@ def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error",
             r = cheapest_first(m, err, defaults=defaults).iloc[0]
             rows.append({"error ≤": f"{100 * tol:g} %", "model": _model(r, dynamic),
                          "n_elements": int(r["n_elements"]), "solver": _solver(r, dynamic),
-                         "error": float(r[err]), "CPU ms": 1e3 * float(r["cpu_time_s"])})
+                         "error": float(r[err]), "work": float(r["work"]),
+                         "CPU ms": 1e3 * float(r["cpu_time_s"])})
         else:
             best = ok[err].min() if len(ok) else float("nan")
             rows.append({"error ≤": f"{100 * tol:g} %",
                          "model": f"not reached (best error {fmt(float(best), 2)})",
-                         "n_elements": None, "solver": None, "error": None, "CPU ms": None})
+                         "n_elements": None, "solver": None, "error": None, "work": None,
+                         "CPU ms": None})
     return pd.DataFrame(rows)
 
 
@@ -89,110 +95,181 @@ def plot(df: pd.DataFrame, scene: str, dynamic: bool, ax, err: str = "error", ti
     groups = ok.groupby([_model(r, dynamic) for _, r in ok.iterrows()])
     markers = "osD^v<>phx*+"
     for k, (label, g) in enumerate(groups):
-        ax.loglog(g["cpu_time_s"], np.maximum(g[err].astype(float), FLOOR), markers[k % 12],
+        ax.loglog(g["work"], np.maximum(g[err].astype(float), FLOOR), markers[k % 12],
                   ms=4, alpha=0.7, label=label)
     front = pareto(ok, err=err)
     if len(front):
-        ax.step(front["cpu_time_s"], np.maximum(front[err].astype(float), FLOOR), "k-",
+        ax.step(front["work"], np.maximum(front[err].astype(float), FLOOR), "k-",
                 where="post", lw=1.2, label="Pareto front", zorder=5)
     for tol in TOLERANCES:
         ax.axhline(tol, color="0.8", lw=0.6, zorder=0)
-    ax.set(xlabel="CPU time per run [s]", ylabel="error", title=title or scene)
+    ax.set(xlabel="work per run [units, ancf.cost]", ylabel="error", title=title or scene)
     ax.grid(True, which="both", alpha=0.25)
     if legend:  # outside the axes, so it never hides the front
         ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
 
 
-def scene_sweep(scene: str, workers=None, fresh: bool = True) -> pd.DataFrame:
-    out = cache_root() / "speed_accuracy" / f"{scene}.parquet"
+#: the reduced configuration (``--quick``): per sub-grid the two smallest element counts
+#: and the first value of every other list; dynamic scenes over a shorter simulated time
+QUICK_N = 2
+QUICK_FIXED = {"pendulum": {"t_end": 0.2, "output_dt": 0.01},
+               "spinning-beam": {"t_end": 2.0, "mean_window": 1.0}}
+
+
+def quick_grids(grids) -> list:
+    """``grids`` reduced for ``--quick`` (see ``QUICK_N``)."""
+    return [{k: (sorted(v)[:QUICK_N] if k == "n_elements" else list(v)[:1])
+             if k not in ("element", "integration") else list(v) for k, v in g.items()}
+            for g in grids]
+
+
+def scene_grids(scene: str) -> tuple[list, dict]:
+    """(grids, fixed parameters) of the scene's speed-accuracy sweep in this report run."""
+    s = spec(scene)
+    if settings().quick:
+        return quick_grids(s.report_grids), QUICK_FIXED.get(scene, {})
+    return list(s.report_grids), {}
+
+
+def scene_sweep(scene: str, workers=None, fresh: bool = True, out=None) -> pd.DataFrame:
+    """The scene's rows (fresh unless ``fresh=False``: resumed) with their counted work."""
+    out = out or cache_root() / "speed_accuracy" / f"{scene}.parquet"
     if fresh:
         for p in (out, out.with_name(out.name + ".journal.jsonl")):
             if p.exists():
                 p.unlink()
-    return run_sweep(scene, None, out=out, workers=workers, time_limit=300.0,
-                     progress=False, log=progress)
+    grids, fixed = scene_grids(scene)
+    df = run_sweep(scene, grids, out=out, fixed=fixed, workers=workers, time_limit=300.0,
+                   progress=False, log=progress)
+    return with_work(df[df["scene"] == scene])
 
 
 _CSV_COLS = ("element", "integration", "n_elements", "integrator", "rtol", "atol", "dt",
-             "load_steps", "status", "message", "error", "error_self", "cpu_time_s", "steps",
-             "iterations")
+             "load_steps", "status", "message", "error", "error_self", "work", "cpu_time_s",
+             "steps", "iterations") + tuple(f"count_{k}" for k in FEATURES)
+
+_INTRO = (
+    "Generated by `python -m ancf.reports`; do not edit. For every scene, every configuration "
+    "of the grid below is one run of `ancf run SCENE` in a single-threaded worker process "
+    "(`ancf sweep SCENE` runs the same grid); error is against the scene's reference "
+    "(`ancf/references.py`). Cost is the run's counted work (`ancf/cost.py`: iterations, "
+    "kernel evaluations × elements × quadrature points, factorisations × size, steps, "
+    "weighted by a fixed model), which is the same on every machine and every repeat, so the "
+    "Pareto fronts and the cheapest configurations below do not move with timing noise. The "
+    "measured CPU time (process time on the machine that generated this report; identical "
+    "runs scatter by 10-30 %) is shown next to it but does not decide; the last section "
+    "calibrates work to seconds on this machine. The Pareto front connects the runs that no "
+    "other run beats in both work and error. 'Cheapest' treats runs within "
+    "{tie:g} % of the least work as equally cheap (the cost model's scatter) and takes the "
+    "smallest model among them, then the smallest error, then the scene's default settings "
+    "(`ancf/selection.py`). `ancf recommend SCENE --tol TOL` answers the last question of "
+    "each section for a given tolerance.\n")
+
+
+def _references_table(sp: dict) -> list:
+    parts = ["| scene | reference | error definition | physics needed | other references |",
+             "|---|---|---|---|---|"]
+    for name, s in sp.items():
+        others = ", ".join(k for k in s.references if k != s.default_reference)
+        parts.append(f"| `{name}` | {s.default_reference} | {s.reference().doc} | "
+                     f"{', '.join(sorted(s.needs))} | {others or '—'} |")
+    return parts + [""]
+
+
+def _figure(df: pd.DataFrame, name: str, s) -> None:
+    ncols = 2 if "error_self" in df else 1
+    fig, axes = plt.subplots(1, ncols, figsize=(6.2 * ncols + 2.6, 4.4), squeeze=False)
+    plot(df, name, s.dynamic, axes[0][0], title=f"{name}: error vs {s.default_reference}",
+         legend=ncols == 1)
+    if ncols == 2:
+        plot(df, name, s.dynamic, axes[0][1], err="error_self",
+             title=f"{name}: error vs converged self-reference")
+    save_figure(fig, f"pareto_{name.replace('-', '_')}")
+
+
+def scene_section(name: str, s, df: pd.DataFrame) -> tuple[list, bool]:
+    """(markdown lines, PASS) of one scene's section from its sweep rows."""
+    slug = name.replace("-", "_")
+    grids, fixed = scene_grids(name)
+    grid_txt = "; ".join(" × ".join(f"{k} ∈ {{{', '.join(map(str, v))}}}" for k, v in g.items())
+                         for g in grids)
+    if fixed:
+        grid_txt += " (reduced configuration, with " + ", ".join(
+            f"{k} = {v:g}" for k, v in fixed.items()) + ")"
+    if "self" in s.references and s.default_reference != "self" and not s.dynamic:
+        df = df.assign(error_self=rescore(df, name, "self"))
+    write_csv(df[[c for c in _CSV_COLS if c in df]], f"speed_accuracy_{slug}")
+    _figure(df, name, s)
+    defaults = _knob_defaults(name, s)
+    table = cheapest_table(df, s.dynamic, defaults=defaults)
+    counts = df["status"].value_counts().to_dict()
+    front = pareto(df[df["status"] == "ok"])
+    parts = [f"## `{name}`\n", f"{s.notes} Grid: {grid_txt} ({len(df)} runs: "
+             + ", ".join(f"{k} {v}" for k, v in counts.items()) + "). Reference: "
+             f"{s.reference().doc}.\n",
+             f"![pareto {name}](figures/pareto_{slug}.png)\n",
+             f"Cheapest configuration per error level (against {s.default_reference}):\n",
+             markdown_table(table, 3), ""]
+    extra = ""
+    if "error_self" in df:
+        parts += ["Against the converged self-reference (`--reference self`: discretisation "
+                  "error only):\n",
+                  markdown_table(cheapest_table(df, s.dynamic, "error_self", defaults), 3), ""]
+        extra = _self_note(df)
+    parts += [f"Pareto front: {len(front)} of {len(df)} runs. " + _front_text(front, s.dynamic)
+              + extra + "\n", f"Data: `data/speed_accuracy_{slug}.csv`.\n"]
+    return parts, bool(len(front)) and len(table) == len(TOLERANCES)
+
+
+def calibration_table(frames: dict) -> pd.DataFrame:
+    """Per scene, seconds ~ sum_k c_k count_k fitted over its finished rows (``ancf.cost``)."""
+    rows = []
+    for name, df in frames.items():
+        cal = calibrate(df[df["status"] == "ok"])
+        if cal is None:
+            continue
+        row = {"scene": name, "rows": cal.rows}
+        row.update({f"{k} [µs]": 1e6 * v for k, v in cal.seconds_per.items()})
+        row.update({"fit scatter median": cal.scatter_median, "fit scatter p90": cal.scatter_p90,
+                    "ns per work unit": 1e9 * cal.seconds_per_work})
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def _calibration_section(frames: dict) -> list:
+    table = calibration_table(frames)
+    if not len(table):
+        return []
+    write_csv(table, "speed_accuracy_calibration")
+    return ["## Calibration of work to seconds on this machine\n",
+            "Non-negative least squares of each scene's measured CPU times on its counted work "
+            "(relative residuals): seconds ≈ Σ c_k × count_k over runs (set-up), calls, kernel "
+            "points, factorised coordinates and the dense stability check's coordinates³; "
+            "scatter = |predicted / measured − 1|. The last column is the machine's time per "
+            "unit of the fixed-weight work that ranks the runs (median of seconds / work). "
+            "Data: `data/speed_accuracy_calibration.csv`.\n", markdown_table(table, 3), ""]
 
 
 def speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
     """(markdown, status) of the speed-accuracy chapter for every scene in ``SCENES``."""
     workers = workers or os.cpu_count()
-    status = {}
-    parts = ["# Speed versus accuracy\n",
-             "Generated by `python -m ancf.reports`; do not edit. For every scene, every "
-             "configuration of the grid below is one run of `ancf run SCENE` in a single-threaded "
-             "worker process (`ancf sweep SCENE` runs the same grid); error is against the "
-             "scene's reference (`ancf/references.py`), cost is the CPU time of the run (process "
-             "time, measured on the machine that generated this report: identical runs scatter by "
-             "10-30 % within one sweep, and on a shared machine all times can shift by a factor "
-             "of 2-3 between report runs, so compare times within one report). The Pareto "
-             "front connects the runs that no other run beats in both. "
-             f"'Cheapest' treats runs within {100 * COST_TIE:g} % (or {1e3 * COST_TIE_ABS_S:g} ms, the "
-             "scatter of identical millisecond solves) of the least CPU time as "
-             "equally cheap and takes the smallest model among them, then the smallest error, "
-             "then the scene's default settings "
-             "(`ancf/selection.py`), so that timing noise does not pick between equivalent "
-             "models. "
-             "`ancf recommend SCENE --tol TOL` answers the last question of each section for a "
-             "given tolerance.\n"]
+    status, frames = {}, {}
     sp = specs()
-    rows = [{"scene": name, "reference": s.default_reference,
-             "error definition": s.reference().doc, "physics needed": ", ".join(sorted(s.needs)),
-             "other references": ", ".join(k for k in s.references if k != s.default_reference)}
-            for name, s in sp.items()]
-    parts += ["| scene | reference | error definition | physics needed | other references |",
-              "|---|---|---|---|---|"]
-    parts += [f"| `{r['scene']}` | {r['reference']} | {r['error definition']} | "
-              f"{r['physics needed']} | {r['other references'] or '—'} |" for r in rows]
-    parts.append("")
+    parts = ["# Speed versus accuracy\n", _INTRO.format(tie=100 * WORK_TIE)]
+    parts += _references_table(sp)
     for name, s in sp.items():
+        key = f"Speed–accuracy {name}: Pareto plot + cheapest-configuration table"
         progress(f"speed-accuracy sweep: {name}")
         try:
-            df = scene_sweep(name, workers)
+            frames[name] = scene_sweep(name, workers)
         except Exception as exc:  # noqa: BLE001 - one broken scene must not hide the others
-            msg = f"FAIL: the sweep did not run ({type(exc).__name__}: {exc})"
-            parts += [f"## `{name}`\n", msg + "\n"]
-            status[f"Speed–accuracy {name}: Pareto plot + cheapest-configuration table"] = msg
+            status[key] = f"FAIL: the sweep did not run ({type(exc).__name__}: {exc})"
+            parts += [f"## `{name}`\n", status[key] + "\n"]
             continue
-        df = df[df["scene"] == name]
-        grid_txt = "; ".join(" × ".join(f"{k} ∈ {{{', '.join(map(str, v))}}}" for k, v in g.items())
-                             for g in s.report_grids)
-        extra = ""
-        if "self" in s.references and s.default_reference != "self" and not s.dynamic:
-            df = df.assign(error_self=rescore(df, name, "self"))
-        data = df[[c for c in _CSV_COLS if c in df]]
-        write_csv(data, f"speed_accuracy_{name.replace('-', '_')}")
-        ncols = 2 if "error_self" in df else 1
-        fig, axes = plt.subplots(1, ncols, figsize=(6.2 * ncols + 2.6, 4.4), squeeze=False)
-        plot(df, name, s.dynamic, axes[0][0], title=f"{name}: error vs {s.default_reference}",
-             legend=ncols == 1)
-        if ncols == 2:
-            plot(df, name, s.dynamic, axes[0][1], err="error_self",
-                 title=f"{name}: error vs converged self-reference")
-        save_figure(fig, f"pareto_{name.replace('-', '_')}")
-        defaults = _knob_defaults(name, s)
-        table = cheapest_table(df, s.dynamic, defaults=defaults)
-        counts = df["status"].value_counts().to_dict()
-        front = pareto(df[df["status"] == "ok"])
-        parts += [f"## `{name}`\n", f"{s.notes} Grid: {grid_txt} ({len(df)} runs: "
-                  + ", ".join(f"{k} {v}" for k, v in counts.items()) + "). Reference: "
-                  f"{s.reference().doc}.\n",
-                  f"![pareto {name}](figures/pareto_{name.replace('-', '_')}.png)\n",
-                  f"Cheapest configuration per error level (against {s.default_reference}):\n",
-                  markdown_table(table, 3), ""]
-        if ncols == 2:
-            parts += ["Against the converged self-reference (`--reference self`: discretisation "
-                      "error only):\n", markdown_table(cheapest_table(df, s.dynamic, "error_self", defaults), 3),
-                      ""]
-            extra = _self_note(df)
-        parts += [f"Pareto front: {len(front)} of {len(df)} runs. " + _front_text(front, s.dynamic)
-                  + extra + "\n", f"Data: `data/speed_accuracy_{name.replace('-', '_')}.csv`.\n"]
-        status[f"Speed–accuracy {name}: Pareto plot + cheapest-configuration table"] = (
-            "PASS" if len(front) and len(table) == len(TOLERANCES) else "FAIL")
+        lines, ok = scene_section(name, s, frames[name])
+        parts += lines
+        status[key] = "PASS" if ok else "FAIL"
+    parts += _calibration_section(frames)
     return "\n".join(parts), status
 
 

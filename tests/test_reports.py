@@ -1,0 +1,149 @@
+"""The report generator (issue 15, item 16): `python -m ancf.reports --out DIR --quick`
+writes every chapter, every figure is a PNG, every acceptance row agrees with the test that
+checks the same claim, and a second speed-accuracy run gives the same tables apart from
+the timing columns (issue 15, item 11)."""
+import importlib
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from ancf.extremes import AXES, QUICK_SKIPPED
+from ancf.reports.__main__ import CHAPTERS
+
+PNG = b"\x89PNG\r\n\x1a\n"
+
+#: acceptance row -> the test (module, function) that checks the same claim, and the
+#: status that test implies
+PUBLISHED = ("test_published_tables", "test_cantilever_tables")
+AGREES = {
+    **{t: (("test_published_tables", "test_simply_supported_tables"), "PASS")
+       for t in ("Thesis Table 2.1 (ν = 0)", "Thesis Table 2.2 (ν = 0.3)",
+                 "Report Table 1 (ν = 0)", "Report Table 2 (ν = 0.3)")},
+    **{f"{t} {el}": (PUBLISHED, "PASS") for t in ("Thesis Table 2.3 (Model 1)",
+                                                  "Thesis Table 2.4 (Model 2)",
+                                                  "Report Table 5 (Model 2, fixed scheme)")
+       for el in ("omar-shabana", "linear")},
+    "Report Table 3 (Model 1) linear": (PUBLISHED, "PASS"),
+    "Report Table 3 (Model 1) omar-shabana": (
+        ("test_published_tables", "test_report_table_3_omar_shabana_single_outlier"),
+        "DIFFERS (explained)"),
+    "Report Table 4 (Model 2) omar-shabana": (PUBLISHED, "PASS"),
+    "Report Table 4 (Model 2) linear": (
+        ("test_published_tables", "test_report_table_4_linear_and_no_convergence"), "PASS"),
+    "Report Table 6": (("test_published_tables", "test_report_table_6_elongation"), "PASS"),
+    "Pendulum: 8 vs 16 elements within 1 % of L (each coordinate)": (
+        ("test_dynamics", "test_pendulum_8_and_16_elements_agree_within_1_percent_of_L"), "PASS"),
+    "Pendulum: energy deviation below 0.62e-4 J (4 elements)": (
+        ("test_dynamics", "test_pendulum_energy_deviation_below_thesis"), "PASS"),
+    "Pendulum E = 2.07e11 follows the rigid pendulum within 0.5 % of L": (
+        ("test_dynamics", "test_stiff_pendulum_follows_rigid_compound_pendulum"), "PASS"),
+    "Elimination = Lagrange multipliers (1e-6 m), violation < 1e-8 m": (
+        ("test_dynamics", "test_elimination_and_multipliers_agree"), "PASS"),
+    "Spinning beam: axial extension within 2 % of 1.09545e-4 m": (
+        ("test_dynamics", "test_spinning_beam_axial_extension_within_2_percent"), "PASS"),
+    "Spinning beam: ω_s × 10 stable": (
+        ("test_dynamics", "test_spinning_beam_tenfold_speed_stays_stable"), "PASS"),
+    "Extremes: thesis scheme, L/h = 1e4, n = 64: error < 1 %": (
+        ("test_extremes", "test_thesis_scheme_does_not_lock_at_slenderness_1e4"), "PASS"),
+    "Extremes: exact integration, L/h = 1e4, n = 64: locks (error > 50 %)": (
+        ("test_extremes", "test_exact_integration_locks_at_slenderness_1e4"), "PASS"),
+    "Extremes: run over its time limit is killed and reported": (
+        ("test_sweep", "test_failures_are_rows_and_do_not_stop_the_others"), "PASS"),
+}
+
+
+def _axis_status(axis) -> str:
+    ok, why = axis.applicable()
+    if not ok:
+        return why
+    return "PASS" if axis.quick else QUICK_SKIPPED
+
+
+def _expected() -> dict:
+    """Every acceptance row of a quick report and its status."""
+    out = {k: v for k, (_, v) in AGREES.items()}
+    from ancf.references import specs
+    out.update({f"Speed–accuracy {name}: Pareto plot + cheapest-configuration table": "PASS"
+                for name in specs()})
+    out.update({f"Extremes: {a.title}": _axis_status(a) for a in AXES})
+    return out
+
+
+@pytest.fixture(scope="module")
+def quick(workdir):
+    """One quick report into the module's scratch folder (its own reference cache)."""
+    out = workdir / "reports"
+    p = subprocess.run([sys.executable, "-m", "ancf.reports", "--out", str(out), "--quick"],
+                       capture_output=True, text=True, timeout=900, env=dict(os.environ))
+    assert p.returncode == 0, p.stderr[-3000:]
+    return out
+
+
+def _statuses(root: Path) -> dict:
+    text = (root / "README.md").read_text().split("## Acceptance summary", 1)[1]
+    rows = re.findall(r"^\| (.+?) \| (.+?) \|$", text, flags=re.M)
+    return {k: v for k, v in rows if k != "check"}
+
+
+def test_every_chapter_is_written(quick):
+    for name in CHAPTERS + ("README.md", "schemas.md"):
+        assert (quick / name).stat().st_size > 200, name
+    assert "--quick" in (quick / "README.md").read_text()
+
+
+def test_every_figure_is_a_png_and_every_data_file_exists(quick):
+    seen = 0
+    for name in CHAPTERS:
+        text = (quick / name).read_text()
+        for fig in re.findall(r"\]\((figures/[^)]+)\)", text):
+            assert (quick / fig).read_bytes()[:8] == PNG, (name, fig)
+            seen += 1
+        for data in re.findall(r"`(data/[a-z0-9_]+\.csv)`", text):
+            assert (quick / data).stat().st_size > 0, (name, data)
+    assert seen >= 10
+    assert all(p.read_bytes()[:8] == PNG for p in (quick / "figures").glob("*.png"))
+
+
+def test_acceptance_statuses_agree_with_the_tests(quick):
+    assert _statuses(quick) == _expected()
+    for (module, name), _ in AGREES.values():
+        mod = importlib.import_module(module)
+        assert callable(getattr(mod, name, None)), f"{module}.{name} is gone: update AGREES"
+
+
+def _without_timing(text: str) -> str:
+    """Speed-accuracy Markdown without the CPU column and the calibration section."""
+    text = text.split("## Calibration of work to seconds", 1)[0]
+    out, drop = [], None
+    for line in text.splitlines():
+        cells = line.split(" | ") if line.startswith("| ") else None
+        if cells and "CPU ms" in line:
+            drop = [c.strip(" |") for c in cells].index("CPU ms")
+        elif not line.startswith("|"):
+            drop = None
+        if cells and drop is not None and not set(line) <= set("|-"):
+            cells = cells[:drop] + cells[drop + 1:]
+            line = " | ".join(cells)
+        out.append(line)
+    return "\n".join(out)
+
+
+def test_speed_accuracy_tables_are_reproducible(quick, workdir):
+    """A second quick speed-accuracy chapter (fresh sweeps, fresh timings): the same text
+    apart from the timing column and the calibration."""
+    from ancf.reports import output
+    from ancf.reports.speed_accuracy import speed_accuracy_chapter
+    before = output.settings()
+    try:
+        output.configure(workdir / "again", quick=True)
+        again, status = speed_accuracy_chapter()
+    finally:
+        output.configure(before.root, before.quick)
+    first = (quick / "speed_accuracy.md").read_text()
+    assert set(status.values()) == {"PASS"}
+    assert "CPU ms" in first and "## Calibration of work to seconds" in first
+    assert _without_timing(again) == _without_timing(first)
