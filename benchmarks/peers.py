@@ -20,7 +20,8 @@ fresh subprocesses, alternately, and compares their CPU time (user + system, fro
 JSON keys (stable): ``schema``, ``quick``, ``started``, ``command``, ``machine``,
 ``workers`` (per side: versions, thread environment, BLAS kernel), ``settings``,
 ``references`` (Reissner and shear-rigid elastica tips of the cantilever; per pendulum
-n, our DOP853 rtol 1e-10 final tip), and ``cases``: a list of rows ``{case, n, label,
+n and side the reference run with its final tip: ours DOP853 rtol 1e-10, Exudyn its
+generalised-alpha with h = 1e-4), and ``cases``: a list of rows ``{case, n, label,
 ours, exudyn, ratio}`` where ``case`` is ``cantilever``, ``pendulum-ga``,
 ``pendulum-dop853`` or ``process``, ``ratio`` = ours cpu_s / Exudyn cpu_s, and each side
 holds ``cpu_s`` (median), ``cpu_s_samples``, ``converged``, the run statistics the code
@@ -28,8 +29,8 @@ reports (ours: ``newton_iterations``, ``njev``, ``nlu``, ``nfev``, ``steps``; Ex
 ``newton_iterations``, ``jacobians``, ``steps``), the final ``tip_x``, ``tip_y``, and the
 accuracy: ``tip_error_m`` (cantilever: distance to the Reissner tip for ours, to the
 shear-rigid elastica tip for Exudyn; pendulum: largest distance over the 0.01 s samples
-to our DOP853 rtol 1e-10 tip, for both) and, for the pendulum,
-``energy_max_deviation_J``; ``process`` rows hold ``cpu_s`` and ``wall_s``.
+to our DOP853 rtol 1e-10 tip, for both; Exudyn also ``tip_error_self_m``, the same
+distance to its own h = 1e-4 run) and, for the pendulum, ``energy_max_deviation_J``; ``process`` rows hold ``cpu_s`` and ``wall_s``.
 """
 from __future__ import annotations
 
@@ -136,7 +137,7 @@ def final_tip(ans: dict) -> dict:
     """The answer with scalar tip_x / tip_y (last sample of a trajectory)."""
     last = {k: ans[k][-1] if isinstance(ans.get(k), list) else ans.get(k)
             for k in ("tip_x", "tip_y")}
-    return {k: v for k, v in ans.items() if k != "params"} | last
+    return ans | last
 
 
 def measure(workers: dict, case: str, n: int, repeats: int) -> dict:
@@ -176,11 +177,12 @@ def pendulum_rows(workers, case, ns, repeats, refs) -> list:
     rows = []
     for n in ns:
         if str(n) not in refs["pendulum"]:
-            refs["pendulum"][str(n)] = workers["ours"].ask("pendulum-ref", n)
+            refs["pendulum"][str(n)] = {s: workers[s].ask("pendulum-ref", n) for s in SIDES}
         ref = refs["pendulum"][str(n)]
         res = measure(workers, case, n, repeats)
         for side in SIDES:
-            res[side]["tip_error_m"] = tip_error(res[side], ref)
+            res[side]["tip_error_m"] = tip_error(res[side], ref["ours"])
+        res["exudyn"]["tip_error_self_m"] = tip_error(res["exudyn"], ref["exudyn"])
         rows.append(_row(case, n, label, res))
     return rows
 
@@ -243,7 +245,8 @@ def run_all(plan: dict, repeats: dict) -> dict:
     finally:
         for w in workers.values():
             w.close()
-    refs["pendulum"] = {n: final_tip(r) for n, r in refs["pendulum"].items()}
+    refs["pendulum"] = {n: {s: final_tip(r) for s, r in d.items()}
+                        for n, d in refs["pendulum"].items()}
     return {"workers": infos, "references": refs, "cases": cases}
 
 

@@ -22,7 +22,8 @@ def fake_result() -> dict:
             "ours": _side(0.1, steps=1000, newton_iterations=2000, energy_max_deviation_J=0.01,
                           tip_error_m=5e-5),
             "exudyn": _side(0.4, steps=1000, newton_iterations=4975, jacobians=1,
-                            energy_max_deviation_J=0.02, tip_error_m=0.07)}
+                            energy_max_deviation_J=0.02, tip_error_m=0.07,
+                            tip_error_self_m=3e-6)}
     proc = {"case": "process", "n": 64, "label": "whole process", "ratio": 6.0, "ratio_wall": 5.0,
             "ours": {"command": "ancf run", "cpu_s": 0.6, "wall_s": 1.0},
             "exudyn": {"command": "python -m x", "cpu_s": 0.1, "wall_s": 0.2}}
@@ -74,7 +75,7 @@ def test_table_rows_carry_the_ratios():
     assert "| whole process, n = 64 | 6 |" in md
     assert "| 8 | 20 ms | 10 ms | **2** | 58 / – / – | 40 / 40 |" in md
     assert "| 4 | 100 ms | 400 ms | **0.25** | 1000 / 2000 / – / – | 1000 / 4975 / 1 |" in md
-    assert "| 5.00e-05 | yes | 7.00e-02 |" in md
+    assert "| 5.00e-05 | yes | 3.00e-06 | 7.00e-02 |" in md
     assert "1.00e-01 m apart" in md
 
 
