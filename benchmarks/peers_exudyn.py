@@ -75,10 +75,13 @@ def _settings(sparse: bool = True):
     return s
 
 
-def _stats(solver) -> dict:
+def _stats(solver, newton) -> dict:
+    """Run statistics and the Newton settings in force."""
     it = solver.it
     return {"newton_iterations": int(it.newtonStepsCount),
-            "jacobians": int(it.newtonJacobiCount), "steps": int(it.currentStepIndex) - 1}
+            "jacobians": int(it.newtonJacobiCount), "steps": int(it.currentStepIndex) - 1,
+            "modified_newton": bool(newton.useModifiedNewton),
+            "rel_tol": newton.relativeTolerance, "abs_tol": newton.absoluteTolerance}
 
 
 def cantilever(n: int, rel_tol: float | None = None, load_steps: int = 10) -> dict:
@@ -100,7 +103,7 @@ def cantilever(n: int, rel_tol: float | None = None, load_steps: int = 10) -> di
     cpu = time.process_time() - t0
     x, y = mbs.GetNodeOutput(nodes[-1], exu.OutputVariableType.Position)[:2]
     return {"cpu_s": cpu, "converged": bool(ok), "tip_x": float(x), "tip_y": float(y),
-            "rel_tol": rel_tol, "load_steps": load_steps, **_stats(solver)}
+            "load_steps": load_steps, **_stats(solver, s.staticSolver.newton)}
 
 
 def pendulum(n: int, h: float = 1e-3, spectral_radius: float = 0.9) -> dict:
@@ -133,7 +136,7 @@ def pendulum(n: int, h: float = 1e-3, spectral_radius: float = 0.9) -> dict:
     return {"cpu_s": cpu, "converged": bool(ok), "tip_x": q[:, -1, 0].tolist(),
             "tip_y": q[:, -1, 1].tolist(), "energy_max_deviation_J": float(
                 np.max(np.abs(energy - energy[0]))), "spectral_radius": spectral_radius,
-            "h": h, **_stats(solver)}
+            "h": h, **_stats(solver, ti.newton)}
 
 
 def _sampled(mbs, nodes, sensors):

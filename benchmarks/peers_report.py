@@ -154,7 +154,8 @@ def settings_lines(result) -> str:
     s = result["settings"]
     lines = [f"- **{side} {case}**: {text}" for side in ("ours", "exudyn")
              for case, text in s[side].items()]
-    lines.append(f"- **repeats** after one warm-up per side: {s['repeats']}")
+    reps = ", ".join(f"{case} {k}" for case, k in s["repeats"].items())
+    lines.append(f"- **repeats** after one warm-up per side: {reps}")
     return "\n".join(lines)
 
 
