@@ -17,8 +17,9 @@ the CPU time of its solve call.  The whole-process row runs ``ancf run cantileve
 fresh subprocesses, alternately, and compares their CPU time (user + system, from
 ``getrusage``); their wall times are recorded too.
 
-JSON keys (stable): ``schema``, ``quick``, ``started``, ``command``, ``machine``,
-``workers`` (per side: versions, thread environment, BLAS kernel), ``settings``,
+JSON keys (stable): ``schema``, ``quick``, ``started``, ``command``,
+``machine`` (with the 1 / 5 / 15 min load average at the start: the machine may be
+shared), ``workers`` (per side: versions, thread environment, BLAS kernel), ``settings``,
 ``references`` (Reissner and shear-rigid elastica tips of the cantilever; per pendulum
 n and side the reference run with its final tip: ours DOP853 rtol 1e-10, Exudyn its
 generalised-alpha with h = 1e-4), and ``cases``: a list of rows ``{case, n, label,
@@ -123,7 +124,8 @@ def machine() -> dict:
     return {"cpu_model": cpu, "logical_cores": os.cpu_count(),
             "usable_cores": len(os.sched_getaffinity(0)),
             "os": f"{platform.system()} {platform.release()}",
-            "python": f"{platform.python_implementation()} {platform.python_version()}"}
+            "python": f"{platform.python_implementation()} {platform.python_version()}",
+            "load_average_at_start": " / ".join(f"{x:.2f}" for x in os.getloadavg())}
 
 
 def tip_error(ans: dict, ref: dict) -> float | None:
