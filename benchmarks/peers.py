@@ -23,8 +23,9 @@ shared), ``workers`` (per side: versions, thread environment, BLAS kernel), ``se
 ``references`` (Reissner and shear-rigid elastica tips of the cantilever; per pendulum
 n and side the reference run with its final tip: ours DOP853 rtol 1e-10, Exudyn its
 generalised-alpha with h = 1e-4), and ``cases``: a list of rows ``{case, n, label,
-ours, exudyn, ratio}`` where ``case`` is ``cantilever``, ``pendulum-ga``,
-``pendulum-dop853`` or ``process``, ``ratio`` = ours cpu_s / Exudyn cpu_s, and each side
+ours, exudyn, ratio, ratio_paired}`` where ``case`` is ``cantilever``, ``pendulum-ga``,
+``pendulum-dop853`` or ``process``, ``ratio`` = ours cpu_s / Exudyn cpu_s (medians),
+``ratio_paired`` the ratio of each alternating pair of samples, and each side
 holds ``cpu_s`` (median), ``cpu_s_samples``, ``converged``, the run statistics the code
 reports (ours: ``newton_iterations``, ``njev``, ``nlu``, ``nfev``, ``steps``; Exudyn:
 ``newton_iterations``, ``jacobians``, ``steps``, and its Newton settings
@@ -32,7 +33,9 @@ reports (ours: ``newton_iterations``, ``njev``, ``nlu``, ``nfev``, ``steps``; Ex
 accuracy: ``tip_error_m`` (cantilever: distance to the Reissner tip for ours, to the
 shear-rigid elastica tip for Exudyn; pendulum: largest distance over the 0.01 s samples
 to our DOP853 rtol 1e-10 tip, for both; Exudyn also ``tip_error_self_m``, the same
-distance to its own h = 1e-4 run) and, for the pendulum, ``energy_max_deviation_J``; ``process`` rows hold ``cpu_s`` and ``wall_s``.
+distance to its own h = 1e-4 run) and, for the pendulum, ``energy_max_deviation_J``;
+``process`` rows hold ``command``, ``cpu_s``, ``wall_s``, their samples,
+``exit_codes`` and ``ratio_wall``.
 """
 from __future__ import annotations
 
@@ -58,7 +61,7 @@ SIDES = ("ours", "exudyn")
 FULL = {"cantilever": (8, 16, 64, 256, 1024), "pendulum-ga": (4, 16, 64, 128),
         "pendulum-dop853": (4,), "process": (64,)}
 QUICK = {"cantilever": (8, 16), "pendulum-ga": (4,), "pendulum-dop853": (4,), "process": (64,)}
-REPEATS = {"cantilever": 5, "pendulum-ga": 3, "pendulum-dop853": 3, "process": 5}
+REPEATS = {"cantilever": 7, "pendulum-ga": 5, "pendulum-dop853": 3, "process": 7}
 QUICK_REPEATS = 2
 THREAD_ENV = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
 UNSET_ENV = ("OPENBLAS_CORETYPE", "OPENBLAS_L2_SIZE")
@@ -191,10 +194,17 @@ def pendulum_rows(workers, case, ns, repeats, refs) -> list:
     return rows
 
 
+def _paired(sides: dict) -> list:
+    """Ratio of each alternating pair of samples (its spread shows the noise)."""
+    pairs = zip(sides["ours"]["cpu_s_samples"], sides["exudyn"]["cpu_s_samples"])
+    return [r for r in (_ratio(a, b) for a, b in pairs) if r is not None]
+
+
 def _row(case, n, label, res) -> dict:
     sides = {s: final_tip(res[s]) for s in SIDES}
     return {"case": case, "n": n, "label": label, **sides,
-            "ratio": _ratio(sides["ours"].get("cpu_s"), sides["exudyn"].get("cpu_s"))}
+            "ratio": _ratio(sides["ours"].get("cpu_s"), sides["exudyn"].get("cpu_s")),
+            "ratio_paired": _paired(sides)}
 
 
 def process_commands(n: int) -> dict:
@@ -227,10 +237,12 @@ def process_rows(env, ns, repeats) -> list:
                      "cpu_s": _median([r["cpu_s"] for r in runs[s]]),
                      "wall_s": _median([r["wall_s"] for r in runs[s]]),
                      "cpu_s_samples": [r["cpu_s"] for r in runs[s]],
+                     "wall_s_samples": [r["wall_s"] for r in runs[s]],
                      "exit_codes": sorted({r["exit_code"] for r in runs[s]})} for s in SIDES}
         rows.append({"case": "process", "n": n, "label": "whole process, cantilever Model 1, "
                      "imports included (CPU of the subprocess)", **sides,
                      "ratio": _ratio(sides["ours"]["cpu_s"], sides["exudyn"]["cpu_s"]),
+                     "ratio_paired": _paired(sides),
                      "ratio_wall": _ratio(sides["ours"]["wall_s"], sides["exudyn"]["wall_s"])})
     return rows
 

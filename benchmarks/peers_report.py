@@ -29,6 +29,12 @@ def fmt_ratio(r) -> str:
     return DASH if r is None else f"{r:.3g}"
 
 
+def fmt_spread(row) -> str:
+    """Range of the paired ratios of a row."""
+    rs = row.get("ratio_paired") or []
+    return DASH if not rs else f"{min(rs):.3g}–{max(rs):.3g}"
+
+
 def md_table(header, rows) -> str:
     out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
     return "\n".join(out + ["| " + " | ".join(str(c) for c in r) + " |" for r in rows])
@@ -66,12 +72,12 @@ def ratio_table(result) -> str:
 
 def static_table(result) -> str:
     rows = [[r["n"], _cpu(r["ours"]), _cpu(r["exudyn"]), f"**{fmt_ratio(r['ratio'])}**",
-             _counts(r["ours"], ("newton_iterations", "njev", "nlu")),
+             fmt_spread(r), _counts(r["ours"], ("newton_iterations", "njev", "nlu")),
              _counts(r["exudyn"], ("newton_iterations", "jacobians")),
              _tip(r["ours"]), fmt(r["ours"].get("tip_error_m"), ".2e"),
              _tip(r["exudyn"]), fmt(r["exudyn"].get("tip_error_m"), ".2e"),
              fmt(r["exudyn"].get("rel_tol"), ".0e")] for r in _rows(result, "cantilever")]
-    return md_table(["n", "ours CPU", "Exudyn CPU", "ours / Exudyn",
+    return md_table(["n", "ours CPU", "Exudyn CPU", "ours / Exudyn", "paired range",
                      "ours Newton it. / tangents / LU", "Exudyn Newton it. / Jacobians (= LU)",
                      "ours tip (x, y) [m]", "ours − Reissner [m]", "Exudyn tip (x, y) [m]",
                      "Exudyn − elastica [m]", "Exudyn relTol"], rows)
@@ -79,14 +85,14 @@ def static_table(result) -> str:
 
 def pendulum_table(result, case) -> str:
     rows = [[r["n"], _cpu(r["ours"]), _cpu(r["exudyn"]), f"**{fmt_ratio(r['ratio'])}**",
-             _counts(r["ours"], ("steps", "newton_iterations", "njev", "nlu")),
+             fmt_spread(r), _counts(r["ours"], ("steps", "newton_iterations", "njev", "nlu")),
              _counts(r["exudyn"], ("steps", "newton_iterations", "jacobians")),
              fmt(r["ours"].get("energy_max_deviation_J"), ".3e"),
              fmt(r["exudyn"].get("energy_max_deviation_J"), ".3e"),
              fmt(r["ours"].get("tip_error_m"), ".2e"), _target(r["ours"].get("tip_error_m")),
              fmt(r["exudyn"].get("tip_error_self_m"), ".2e"),
              fmt(r["exudyn"].get("tip_error_m"), ".2e")] for r in _rows(result, case)]
-    return md_table(["n", "ours CPU", "Exudyn CPU", "ours / Exudyn",
+    return md_table(["n", "ours CPU", "Exudyn CPU", "ours / Exudyn", "paired range",
                      "ours steps / Newton it. / tangents / LU",
                      "Exudyn steps / Newton it. / Jacobians (= LU)",
                      "ours energy dev. [J]", "Exudyn energy dev. [J]",
@@ -102,11 +108,11 @@ def _target(err) -> str:
 def process_table(result) -> str:
     rows = [[r["n"], f"`{r['ours']['command']}`", f"`{r['exudyn']['command']}`",
              fmt_time(r["ours"]["cpu_s"]), fmt_time(r["exudyn"]["cpu_s"]),
-             f"**{fmt_ratio(r['ratio'])}**", fmt_time(r["ours"]["wall_s"]),
+             f"**{fmt_ratio(r['ratio'])}**", fmt_spread(r), fmt_time(r["ours"]["wall_s"]),
              fmt_time(r["exudyn"]["wall_s"]), fmt_ratio(r["ratio_wall"])]
             for r in _rows(result, "process")]
     return md_table(["n", "ours", "Exudyn", "ours CPU", "Exudyn CPU", "ours / Exudyn (CPU)",
-                     "ours wall", "Exudyn wall", "ours / Exudyn (wall)"], rows)
+                     "paired range", "ours wall", "Exudyn wall", "ours / Exudyn (wall)"], rows)
 
 
 def model_note(result) -> str:
@@ -166,8 +172,10 @@ def render(result, json_name: str = "peers.json") -> str:
         f"raw numbers in `{json_name}`; do not edit by hand. Ours = the "
         "scene's own `cpu_time_s` (model build and stability check included); Exudyn = "
         "`time.process_time` around its solve call; each code in its own long-lived process, "
-        "one BLAS thread, warmed up, cases alternating ours / Exudyn, medians. A ratio below 1 "
-        "means ours is faster. Counts are per run; – : not reported by that code.",
+        "one BLAS thread, warmed up, cases alternating ours / Exudyn, medians; the paired range "
+        "is the smallest and largest ratio of one alternating pair (the noise of a shared "
+        "machine). A ratio below 1 means ours is faster. Counts are per run; – : not "
+        "reported by that code.",
         "## Ratio ours / Exudyn (CPU time)", ratio_table(result),
         "## Static cantilever Model 1 (L = 2 m, b = h = 0.1 m, E = 2.07e11 Pa, ν = 0.3, "
         "F = −5e8 h³ N, 10 load steps)", static_table(result),
