@@ -2,11 +2,14 @@
 table ours / Exudyn per case and n, the details of each case (CPU time, Newton
 iterations, Jacobians / factorisations where each code reports them, accuracy), the
 model differences, settings and machine.  Everything is generated from the result
-dict that is also written as JSON (keys documented in :mod:`benchmarks.peers`).
+dict that is also written as JSON (keys documented in :mod:`benchmarks.peers`);
+``python -m benchmarks.peers_report reports/benchmarks/peers.json`` writes the Markdown
+again from a saved JSON.
 """
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
 
 TIP_TARGET_M = 1e-4          # issue 11: pendulum tip within 1e-4 m of our DOP853 rtol 1e-10
@@ -150,8 +153,10 @@ def machine_lines(result) -> str:
     for side, info in result["workers"].items():
         versions = ", ".join(f"{k} {info[k]}" for k in ("python", "numpy", "scipy", "exudyn")
                              if k in info)
-        env = ", ".join(f"{k}={v}" for k, v in info.get("env", {}).items())
-        kernel = info.get("blas", {}).get("kernel")
+        env = ", ".join(f"{k}={'unset' if v is None else v}"
+                        for k, v in info.get("env", {}).items())
+        kernel = info.get("blas", {}).get("kernel", "not recorded")
+        kernel = ", ".join(kernel) if isinstance(kernel, list) else kernel
         lines.append(f"- **{side} worker**: {versions}; environment {env}; BLAS kernel {kernel}")
     return "\n".join(lines)
 
@@ -197,3 +202,14 @@ def write(result, out_dir: Path, stem: str) -> list:
     js.write_text(json.dumps(result, indent=1) + "\n")
     md.write_text(render(result, js.name))
     return [md, js]
+
+
+def main(argv=None) -> int:
+    """``python -m benchmarks.peers_report PEERS.json``: the Markdown again, beside it."""
+    js = Path((sys.argv[1:] if argv is None else argv)[0])
+    js.with_suffix(".md").write_text(render(json.loads(js.read_text()), js.name))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -81,10 +81,14 @@ def test_table_rows_carry_the_ratios():
     assert "1.00e-01 m apart" in md
 
 
-def test_write_gives_markdown_and_json(tmp_path):
+def test_write_gives_markdown_and_json_and_renders_again(tmp_path):
     md, js = peers_report.write(fake_result(), tmp_path, "peers")
     assert json.loads(js.read_text())["cases"][0]["ratio"] == 2.0
-    assert "`peers.json`" in md.read_text()
+    text = md.read_text()
+    assert "`peers.json`" in text
+    md.unlink()
+    assert peers_report.main([str(js)]) == 0
+    assert md.read_text() == text
 
 
 @pytest.fixture
