@@ -71,8 +71,9 @@ def blas_info() -> dict:
         from threadpoolctl import threadpool_info
     except ImportError:
         return {"kernel": "threadpoolctl not installed: kernel not recorded"}
-    libs = [{k: d.get(k) for k in ("internal_api", "version", "architecture", "num_threads",
-                                   "filepath")} for d in threadpool_info()]
+    libs = [{"library": os.path.basename(d.get("filepath") or ""),
+             **{k: d.get(k) for k in ("internal_api", "version", "architecture", "num_threads")}}
+            for d in threadpool_info()]
     return {"kernel": sorted({str(d["architecture"]) for d in libs}), "libraries": libs}
 
 
