@@ -61,7 +61,7 @@ SIDES = ("ours", "exudyn")
 FULL = {"cantilever": (8, 16, 64, 256, 1024), "pendulum-ga": (4, 16, 64, 128),
         "pendulum-dop853": (4,), "process": (64,)}
 QUICK = {"cantilever": (8, 16), "pendulum-ga": (4,), "pendulum-dop853": (4,), "process": (64,)}
-REPEATS = {"cantilever": 7, "pendulum-ga": 5, "pendulum-dop853": 3, "process": 7}
+REPEATS = {"cantilever": 7, "pendulum-ga": 7, "pendulum-dop853": 5, "process": 7}
 QUICK_REPEATS = 2
 THREAD_ENV = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
 UNSET_ENV = ("OPENBLAS_CORETYPE", "OPENBLAS_L2_SIZE")
