@@ -75,9 +75,9 @@ def test_static_counts_prefer_the_solver_counters_and_fall_back():
     old = counts(p, {"newton_iterations": 7, "negative_tangent_eigenvalues": 0})
     assert old["tangents"] == 8 and old["factorizations"] == 7   # + the stability tangent
     assert old["kernel_points"] == 8 * 8 * 8 * 4 * 3              # d^2 x n x points
-    assert old["eigen_dofs3"] == 20 ** 3
+    assert old["stability_dofs"] == 20                           # inertia check: linear in size
     new = counts(p, {"newton_iterations": 7, "tangent_evaluations": 5, "factorizations": 2})
-    assert (new["tangents"], new["factorizations"], new["eigen_dofs3"]) == (5, 2, 0)
+    assert (new["tangents"], new["factorizations"], new["stability_dofs"]) == (5, 2, 0)
     assert work(new) < work(old)
     assert counts(p, {"tip_x": 1.0}) is None and np.isnan(work(None))
 
@@ -89,8 +89,11 @@ def test_dynamic_counts_per_integrator():
     ga = counts({**p, "integrator": "generalized-alpha"}, {**res, "njev": 30})
     assert (rk["forces"], rk["tangents"], rk["factorizations"], rk["steps"]) == (30, 3, 4, 10)
     assert (ga["forces"], ga["tangents"]) == (0, 30)             # every force call has its K
+    mod = counts({**p, "integrator": "generalized-alpha"}, res)  # modified Newton: K kept
+    assert (mod["forces"], mod["tangents"]) == (27, 3)
     assert rk["kernel_points"] == (30 * 12 + 3 * 144) * 2 * 12
-    assert rk["kind"] == "dynamic" and set(WEIGHTS) == {"static", "dynamic"}
+    assert rk["kind"] == "dynamic" and ga["kind"] == "alpha"
+    assert set(WEIGHTS) == {"static", "dynamic", "alpha"}
 
 
 def test_calibration_recovers_known_costs():
