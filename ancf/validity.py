@@ -11,6 +11,8 @@ coordinates ``q0`` restricted by each group's DOF map.
 """
 from __future__ import annotations
 
+import weakref
+
 import numpy as np
 
 from ancf.quadrature import gauss01
@@ -19,15 +21,24 @@ N_AXIAL, N_SECTION = 3, 3  # check points per element: 3 Gauss points along x x 
 AREA_FACTOR = 2.0  # det F beyond [1 / AREA_FACTOR, AREA_FACTOR]: strains far past the material's range
 
 
+_BASES = weakref.WeakKeyDictionary()  # element -> shape-function derivatives at the check points
+
+
+def _check_basis(el):
+    """d S / dx and d S / dy (nel, npts, nshape) at the check points, evaluated once per element."""
+    if el not in _BASES:
+        xi, _ = gauss01(N_AXIAL)
+        yq, _ = el.section.rule(N_SECTION)
+        X = (xi[None, :, None] * el.lengths[:, None, None]) * np.ones((1, 1, yq.size))
+        Y = np.broadcast_to(yq[None, None, :], X.shape)
+        L = np.broadcast_to(el.lengths[:, None, None], X.shape)
+        _BASES[el] = [el.shapes[d](X, Y, L).reshape(el.nel, -1, el.nshape) for d in ("x", "y")]
+    return _BASES[el]
+
+
 def _gradients(el, E):
     """r_x, r_y (..., nel, npts, 2) of element coordinates E (..., nel, nshape, 2)."""
-    xi, _ = gauss01(N_AXIAL)
-    yq, _ = el.section.rule(N_SECTION)
-    X = (xi[None, :, None] * el.lengths[:, None, None]) * np.ones((1, 1, yq.size))
-    Y = np.broadcast_to(yq[None, None, :], X.shape)
-    L = np.broadcast_to(el.lengths[:, None, None], X.shape)
-    B = [el.shapes[d](X, Y, L).reshape(el.nel, -1, el.nshape) for d in ("x", "y")]
-    return [np.einsum("eqk,...ekd->...eqd", b, E) for b in B]
+    return [np.einsum("eqk,...ekd->...eqd", b, E) for b in _check_basis(el)]
 
 
 def _det(rx, ry):

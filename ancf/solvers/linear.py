@@ -34,10 +34,8 @@ class Singular(Exception):
 
 
 class _BandLU:
-    def __init__(self, data, kl):
-        if not np.all(np.isfinite(data)):
-            raise Singular("non-finite matrix entries")
-        self.AB, self.kl = np.array(data), kl
+    def __init__(self, data, kl, overwrite=False):
+        self.AB, self.kl = (data if overwrite else np.array(data)), kl
         self.piv = np.empty(data.shape[0], dtype=np.int64)
         k = banded.lu(self.AB, kl, self.piv, True)
         if k:
@@ -70,10 +68,12 @@ class _SparseLU:
         return x
 
 
-def factor(pattern, data):
-    """LU of the matrix stored as ``data`` in ``pattern``'s storage."""
+def factor(pattern, data, overwrite=False):
+    """LU of the matrix stored as ``data`` in ``pattern``'s storage (band storage is
+    factored in place with ``overwrite``).  Non-finite entries show as a non-finite
+    solution."""
     if pattern.band:
-        return _BandLU(data, pattern.kl)
+        return _BandLU(data, pattern.kl, overwrite)
     return _SparseLU(pattern.as_csr(data))
 
 

@@ -104,7 +104,7 @@ class _Newton:
                 return z, True, it, ""
             try:
                 self.factorizations += 1
-                dz = factor(self.pattern, K).solve(r)
+                dz = factor(self.pattern, K, overwrite=True).solve(r)
             except Singular as exc:
                 return z, False, it, f"singular tangent stiffness ({exc})"
             z = z + dz
