@@ -11,6 +11,7 @@ import pandas as pd
 import pytest
 
 from ancf import extremes
+from ancf.reports.extremes import axis_map
 from ancf.sweep import run_sweep
 
 ISSUE_AXES = {"slenderness", "poisson", "elements", "load", "spinning", "penalty", "nu_s",
@@ -127,5 +128,5 @@ def test_axis_map_marks_cells():
          "status": "not-converged", "error": float("nan"),
          "message": "No convergence: x; load factor reached 0.1000"}])
     df["diagnosis"] = [extremes.diagnosis(r) for _, r in df.iterrows()]
-    m = extremes.axis_map(ax, df)
+    m = axis_map(ax, df)
     assert m.iloc[0, 1] == "✓ 1.0e-03" and m.iloc[0, 2].startswith("⚠ Newton diverged")

@@ -12,7 +12,7 @@ one_blas_thread()  # before numpy: reproducible numbers and single-thread CPU ti
 import pandas as pd  # noqa: E402
 
 from analytic import timoshenko
-from ancf.extremes import extremes_chapter
+from ancf.reports.extremes import extremes_chapter
 from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
 from ancf.reports import studies, tables
