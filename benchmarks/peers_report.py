@@ -233,9 +233,10 @@ def write(result, out_dir: Path, stem: str) -> list:
 
 
 def main(argv=None) -> int:
-    """``python -m benchmarks.peers_report PEERS.json``: the Markdown again, beside it."""
+    """``python -m benchmarks.peers_report PEERS.json``: the Markdown again, beside it
+    (and the before/after table for ``peers.json`` when ``peers_before.json`` is there)."""
     js = Path((sys.argv[1:] if argv is None else argv)[0])
-    js.with_suffix(".md").write_text(render(json.loads(js.read_text()), js.name))
+    write(json.loads(js.read_text()), js.parent, js.stem)
     return 0
 
 
