@@ -23,6 +23,7 @@ test: $(STAMP)
 bench: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(PY) -m pytest benchmarks --benchmark-enable --benchmark-only --benchmark-json=reports/benchmarks/benchmark.json
 	$(PY) -m benchmarks.summarize
+	OPENBLAS_NUM_THREADS=1 $(PY) -m benchmarks.core_profile
 	$(PY) -m benchmarks.peers
 
 clean:

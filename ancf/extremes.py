@@ -279,6 +279,11 @@ def diagnosis(row) -> str:
         return "worker crashed"
     if "negative tangent eigenvalue" in low:
         return "unstable equilibrium"
+    m = re.search(r"from t = ([0-9.eE+-]+) s on: element \d+ of \d+ is inverted", msg)
+    if m:
+        return f"element inverted at t = {m.group(1)} s"
+    if "is inverted" in low:
+        return "inverted element"
     if "singular" in low:
         return "singular tangent"
     if "non-finite" in low or "not finite" in low or "nan" in low.split():

@@ -279,6 +279,13 @@ def render(data, json_name: str, out_dir: Path = DEFAULT_OUT.parent) -> str:
                   "`ratio lin/OS` = median(linear) / median(Omar–Shabana); the paired ratio is the "
                   "median of the per-round ratios.", "", ratios, ""]
     parts += dynamics_sections(benches, out_dir)
+    parts += ["## Also in `make bench`", "",
+              "- [core_profile.md](core_profile.md): one Newton iteration split into gather, kernel, "
+              "scatter, factorisation and solve for 64-4096 elements, scaling exponents, the "
+              "stability check's share (`python -m benchmarks.core_profile`).",
+              "- [peers.md](peers.md): side by side with Exudyn, and "
+              "[peers_before_after.md](peers_before_after.md): the ratios before and after the "
+              "compiled core (`python -m benchmarks.peers`, optional extra `peers`).", ""]
     parts += ["## All benchmarks", "", all_benchmarks_table(benches), "",
               "## Machine", "", machine_section(data), ""]
     return "\n".join(parts)

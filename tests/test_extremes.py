@@ -114,6 +114,10 @@ def test_every_issue_axis_is_declared_and_missing_scenes_are_said():
     ("diverged at step 17: energy blow-up", "not-converged", "energy blow-up"),
     ("step size collapse at t = 0.1", "not-converged", "step size collapse"),
     ("converged", "ok", "ok"),
+    ("Not trusted from t = 0.74 s on: element 1 of 4 is inverted (det of the deformation "
+     "gradient -0.2 <= 0 at a quadrature point)", "not-converged", "element inverted at t = 0.74 s"),
+    ("No convergence to a physical equilibrium: element 3 of 4 is inverted (det -1.19)",
+     "not-converged", "inverted element"),
 ])
 def test_diagnosis_labels(message, status, expected):
     assert extremes.diagnosis({"status": status, "message": message}) == expected

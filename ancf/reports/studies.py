@@ -196,12 +196,13 @@ def _os_cell_diff(table, n, clamp, spec, skip_x=False):
 
 
 def newton_iteration_time_ratio(n=16, repeats=30):
-    """Time of one Newton iteration (tangent assembly + sparse solve), linear / Omar-Shabana,
-    measured side by side (interleaved) in one run; median over repeats."""
+    """Time of one Newton iteration as the static solver does it (one compiled assembly of
+    gradient and band tangent, band LU and solve), linear / Omar-Shabana, measured side by
+    side (interleaved) in one run; median over repeats."""
     progress("timing: Newton iteration, linear vs Omar-Shabana")
-    import scipy.sparse.linalg as spla
-
     from ancf.constraints import Elimination
+    from ancf.pattern import ReducedPattern, assemble_compiled
+    from ancf.solvers.linear import factor
     times = {}
     setups = {}
     for el in ("linear", "omar-shabana"):
@@ -210,15 +211,18 @@ def newton_iteration_time_ratio(n=16, repeats=30):
         for slot in ("r", "r_y"):
             for k in (0, 1):
                 elim.fix(mesh.dof(0, slot, k), q0[mesh.dof(0, slot, k)])
-        T, _, _ = elim.build()
+        T, g0, _ = elim.build()
+        pat = ReducedPattern(asm.n_dofs, [asm.groups[0].dofmap], T)
         rng = np.random.default_rng(0)
-        setups[el] = (asm, T, q0 + 1e-3 * rng.standard_normal(q0.size))
+        z = pat.restrict(q0 + 1e-3 * rng.standard_normal(q0.size))
+        setups[el] = (pat, pat.compiled(asm), g0, z)
         times[el] = []
     for _ in range(repeats):
-        for el, (asm, T, q) in setups.items():
+        for el, (pat, mdl, g0, z) in setups.items():
             t0 = time.perf_counter()
-            g, K = asm.gradient_tangent(q)
-            spla.splu((T.T @ K @ T).tocsc()).solve(T.T @ g)
+            grad, K = np.zeros(pat.n), pat.zeros_matrix()
+            assemble_compiled(z, g0, mdl, True, grad, K)
+            factor(pat, K, overwrite=True).solve(grad)
             times[el].append(time.perf_counter() - t0)
     med = {el: float(np.median(v)) for el, v in times.items()}
     return {"n_elements": n, "linear_s": med["linear"], "omar_shabana_s": med["omar-shabana"],
