@@ -266,7 +266,8 @@ _LOAD_RE = re.compile(r"load factor reached ([0-9.eE+-]+)")
 
 
 def diagnosis(row) -> str:
-    """Short classification of a row: 'ok' or why it stopped."""
+    """Short classification of a row: 'ok' or why it stopped (the run's own failure first;
+    an inverted element found afterwards only where the run itself finished)."""
     status, msg = str(row.get("status")), str(row.get("message") or "")
     low = msg.lower()
     if status == "ok":
@@ -279,11 +280,6 @@ def diagnosis(row) -> str:
         return "worker crashed"
     if "negative tangent eigenvalue" in low:
         return "unstable equilibrium"
-    m = re.search(r"from t = ([0-9.eE+-]+) s on: element \d+ of \d+ is inverted", msg)
-    if m:
-        return f"element inverted at t = {m.group(1)} s"
-    if "is inverted" in low:
-        return "inverted element"
     if "singular" in low:
         return "singular tangent"
     if "non-finite" in low or "not finite" in low or "nan" in low.split():
@@ -300,6 +296,11 @@ def diagnosis(row) -> str:
     m = _LOAD_RE.search(msg)
     if m:
         return f"Newton diverged at load factor {float(m.group(1)):.3g}"
+    m = re.search(r"from t = ([0-9.eE+-]+) s on: element \d+ of \d+ is inverted", msg)
+    if m:
+        return f"element inverted at t = {m.group(1)} s"
+    if "is inverted" in low:
+        return "inverted element"
     if status == "failed":
         return "error: " + msg[:60]
     return "not converged: " + msg[:60]
