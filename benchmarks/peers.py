@@ -53,6 +53,7 @@ import sys
 import time
 from pathlib import Path
 
+from ancf.machine import cpu_model
 from benchmarks import peers_report
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -118,12 +119,7 @@ class Worker:
 
 
 def machine() -> dict:
-    cpu = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as fh:
-            cpu = next(ln.split(":", 1)[1].strip() for ln in fh if ln.startswith("model name"))
-    except (OSError, StopIteration):
-        pass
+    cpu = cpu_model()
     return {"cpu_model": cpu, "logical_cores": os.cpu_count(),
             "usable_cores": len(os.sched_getaffinity(0)),
             "os": f"{platform.system()} {platform.release()}",

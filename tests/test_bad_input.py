@@ -204,9 +204,12 @@ def test_numerical_warnings_become_one_line():
 
 
 def test_a_scene_at_the_floating_point_limit_reports_one_line(capsys):
+    """At E = 1e-300 the compiled Newton raises no numpy warning at all; the run says why it
+    stopped, and at most one numerical line is added, never printed as noise."""
     out, _ = SCENES["axial-bar"].execute({"E": "1e-300"})
+    assert not out["converged"] and "not finite" in out["message"]
     assert [w for w in out["warnings"] if w.startswith("numerical: ")] == out["warnings"]
-    assert len(out["warnings"]) == 1 and capsys.readouterr().err == ""
+    assert len(out["warnings"]) <= 1 and capsys.readouterr().err == ""
 
 
 # --------------------------------------------------------------- 12. description

@@ -231,12 +231,9 @@ def newton_iteration_time_ratio(n=16, repeats=30):
 
 def machine() -> str:
     import os
-    cpu = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as fh:
-            cpu = next(line.split(":", 1)[1].strip() for line in fh if line.startswith("model name"))
-    except (OSError, StopIteration):
-        pass
+
+    from ancf.machine import cpu_model
+    cpu = cpu_model()
     return (f"{cpu}, {os.cpu_count()} cores, {platform.system()} {platform.release()}, "
             f"Python {platform.python_version()}, numpy {np.__version__}")
 

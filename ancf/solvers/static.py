@@ -12,7 +12,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from numba import njit
+
 from ancf.pattern import ReducedPattern, assemble_compiled
+from ancf.solvers import banded
 from ancf.solvers.linear import Singular, factor, stability
 
 
@@ -54,6 +57,43 @@ def _roundoff_floor(k_inf: float, z) -> float:
     return 10.0 * np.finfo(float).eps * (1.0 + float(np.abs(z).max(initial=0.0))) * k_inf
 
 
+@njit(cache=True)
+def _newton_band(z, g, mdl, kl, lam, Qr, tol, xtol, max_iter, hist):
+    """The iterations of :meth:`_Newton.run` in one compiled call, for a planar
+    Green-strain group on band storage without force terms (tol = rtol |Qk|).
+    Returns (z, status, iterations, |r|, factorisations); status 0 converged, 1 residual
+    not finite, 2 singular tangent, 3 out of iterations; |r| per iteration in hist."""
+    n = z.size
+    grad, K = np.zeros(n), np.zeros((n, 3 * kl + 1))
+    piv = np.empty(n, dtype=np.int64)
+    small, facts, rn = False, 0, 0.0
+    for it in range(1, max_iter + 1):
+        assemble_compiled(z, g, mdl, True, grad, K)
+        r = lam * Qr - grad
+        rn = np.sqrt(np.dot(r, r))
+        hist[it - 1] = rn
+        if not np.isfinite(rn):
+            return z, 1, it, rn, facts
+        done = rn <= tol or (small and rn <= 1e3 * tol)
+        if not done and it > 1 and rn > 0.25 * hist[it - 2]:  # stalled: at the round-off floor?
+            k_inf = 0.0
+            for i in range(n):
+                k_inf = max(k_inf, np.sum(np.abs(K[i])))
+            zmax = np.max(np.abs(z)) if n else 0.0
+            done = rn <= 10.0 * 2.220446049250313e-16 * (1.0 + zmax) * k_inf
+        if done:
+            return z, 0, it, rn, facts
+        facts += 1
+        if banded.lu(K, kl, piv, True) != 0:
+            return z, 2, it, rn, facts
+        banded.solve(K, kl, piv, r)
+        if not np.all(np.isfinite(r)):
+            return z, 2, it, rn, facts
+        z = z + r
+        small = np.sqrt(np.dot(r, r)) <= xtol * (1.0 + np.sqrt(np.dot(z, z)))
+    return z, 3, max_iter, rn, facts
+
+
 class _Newton:
     """Newton iterations on the reduced system ``T^T (lam (Qk + Q(q)) - dU/dq) = 0``, assembled
     straight into the pattern's storage and solved by the pattern's solver."""
@@ -88,6 +128,8 @@ class _Newton:
 
     def run(self, z, lam, history):
         """Iterate at load factor lam; returns (z, converged, iterations, why)."""
+        if self.compiled is not None and self.forces is None:
+            return self._run_compiled(z, lam, history)
         opt, small_step = self.opt, False
         for it in range(1, opt.max_iter + 1):
             grad, K = self._assemble(z)
@@ -110,6 +152,20 @@ class _Newton:
             z = z + dz
             small_step = np.linalg.norm(dz) <= opt.xtol * (1.0 + np.linalg.norm(z))
         return z, False, opt.max_iter, f"no convergence in {opt.max_iter} iterations (|r| = {rn:.3e})"
+
+    def _run_compiled(self, z, lam, history):
+        opt = self.opt
+        hist = np.zeros(opt.max_iter)
+        z, status, its, rn, facts = _newton_band(z, self.g, self.compiled, self.pattern.kl, lam,
+                                                 self.Qk_r, opt.rtol * self.scale, opt.xtol,
+                                                 opt.max_iter, hist)
+        history.extend(float(h) for h in hist[:its])
+        self.tangents += its
+        self.factorizations += facts
+        why = ("", "residual is not finite",
+               "singular tangent stiffness (zero pivot or non-finite solution)",
+               f"no convergence in {opt.max_iter} iterations (|r| = {rn:.3e})")[status]
+        return z, status == 0, its, why
 
 
 def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = None,
