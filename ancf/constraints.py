@@ -93,8 +93,8 @@ class Elimination:
 
     def rheonomic(self) -> "Rheonomic":
         """The time-dependent elimination q = T z + g(t) (see :class:`Rheonomic`)."""
-        T, g0, free, follow = self._structure()
-        return Rheonomic(T, g0, free, list(self.motions), follow)
+        T, g0, _, follow = self._structure()
+        return Rheonomic(T, g0, list(self.motions), follow)
 
     def rows(self):
         """The same constraints as rows ``B q = c(t)``: (B sparse (m, n_dofs), c) with
@@ -137,7 +137,6 @@ class Rheonomic:
 
     T: sp.csr_matrix
     g0: np.ndarray
-    free: np.ndarray
     motions: list
     follow: dict
 
