@@ -1,0 +1,101 @@
+"""The 2D belt drive as a model: a closed belt of Dufva elements on a two-pulley path,
+penalty contact with creep-rate friction on both pulleys, a driver with prescribed
+angular velocity and a driven pulley whose rotation is a generalised coordinate.
+
+Coordinates: the belt's nodal coordinates (node by node r, r_x, r_y; the loop is
+closed by the last element sharing the first node, so there are no constraint
+equations, thesis section 3.3) in the numbering of a :class:`ReducedPattern`
+(reverse Cuthill-McKee: a ring has a narrow band once renumbered), followed by the
+driven pulley's angle theta (rad).  The mass matrix is constant: band storage
+``Mb`` for the belt, ``inertia`` for the pulley.
+
+Pulley 0 is the driver (left, ``omega_driver(t)``), pulley 1 the driven one.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+
+from ancf.belt_path import TwoPulleyPath, laid_belt
+from ancf.contact import contact_points
+from ancf.elements.dufva2d import DufvaBelt2D
+from ancf.mesh import BeamMesh
+from ancf.pattern import ReducedPattern, scatter
+from ancf.pulleys import driver_omega, opposing_torque
+from ancf.quadrature import RectangularSection
+
+SLOTS = ("r", "r_x", "r_y")
+
+
+@dataclass(frozen=True)
+class BeltSpec:
+    """Everything that defines a belt drive (SI units; see the belt2d scene)."""
+
+    path: TwoPulleyPath
+    belt_length: float          # reference (unstretched) length L0, m
+    n_elements: int
+    E: float                    # Young's modulus, Pa
+    nu: float                   # Poisson's ratio (shear modulus only)
+    rho: float                  # density, kg/m^3
+    b: float                    # section width, m
+    h: float                    # section height, m
+    ks: float                   # shear correction factor
+    alpha1: float               # axial stiffness parameter (Eq. 3.18)
+    alpha2: float               # bending stiffness parameter (Eqs 3.18-3.19)
+    nx: int                     # Gauss points of the elastic forces per element
+    k_p: float                  # penalty stiffness per unit length, N/m^2
+    c_p: float                  # penalty damping per unit length, N s/m^2
+    mu: float                   # friction coefficient
+    nu_s: float                 # creep-rate factor, kg/(m s)
+    gauss_points: int           # contact Gauss points per element (5, 7, 11)
+    inertia: float              # driven pulley moment of inertia, kg m^2
+    omega_final: float          # driver's final angular velocity, rad/s (Eq. 3.29)
+    Ta_max: float               # final opposing torque, N m (Eq. 3.30)
+
+
+class BeltDrive:
+    """The assembled model of a :class:`BeltSpec`."""
+
+    def __init__(self, spec: BeltSpec):
+        self.spec = s = spec
+        self.mesh = BeamMesh(s.belt_length, s.n_elements, SLOTS, closed=True)
+        self.q0 = laid_belt(s.path, s.belt_length, s.n_elements).ravel()
+        self.element = DufvaBelt2D(self.mesh.lengths, self.q0[self.mesh.dofmap],
+                                   RectangularSection(s.b, s.h), E=s.E, nu=s.nu, rho=s.rho,
+                                   alpha1=s.alpha1, alpha2=s.alpha2, ks=s.ks, nx=s.nx)
+        n = self.mesh.n_dofs
+        self.pattern = ReducedPattern(n, [self.mesh.dofmap], sp.identity(n, format="csr"))
+        self.vidx, self.midx = self.pattern.groups[0]
+        self.Mb = self.pattern.zeros_matrix()
+        scatter(np.zeros((s.n_elements, 12)), self.element.mass(), self.vidx, self.midx,
+                np.zeros(self.pattern.n), self.Mb, True)
+        self.S0, self.w, self.xi = contact_points(self.mesh.lengths, s.gauss_points)
+        self.centres = np.array([s.path.O1, s.path.O2], dtype=float)
+        self.radii = np.array([s.path.R1, s.path.R2])
+        self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
+
+    @property
+    def n(self) -> int:
+        """Belt coordinates (the pulley angle is coordinate n)."""
+        return self.pattern.n
+
+    def omega_driver(self, t):
+        return driver_omega(t, self.spec.omega_final)
+
+    def torque(self, t):
+        return opposing_torque(t, self.spec.Ta_max)
+
+    def state(self, q, theta=0.0) -> np.ndarray:
+        """System vector (belt in pattern numbering, then theta) from global belt q."""
+        return np.append(self.pattern.restrict(q), theta)
+
+    def belt(self, x) -> np.ndarray:
+        """Global belt coordinates from a system vector."""
+        return self.pattern.expand(np.asarray(x)[: self.n], np.zeros(self.mesh.n_dofs))
+
+    def kernel(self):
+        """The arrays of the compiled march (:mod:`ancf.solvers.belt_alpha`)."""
+        return (self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
+                self.centres, self.radii, self.prm, float(self.spec.inertia))

@@ -1,0 +1,128 @@
+"""Two-pulley belt drive (thesis section 3.3, Fig. 3.6, Table 3.1, Eqs 3.29-3.30).
+
+A closed belt of ``n_elements`` Dufva elements (alpha1, alpha2) laid on the wrapped
+path of two pulleys, pre-tensioned by a reference length shorter than the path,
+starting at rest.  The driver (left) turns counter-clockwise at the angular velocity
+of Eq. 3.29 (ramp from t = 0.05 s to ``omega_final`` at 0.6 s); the driven pulley
+(inertia ``inertia``) turns under the belt's friction against the opposing torque
+of Eq. 3.30 (``Ta_max``; 0: none).  Contact: distributed penalty with tri-linear
+creep-rate friction at ``gauss_points`` points per element (:mod:`ancf.contact`).
+
+Results: the angular velocities of both pulleys sampled every ``output_dt``, the
+vertical positions of the span midpoints, the span tensions at ``t_end`` (mean
+axial force over each span's middle third), the steady ratio of the angular
+velocities, the model size and the run statistics.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ancf.belt_drive import BeltDrive, BeltSpec
+from ancf.belt_post import sample, span_midpoint, span_tension, spans
+from ancf.inputs import MAX_STEPS, check_sampling, following, intervals
+from ancf.scenes import belt_common as bc
+from ancf.scenes.base import InputError, Param, Scene, SceneResult
+from ancf.solvers.belt_dynamics import BeltOptions, simulate
+
+INTEGRATORS = ("generalized-alpha",)
+STEADY_WINDOW = 0.1  # s before t_end over which the steady speed ratio is averaged
+
+
+def params() -> tuple:
+    return (bc.belt_params(n_elements=20, E=1e8, alpha2=0.01) + bc.pulley_params()
+            + bc.contact_params(gauss_points=7) + (
+        Param("inertia", 0.1, float, "kg m^2", "driven pulley moment of inertia", lo=0,
+              lo_open=True, hi=1e3),
+        Param("omega_final", 12.0, float, "rad/s", "driver's final angular velocity (Eq. 3.29; "
+              "counter-clockwise)", lo=0, hi=1000),
+        Param("Ta_max", 0.0, float, "N m", "final opposing torque on the driven pulley "
+              "(Eq. 3.30; 0: none)", lo=0, hi=1e4),
+        Param("integrator", "generalized-alpha", str, doc="time integrator", choices=INTEGRATORS),
+        Param("dt", 1e-4, float, "s", "time step", lo=1e-7, hi=1e-2),
+        Param("rho_inf", 0.8, float, "-", "generalized-alpha spectral radius at infinite "
+              "frequency", lo=0, hi=1),
+        Param("newton_tol", 1e-9, float, "-", "Newton tolerance on the position increment "
+              "relative to 1 + |q|", lo=1e-14, hi=1e-3),
+        Param("t_end", 1.0, float, "s", "simulated time", lo=0, lo_open=True, hi=100),
+        Param("output_dt", following(0.005, "t_end"), float, "s", "sampling interval "
+              "(default 0.005 s, at most t_end)", lo=0, lo_open=True, hi=10),
+        Param("max_steps", 400_000, int, doc="step budget (beyond it: not converged)", lo=1,
+              hi=MAX_STEPS),
+    ))
+
+
+def check(p: dict) -> None:
+    bc.check_geometry(p)
+    check_sampling(p)
+    if p["dt"] > p["output_dt"]:
+        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: a number in [1e-07, "
+                         f"output_dt = {p['output_dt']:g}] s (samples fall on steps)")
+    if p["t_end"] / p["dt"] > MAX_STEPS:
+        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: at least "
+                         f"t_end/{MAX_STEPS} = {p['t_end'] / MAX_STEPS:g} s")
+
+
+def spec(p: dict) -> BeltSpec:
+    return BeltSpec(bc.path_of(p), bc.belt_length(p), p["n_elements"], p["E"], p["nu"], p["rho"],
+                    p["b"], p["h"], p["ks"], p["alpha1"], p["alpha2"], p["elastic_points"],
+                    p["k_p"], p["c_p"], p["mu"], p["nu_s"], p["gauss_points"], p["inertia"],
+                    p["omega_final"], p["Ta_max"])
+
+
+def times(p: dict) -> np.ndarray:
+    n = intervals(p["t_end"], p["output_dt"])
+    return np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
+
+
+def _steady_ratio(t, wd, wn, t_end) -> float | None:
+    sel = (t >= t_end - STEADY_WINDOW) & (wd > 0)
+    return float(np.mean(wn[sel]) / np.mean(wd[sel])) if sel.any() else None
+
+
+def _at_end(drive, res, p) -> dict:
+    """Span tensions and model size at the last sample."""
+    smp = sample(drive, res.q[-1], res.v[-1], float(res.t[-1]))
+    sp = spans(drive.spec.path)
+    R = min(p["R1"], p["R2"])
+    in_contact = (smp.d >= 0).any(axis=1).reshape(drive.mesh.n_elements, -1).any(axis=1)
+    return {"tension_tight_N": span_tension(smp, sp["tight"], R),
+            "tension_slack_N": span_tension(smp, sp["slack"], R),
+            "contact_dofs": int(np.unique(drive.mesh.dofmap[in_contact]).size),
+            "total_dofs": drive.n + 1}
+
+
+def _midpoints(drive, res, p) -> dict:
+    sp, R = spans(drive.spec.path), min(p["R1"], p["R2"])
+    mids = {k: [] for k in sp}
+    for x, v, t in zip(res.q, res.v, res.t):
+        smp = sample(drive, x, v, float(t), npts=4)
+        for k, span in sp.items():
+            mids[k].append(float(span_midpoint(smp, span, R)[1]))
+    return {"mid_tight_y_m": mids["tight"], "mid_slack_y_m": mids["slack"]}
+
+
+def run(p: dict, progress=None) -> SceneResult:
+    drive = BeltDrive(spec(p))
+    opt = BeltOptions(dt=p["dt"], rho_inf=p["rho_inf"], newton_tol=p["newton_tol"],
+                      max_steps=p["max_steps"])
+    res = simulate(drive, times(p), opt, progress=progress)
+    wd = np.asarray(drive.omega_driver(res.t), dtype=float)
+    wn = res.v[:, -1] if res.t.size else np.zeros(0)
+    results = {"times": [float(t) for t in res.t], "omega_driver": [float(w) for w in wd],
+               "omega_driven": [float(w) for w in wn],
+               "omega_ratio_steady": _steady_ratio(res.t, wd, wn, p["t_end"]) if res.converged else None}
+    results.update(_midpoints(drive, res, p))
+    results.update(_at_end(drive, res, p) if res.converged else
+                   dict.fromkeys(("tension_tight_N", "tension_slack_N", "contact_dofs", "total_dofs")))
+    stats = res.stats()
+    stats.update(samples=int(res.t.size), t_reached=float(res.t[-1]) if res.t.size else 0.0,
+                 contact_pairs=res.extra["contact_pairs"])
+    results.update(stats)
+    return SceneResult(res.converged, res.message, results, extra={"result": res, "drive": drive})
+
+
+SCENE = Scene(
+    "belt2d",
+    "Two-pulley belt drive: Dufva belt elements, penalty contact with creep-rate friction, "
+    "driver ramp Eq. 3.29, driven pulley with inertia and opposing torque (thesis 3.3).",
+    params(), run, check)

@@ -1,0 +1,83 @@
+"""Shared pieces of the belt scenes (thesis chapter 3): the belt's parameters with
+Table 3.1 as defaults, their cross-field checks and the model builder.
+"""
+from __future__ import annotations
+
+from ancf.belt_path import TwoPulleyPath
+from ancf.contact import SUPPORTED_POINTS
+from ancf.scenes.base import InputError, Param
+
+#: Table 3.1
+R1, R2, X_CENTRE = 0.08125, 0.08125, 0.191441
+#: Table 3.1's belt against the path of its pulleys: 1.2727 m on 1.27627 m
+TABLE_SHORTENING = 1.2727 / TwoPulleyPath((-X_CENTRE, 0.0), R1, (X_CENTRE, 0.0), R2).length
+
+
+def belt_params(n_elements=20, E=1e8, alpha2=0.01, belt_length=None) -> tuple:
+    """Belt section, material and element parameters (Table 3.1)."""
+    return (
+        Param("n_elements", n_elements, int, doc="belt elements", lo=4, hi=400),
+        Param("E", E, float, "Pa", "Young's modulus", lo=0, lo_open=True, hi=1e12),
+        Param("nu", 0.3, float, "-", "Poisson's ratio (enters the shear modulus only)",
+              lo=0, hi=0.5, hi_open=True),
+        Param("rho", 1036.0, float, "kg/m^3", "belt density", lo=0, lo_open=True),
+        Param("h", 0.01, float, "m", "section height", lo=0, lo_open=True, hi=0.05),
+        Param("b", 0.01, float, "m", "section width", lo=0, lo_open=True, hi=1.0),
+        Param("ks", 5.0 / 6.0, float, "-", "shear correction factor", lo=0, lo_open=True, hi=2),
+        Param("alpha1", 1.0, float, "-", "axial stiffness parameter (Eq. 3.18)",
+              lo=0, lo_open=True, hi=10),
+        Param("alpha2", alpha2, float, "-", "bending stiffness parameter (Eqs 3.18-3.19)",
+              lo=0, lo_open=True, hi=10),
+        Param("elastic_points", 5, int, doc="Gauss points per element of the elastic forces",
+              lo=2, hi=12),
+        Param("belt_length", belt_length, float, "m",
+              "reference (unstretched) belt length; default: the wrapped path times "
+              f"{TABLE_SHORTENING:.6f} (Table 3.1: 1.2727 m on a 1.27627 m path)",
+              lo=0, lo_open=True, hi=100),
+    )
+
+
+def pulley_params(R2_default=R2) -> tuple:
+    return (
+        Param("R1", R1, float, "m", "driver pulley radius (centre (-0.191441, 0))",
+              lo=0, lo_open=True, hi=1.0),
+        Param("R2", R2_default, float, "m", "driven pulley radius (centre (0.191441, 0))",
+              lo=0, lo_open=True, hi=1.0),
+    )
+
+
+def path_of(p: dict) -> TwoPulleyPath:
+    return TwoPulleyPath((-X_CENTRE, 0.0), p["R1"], (X_CENTRE, 0.0), p["R2"])
+
+
+def check_geometry(p: dict) -> None:
+    """Pulleys apart; belt length at least half the path (a shorter one cannot be laid
+    without strains beyond 100 %)."""
+    D = 2 * X_CENTRE
+    if p["R1"] + p["R2"] >= D:
+        raise InputError(f"R1 + R2 = {p['R1'] + p['R2']:g} m: the pulleys overlap; allowed: "
+                         f"R1 + R2 < centre distance {D:g} m")
+    P = path_of(p).length
+    if p["belt_length"] is not None and not 0.5 * P <= p["belt_length"] <= 2.0 * P:
+        raise InputError(f"belt_length = {p['belt_length']:g} m is out of range for this path "
+                         f"({P:.6g} m); allowed: a number in [{0.5 * P:.6g}, {2 * P:.6g}] m "
+                         "(half to twice the wrapped path)")
+
+
+def belt_length(p: dict) -> float:
+    """The reference belt length: given, or the path shortened as in Table 3.1."""
+    return p["belt_length"] if p["belt_length"] is not None else TABLE_SHORTENING * path_of(p).length
+
+
+def contact_params(gauss_points=7) -> tuple:
+    return (
+        Param("k_p", 1e7, float, "N/m^2", "penalty stiffness per unit length", lo=0, lo_open=True,
+              hi=1e12),
+        Param("c_p", 10.0, float, "N s/m^2", "penalty damping per unit length", lo=0, hi=1e8),
+        Param("mu", 1.2, float, "-", "friction coefficient", lo=0, hi=10),
+        Param("nu_s", 1e5, float, "kg/(m s)", "friction creep-rate factor (slope of the friction "
+              "force per unit length against sliding velocity)", lo=0, lo_open=True, hi=1e9),
+        Param("gauss_points", gauss_points, int, doc="contact Gauss points per element",
+              choices=SUPPORTED_POINTS),
+    )
+

@@ -1,0 +1,198 @@
+"""Compiled generalised-alpha march of the 2D belt drive (:mod:`ancf.belt_drive`).
+
+The recurrence is that of :mod:`ancf.solvers.generalized_alpha` (Arnold & Brüls:
+unknown the acceleration at t_{n+1}).  Unknowns: the belt coordinates z (band
+numbering of the model's pattern) and the driven pulley's angle theta:
+
+    M z'' + dU/dz - Q_c(z, z', omega_1(t), theta') = 0         (Eqs 2.27, 3.27)
+    I theta'' - T_c(z, z', theta') + T_a(t) = 0                 (Eq. 3.26)
+
+with the contact forces Q_c and pulley moment T_c of :mod:`ancf.contact`.  The
+iteration matrix is bordered: a band block for the belt,
+
+    S_zz = M + beta' (K - dQ_c/dz) - gamma' dQ_c/dz'
+
+(non-symmetric: friction), one column ``-gamma' dQ_c/dtheta'``, one row
+``-beta' dT_c/dz - gamma' dT_c/dz'`` and the corner ``I - gamma' dT_c/dtheta'``.
+It is solved by the band LU of S_zz and the Schur complement of the corner (one
+extra band solve per factorisation).  Modified Newton as in
+:mod:`ancf.solvers.alpha_compiled`: the factors are kept across iterations and
+steps and refreshed when there are none, the step size changed or an increment
+fails to contract; a step that fails with kept factors is retried with fresh ones,
+one that fails with fresh factors ends the march (status NEWTON_FAILED).
+
+Counters ``count``: 0 force evaluations, 1 tangents, 2 factorisations, 3 solves,
+4 steps, 5 Newton iterations, 6 element-pulley pairs evaluated by the contact
+kernel (after its bounding test).
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from ancf.contact import contact_forces
+from ancf.elements.dufva2d import gradient_tangent
+from ancf.pattern import scatter
+from ancf.solvers import banded
+
+DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
+REFRESH_RATIO = 0.5
+DRIVEN = 1  # index of the driven pulley in the pulley arrays
+
+
+@njit(cache=True)
+def gather(x, vidx, E, V, v):
+    """Element coordinates E and velocities V (nel, 6, 2) from system vectors x, v."""
+    nel, nd = vidx.shape
+    for e in range(nel):
+        for a in range(nd):
+            E[e, a // 2, a % 2] = x[vidx[e, a]]
+            V[e, a // 2, a % 2] = v[vidx[e, a]]
+
+
+@njit(cache=True)
+def evaluate(x, v, omega_driver, Ta, mdl, want_J, bp, gp, fz, mat, col, row):
+    """Residual forces fz (belt: dU/dz - Q_c; fz[n]: -T_c + Ta) at (x, v) and, if
+    want_J, the stiffness/damping part of the iteration matrix: band ``mat`` =
+    bp (K - dQ/dz) - gp dQ/dz' (without M), border ``col``/``row`` and the corner's
+    force part (returned).  Returns (corner, pairs evaluated)."""
+    vidx, midx, eld, S0, w, centres, radii, prm, inertia = mdl
+    nel = vidx.shape[0]
+    npul = radii.size
+    E, V = np.empty((nel, 6, 2)), np.empty((nel, 6, 2))
+    gather(x, vidx, E, V, v)
+    g = np.zeros((nel, 12))
+    K = np.zeros((nel, 12, 12)) if want_J else np.zeros((0, 0, 0))
+    gradient_tangent(E, eld, want_J, g, K)
+    Q = np.zeros((nel, 12))
+    nj = nel if want_J else 0
+    Kq, Cv = np.zeros((nj, 12, 12)), np.zeros((nj, 12, 12))
+    Qw = np.zeros((nj, npul, 12))
+    T = np.zeros(npul)
+    dTq, dTv, dTw = np.zeros((npul, nj, 12)), np.zeros((npul, nj, 12)), np.zeros(npul)
+    omegas = np.array([omega_driver, v[v.size - 1]])
+    pairs = contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
+                           Q, Kq, Cv, Qw, T, dTq, dTv, dTw)
+    n = fz.size - 1
+    fz[:] = 0.0
+    g -= Q
+    if want_J:
+        mat[:, :] = 0.0
+        col[:] = 0.0
+        row[:] = 0.0
+        for e in range(nel):
+            for a in range(12):
+                i = vidx[e, a]
+                col[i] -= gp * Qw[e, DRIVEN, a]
+                row[i] -= bp * dTq[DRIVEN, e, a] + gp * dTv[DRIVEN, e, a]
+                for b in range(12):
+                    K[e, a, b] = bp * (K[e, a, b] - Kq[e, a, b]) - gp * Cv[e, a, b]
+    scatter(g, K, vidx, midx, fz, mat, want_J)
+    fz[n] = -T[DRIVEN] + Ta
+    return -gp * dTw[DRIVEN], pairs
+
+
+@njit(cache=True)
+def bordered_solve(S, kl, piv, u, row, schur, f):
+    """Solve [[S, col], [row, corner]] d = f in place, with S factored, u = S^-1 col
+    and schur = corner - row . u."""
+    n = f.size - 1
+    y = f[:n].copy()
+    banded.solve(S, kl, piv, y)
+    th = (f[n] - np.dot(row, y)) / schur
+    f[:n] = y - u * th
+    f[n] = th
+
+
+@njit(cache=True)
+def _step(h, k, st, fs, cf, mdl, Mb, kl, tabs, count, tol, max_iter, fresh):
+    """One step of size h ending at step index k; True on convergence."""
+    x, v, acc, a = st
+    S, piv, u, row, col, sc = fs  # sc = [schur, h of the factors]
+    am, af, gamma, beta = cf
+    wd, ta = tabs
+    inertia = mdl[8]
+    n = x.size - 1
+    bp = h * h * beta * (1 - af) / (1 - am)
+    gp = h * gamma * (1 - af) / (1 - am)
+    acc1 = acc.copy()
+    fz = np.zeros(n + 1)
+    refresh = fresh or sc[1] != h
+    d_prev = np.inf
+    for _ in range(max_iter):
+        a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
+        x1 = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
+        v1 = v + h * ((1 - gamma) * a + gamma * a1)
+        corner, pairs = evaluate(x1, v1, wd[k], ta[k], mdl, refresh, bp, gp, fz, S, col, row)
+        count[0] += 1
+        count[6] += pairs
+        r = fz
+        r[:n] += banded.matvec(Mb, kl, acc1[:n])
+        r[n] += inertia * acc1[n]
+        if refresh:
+            count[1] += 1
+            S += Mb
+            count[2] += 1
+            if banded.lu(S, kl, piv, True) != 0:
+                sc[1] = np.nan
+                return False
+            u[:] = col
+            banded.solve(S, kl, piv, u)
+            sc[0] = inertia + corner - np.dot(row, u)
+            sc[1] = h
+            refresh = False
+        d = -r
+        bordered_solve(S, kl, piv, u, row, sc[0], d)
+        count[3] += 1
+        count[5] += 1
+        acc1 += d
+        dn = np.max(np.abs(d[:n]))
+        if not np.isfinite(dn):
+            return False
+        if bp * dn <= tol * (1 + np.max(np.abs(x1[:n]))) and bp * abs(d[n]) <= tol:
+            a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
+            x[:] = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
+            v[:] = v + h * ((1 - gamma) * a + gamma * a1)
+            acc[:] = acc1
+            a[:] = a1
+            return True
+        if dn > REFRESH_RATIO * d_prev:
+            refresh = True
+        d_prev = dn
+    return False
+
+
+@njit(cache=True)
+def march(ts, k, k_stop, st, fs, cf, mdl, Mb, kl, tabs, count, tol, max_iter, limit, max_steps,
+          slot, out_x, out_v):
+    """Steps ts[k] -> ts[k_stop]; returns (status, step index reached).  States after
+    steps with slot[i] >= 0 go to out_x/out_v[slot[i]]."""
+    x, v = st[0], st[1]
+    backup = (x.copy(), v.copy(), st[2].copy(), st[3].copy())
+    while k < k_stop:
+        if count[4] >= max_steps:
+            return BUDGET, k
+        h = ts[k + 1] - ts[k]
+        for i in range(4):
+            backup[i][:] = st[i]
+        ok = _step(h, k + 1, st, fs, cf, mdl, Mb, kl, tabs, count, tol, max_iter, False)
+        if not ok:
+            for i in range(4):
+                st[i][:] = backup[i]
+            ok = _step(h, k + 1, st, fs, cf, mdl, Mb, kl, tabs, count, tol, max_iter, True)
+        if not ok:
+            for i in range(4):
+                st[i][:] = backup[i]
+            fs[5][1] = np.nan
+            return NEWTON_FAILED, k
+        k += 1
+        count[4] += 1
+        n = x.size - 1
+        if not np.all(np.isfinite(x)):
+            return NON_FINITE, k
+        if np.max(np.abs(x[:n])) > limit:
+            return BLOW_UP, k
+        if slot[k] >= 0:
+            out_x[slot[k]] = x
+            out_v[slot[k]] = v
+    return DONE, k
