@@ -28,6 +28,13 @@ def family_shapes(family: str) -> dict:
     return fns
 
 
+def consistent_mass(shapes, section: RectangularSection, lengths, rho: float, dim: int):
+    """Exact consistent mass matrices (nel, dim n, dim n), Eq. 2.26, kg: rho times the
+    family's generated integrals m_ij = int S_i S_j dV, times I_dim."""
+    m = np.stack([shapes["mass"](**section.moments(), l=li) for li in lengths])
+    return rho * np.einsum("ekl,ij->ekilj", m, np.eye(dim)).reshape(len(lengths), dim * m.shape[1], -1)
+
+
 def _grad(B, E):
     return np.einsum("eqk,ekd->eqd", B, E)
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf.elements.basis import Basis, family_shapes
+from ancf.elements.basis import Basis, consistent_mass, family_shapes
 from ancf.elements.green2d import GreenPlanar
 from ancf.elements.material import scheme_terms
 from ancf.quadrature import RectangularSection
@@ -72,6 +72,4 @@ class ContinuumElement:
 
     def mass(self) -> np.ndarray:
         """Exact consistent mass matrices (nel, ndof, ndof), Eq. 2.26, kg."""
-        m = np.stack([self.shapes["mass"](**self.section.moments(), l=li) for li in self.lengths])
-        eye = np.eye(self.dim)
-        return self.rho * np.einsum("ekl,ij->ekilj", m, eye).reshape(self.nel, self.ndof, self.ndof)
+        return consistent_mass(self.shapes, self.section, self.lengths, self.rho, self.dim)

@@ -1,0 +1,264 @@
+"""Dufva's shear-deformable planar belt element (12 DOF; thesis 3.1, Eqs 3.1-3.19).
+
+Nodal coordinates per node: ``r``, ``r_x``, ``r_y`` (family ``cubic2d``, Eq. 3.11),
+element coordinates ordered ``k * 2 + d`` (shape function k, component d) as in
+:mod:`ancf.elements.green2d`.  Kinematics (Eqs 3.1-3.12): the centre line
+``r_c = S e`` at y = 0 with ``a = r_c,x`` and ``c = r_c,xx``; ``t = a/|a|`` (3.4),
+``n = Ĩ t`` (3.5-3.6); the section vector ``r_s = (I + Ĩ sin γ) Ĩ t = n - sin γ t``
+(3.10); ``sin γ`` linear between its nodal values (3.12).  Ref. [54] ties the nodal
+shear angle to the nodal slopes; here it is read as the angle between the two
+nodal slope vectors, ``(sin γ)^K = -(r_x^K . r_y^K)/(|r_x^K| |r_y^K|)``, so that
+``r_s`` is parallel to ``r_y^K`` at the nodes to first order in γ.
+
+Strain energy (J): Eq. 3.18 (axial part scaled by ``alpha1``, bending parts by
+``alpha2``) + Eq. 3.19 (shear, scaled by ``alpha2``, G = E/(2(1 + nu)), factor
+``ks``) + the transverse term of Eq. 2.18, ``E/2 int eps_yy^2 dV`` with
+``eps_yy`` linear between ``eps_yy^K = 1/2 (r_y^K . r_y^K - 1)`` (thesis line
+~792); the transverse term is NOT scaled by alpha.  Section integrals are exact
+(``A = b h``, ``int y^2 dA = b h^3/12``, ``int y^4 dA = b h^5/80``; odd powers
+vanish), the axis is integrated by ``nx`` Gauss points.
+
+The reference is a straight, unstrained element of length l (thesis: "initially
+the beam is coincident with the global coordinate system and not curved"): the
+energy is zero iff |a| = 1, the centre line does not turn, sin γ = 0 and
+|r_y^K| = 1, whatever ``e0`` is.  A mesh laid on a curve is therefore
+pre-stressed in bending (as a belt wrapped on pulleys is).
+
+The energy density per unit length and its derivatives in the point variables
+(a, c, sin γ, d sin γ/dx, eps_yy) and those of the nodal shear sine are generated
+by SymPy (``analytic/dufva_belt.py`` -> ``_dufva_generated.py``); the compiled
+kernels :func:`energy` and :func:`gradient_tangent` chain them to the element
+coordinates, giving the exact gradient and the exact tangent.
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from ancf.elements import _dufva_generated as gen
+from ancf.elements import _generated as shape_gen
+from ancf.elements.basis import consistent_mass, family_shapes
+from ancf.quadrature import RectangularSection, gauss01
+
+_NO_TANGENT = np.zeros((0, 0, 0))
+_NODE = 6  # coordinates per node: r, r_x, r_y
+
+
+@njit(cache=True)
+def _centre_line(E, BX, BXX, e, q):
+    """a = r_c,x and c = r_c,xx at point q of element e."""
+    a0 = a1 = c0 = c1 = 0.0
+    for k in range(E.shape[1]):
+        a0 += BX[e, q, k] * E[e, k, 0]
+        a1 += BX[e, q, k] * E[e, k, 1]
+        c0 += BXX[e, q, k] * E[e, k, 0]
+        c1 += BXX[e, q, k] * E[e, k, 1]
+    return a0, a1, c0, c1
+
+
+@njit(cache=True)
+def _transverse_strain(E, e, node):
+    """eps_yy^K = 1/2 (r_y.r_y - 1) of node 0 (I) or 1 (J)."""
+    k = 3 * node + 2
+    return 0.5 * (E[e, k, 0] ** 2 + E[e, k, 1] ** 2 - 1.0)
+
+
+@njit(cache=True)
+def energy(E, data):
+    """Strain energy per element (nel,), J.  E: (nel, 6, 2); data: ``kernel_data()``."""
+    BX, BXX, xi, wq, lengths, k = data
+    nel, nq = wq.shape
+    out = np.zeros(nel)
+    for e in range(nel):
+        sI = gen.shear_sine(E[e, 1, 0], E[e, 1, 1], E[e, 2, 0], E[e, 2, 1])
+        sJ = gen.shear_sine(E[e, 4, 0], E[e, 4, 1], E[e, 5, 0], E[e, 5, 1])
+        yI, yJ = _transverse_strain(E, e, 0), _transverse_strain(E, e, 1)
+        for q in range(nq):
+            a0, a1, c0, c1 = _centre_line(E, BX, BXX, e, q)
+            z = xi[q]
+            s = (1.0 - z) * sI + z * sJ
+            ey = (1.0 - z) * yI + z * yJ
+            out[e] += wq[e, q] * gen.density(a0, a1, c0, c1, s, (sJ - sI) / lengths[e], ey, k)
+    return out
+
+
+@njit(cache=True)
+def _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv):
+    """d(a0, a1, c0, c1, s, s_x, eps_yy)/de (7, 12) at point q (z = x/l)."""
+    Jv[:] = 0.0
+    for k in range(BX.shape[2]):
+        Jv[0, 2 * k] = Jv[1, 2 * k + 1] = BX[e, q, k]
+        Jv[2, 2 * k] = Jv[3, 2 * k + 1] = BXX[e, q, k]
+    for i in range(4):
+        Jv[4, 2 + i] = (1.0 - z) * gI[i]
+        Jv[4, _NODE + 2 + i] = z * gJ[i]
+        Jv[5, 2 + i] = -gI[i] * inv_l
+        Jv[5, _NODE + 2 + i] = gJ[i] * inv_l
+    for d in range(2):
+        Jv[6, 4 + d] = (1.0 - z) * E[e, 2, d]
+        Jv[6, _NODE + 4 + d] = z * E[e, 5, d]
+
+
+@njit(cache=True)
+def _add_nodal_curvature(Ke, bI, bJ, hI, hJ, yI, yJ):
+    """Ke += the second derivatives of the nodal quantities: bK d2s^K + yK d2eps_yy^K."""
+    for i in range(4):
+        for j in range(4):
+            Ke[2 + i, 2 + j] += bI * hI[i, j]
+            Ke[_NODE + 2 + i, _NODE + 2 + j] += bJ * hJ[i, j]
+    for d in range(2):
+        Ke[4 + d, 4 + d] += yI
+        Ke[_NODE + 4 + d, _NODE + 4 + d] += yJ
+
+
+@njit(cache=True)
+def _add_point_tangent(Ke, ww, Jv, H, HJ):
+    """Ke += ww Jv^T H Jv (upper triangle)."""
+    nv, nd = Jv.shape
+    for i in range(nv):
+        for b in range(nd):
+            acc = 0.0
+            for j in range(nv):
+                acc += H[i, j] * Jv[j, b]
+            HJ[i, b] = ww * acc
+    for a in range(nd):
+        for b in range(a, nd):
+            acc = 0.0
+            for i in range(nv):
+                acc += Jv[i, a] * HJ[i, b]
+            Ke[a, b] += acc
+
+
+@njit(cache=True)
+def gradient_tangent(E, data, want_K, g, K):
+    """Add dU/de (nel, 12) to ``g`` (N or N m) and, if ``want_K``, d2U/de2 (nel, 12, 12)
+    to ``K``.  E: (nel, 6, 2) C-contiguous; data: ``DufvaBelt2D.kernel_data()``."""
+    BX, BXX, xi, wq, lengths, k = data
+    nel, nq = wq.shape
+    nd = 2 * E.shape[1]
+    gI, gJ, gw = np.empty(4), np.empty(4), np.empty(7)
+    hI, hJ, H = np.empty((4, 4)), np.empty((4, 4)), np.empty((7, 7))
+    Jv, HJ = np.empty((7, nd)), np.empty((7, nd))
+    Ke = np.empty((nd, nd))
+    for e in range(nel):
+        sI = gen.shear_sine_hess(E[e, 1, 0], E[e, 1, 1], E[e, 2, 0], E[e, 2, 1], gI, hI)
+        sJ = gen.shear_sine_hess(E[e, 4, 0], E[e, 4, 1], E[e, 5, 0], E[e, 5, 1], gJ, hJ)
+        yI, yJ = _transverse_strain(E, e, 0), _transverse_strain(E, e, 1)
+        inv_l = 1.0 / lengths[e]
+        bI = bJ = wI = wJ = 0.0
+        Ke[:] = 0.0
+        for q in range(nq):
+            a0, a1, c0, c1 = _centre_line(E, BX, BXX, e, q)
+            z, ww = xi[q], wq[e, q]
+            s, sx = (1.0 - z) * sI + z * sJ, (sJ - sI) * inv_l
+            ey = (1.0 - z) * yI + z * yJ
+            if want_K:
+                gen.density_hess(a0, a1, c0, c1, s, sx, ey, k, gw, H)
+            else:
+                gen.density_grad(a0, a1, c0, c1, s, sx, ey, k, gw)
+            _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
+            for b in range(nd):
+                acc = 0.0
+                for i in range(7):
+                    acc += Jv[i, b] * gw[i]
+                g[e, b] += ww * acc
+            if want_K:
+                _add_point_tangent(Ke, ww, Jv, H, HJ)
+                bI += ww * ((1.0 - z) * gw[4] - inv_l * gw[5])
+                bJ += ww * (z * gw[4] + inv_l * gw[5])
+                wI += ww * (1.0 - z) * gw[6]
+                wJ += ww * z * gw[6]
+        if want_K:
+            for a in range(nd):
+                for b in range(a + 1, nd):
+                    Ke[b, a] = Ke[a, b]
+            _add_nodal_curvature(Ke, bI, bJ, hI, hJ, wI, wJ)
+            K[e] += Ke
+
+
+def _check(name, value, ok, rng):
+    if not ok(value):
+        raise ValueError(f"{name} must be {rng} (got {value!r})")
+
+
+class DufvaBelt2D:
+    """Belt elements of lengths ``lengths`` (nel,) m, reference coordinates ``e0``
+    (nel, 12) (checked for shape only: the reference is straight), cross-section
+    ``section`` (b, h in m), Young's modulus ``E`` Pa, Poisson's ratio ``nu`` (enters
+    G only), density ``rho`` kg/m^3, axial and bending stiffness factors ``alpha1``,
+    ``alpha2`` (-), shear correction ``ks`` (-) and ``nx`` Gauss points along x."""
+
+    family = "cubic2d"
+    slots = ("r", "r_x", "r_y")
+    schemes: dict = {}  # one rule: nx Gauss points along x, the section in closed form
+    dim = 2
+
+    def __init__(self, lengths, e0, section: RectangularSection, E, nu, rho=0.0,
+                 alpha1=1.0, alpha2=1.0, ks=5.0 / 6.0, nx=5):
+        pos = lambda v: np.isfinite(v) and v > 0  # noqa: E731
+        for name, v in (("E", E), ("alpha1", alpha1), ("alpha2", alpha2), ("ks", ks),
+                        ("section.b", section.b), ("section.h", section.h)):
+            _check(name, v, pos, "finite and > 0")
+        _check("nu", nu, lambda v: -1.0 < v < 0.5, "in (-1, 0.5)")
+        _check("rho", rho, lambda v: np.isfinite(v) and v >= 0, "finite and >= 0")
+        _check("nx", nx, lambda v: isinstance(v, (int, np.integer)) and v >= 1, "an integer >= 1")
+        self.lengths = np.asarray(lengths, dtype=float).ravel()
+        _check("lengths", lengths, lambda v: self.lengths.size > 0 and np.all(
+            np.isfinite(self.lengths) & (self.lengths > 0)), "a non-empty array of finite values > 0")
+        self.shapes = family_shapes(self.family)
+        self.nel, self.nshape = self.lengths.size, self.shapes["n"]
+        self.ndof = self.dim * self.nshape
+        _check("e0 size", np.size(e0), lambda v: v == self.nel * self.ndof,
+               f"nel * 12 = {self.nel * self.ndof}")
+        self.section, self.rho, self.nx = section, float(rho), int(nx)
+        self.E_mod, self.alpha1 = float(E), float(alpha1)
+        A, G = section.area, E / (2.0 * (1.0 + nu))
+        I2, I4 = section.second_moment, section.b * section.h**5 / 80.0
+        self.coefficients = np.array([E * alpha1 * A / 8, E * alpha2 * I2 / 2, E * alpha2 * I4 / 8,
+                                      ks * G * alpha2 * A / 2, ks * G * alpha2 * I2 / 2, E * A / 2])
+        self._data = self._kernel_data()
+
+    def _kernel_data(self):
+        xi, wx = gauss01(self.nx)
+        l = self.lengths[:, None]
+        X, zero = xi[None, :] * l, np.zeros((1, xi.size))
+        BX = np.ascontiguousarray(self.shapes["x"](X, zero, l))
+        BXX = np.ascontiguousarray(shape_gen.cubic2d_xx(X, zero, l))
+        return (BX, BXX, xi, np.ascontiguousarray(wx[None, :] * l), self.lengths.copy(),
+                self.coefficients)
+
+    def kernel_data(self) -> tuple:
+        """The float64 arrays of :func:`energy` and :func:`gradient_tangent`:
+        (BX, BXX (nel, nx, 6) shape derivatives along the centre line (1/m, 1/m^2),
+        xi (nx,) Gauss points in [0, 1], wq (nel, nx) weights (m), lengths (nel,) m,
+        k (6,) density coefficients (N, N m^2, N m^4, N, N m^2, N))."""
+        return self._data
+
+    def _coords(self, e):
+        return np.ascontiguousarray(e, dtype=float).reshape(self.nel, self.nshape, self.dim)
+
+    def energy(self, e) -> np.ndarray:
+        """Strain energy U of each element (nel,), J (e: (nel, 12))."""
+        return energy(self._coords(e), self._data)
+
+    def gradient(self, e, tangent: bool = False):
+        """dU/de (nel, 12) (Qe = -dU/de, Eq. 2.20) and, if ``tangent``, the exact
+        d2U/de2 (nel, 12, 12), else None."""
+        g = np.zeros((self.nel, self.ndof))
+        K = np.zeros((self.nel, self.ndof, self.ndof)) if tangent else _NO_TANGENT
+        gradient_tangent(self._coords(e), self._data, tangent, g, K)
+        return g, (K if tangent else None)
+
+    def mass(self) -> np.ndarray:
+        """Exact consistent mass matrices (nel, 12, 12), Eq. 2.26, kg."""
+        return consistent_mass(self.shapes, self.section, self.lengths, self.rho, self.dim)
+
+    def axial_force(self, e, xi) -> np.ndarray:
+        """Normal force N = E A alpha1 eps_l (Eq. 3.17), N, at local coordinates ``xi``
+        in [0, 1] of every element: (nel, len(xi))."""
+        xi = np.atleast_1d(np.asarray(xi, dtype=float))
+        l = self.lengths[:, None]
+        B = self.shapes["x"](xi[None, :] * l, np.zeros((1, xi.size)), l)  # (nel, nxi, 6)
+        a = np.einsum("eqk,ekd->eqd", B, self._coords(e))
+        eps_l = 0.5 * (np.einsum("eqd,eqd->eq", a, a) - 1.0)
+        return self.E_mod * self.section.area * self.alpha1 * eps_l
