@@ -53,12 +53,12 @@ def sample(drive, x, v, t: float, npts: int = 8) -> BeltSample:
     E, V = q[dm].reshape(-1, 6, 2), qd[dm].reshape(-1, 6, 2)
     xi, S0 = _shapes(drive, npts)
     omegas = np.array([float(drive.omega_driver(t)), float(v[-1])])
-    st = contact_state(E, V, S0, drive.centres, drive.radii, omegas, drive.prm)
+    r, d, Fn, phi, vt = contact_state(E, V, S0, drive.centres, drive.radii, omegas, drive.prm)
     s = (np.arange(drive.mesh.n_elements)[:, None] + xi[None, :]) * drive.mesh.lengths[0]
     N = drive.element.axial_force(q[dm], xi)
     flat = lambda a: np.asarray(a).reshape(s.size, *np.shape(a)[2:])  # noqa: E731
-    return BeltSample(s.ravel(), flat(st["r"]), flat(np.einsum("eqk,ekd->eqd", S0, V)), N.ravel(),
-                      flat(st["d"]), flat(st["Fn"]), flat(st["Ft"]), flat(st["vt"]))
+    return BeltSample(s.ravel(), flat(r), flat(np.einsum("eqk,ekd->eqd", S0, V)), N.ravel(),
+                      flat(d), flat(Fn), flat(phi), flat(vt))
 
 
 def spans(path) -> dict:
@@ -86,11 +86,12 @@ def span_tension(smp: BeltSample, span, R: float) -> float:
 
 def span_midpoint(smp: BeltSample, span, R: float) -> np.ndarray:
     """Position (2,) where the belt crosses the span's perpendicular bisector, m."""
-    lam, off = _span_coords(smp.r, span)
+    r = np.vstack([smp.r, smp.r[:1]])  # the belt is closed
+    lam, off = _span_coords(r, span)
     near = np.abs(off) < R
     for i in np.flatnonzero(near[:-1] & near[1:]):
         j = i + 1
         if (lam[i] - 0.5) * (lam[j] - 0.5) <= 0 and lam[i] != lam[j]:
             f = (0.5 - lam[i]) / (lam[j] - lam[i])
-            return smp.r[i] + f * (smp.r[j] - smp.r[i])
+            return r[i] + f * (r[j] - r[i])
     return np.full(2, np.nan)

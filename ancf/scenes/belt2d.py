@@ -23,6 +23,7 @@ from ancf.inputs import MAX_STEPS, check_sampling, following, intervals
 from ancf.scenes import belt_common as bc
 from ancf.scenes.base import InputError, Param, Scene, SceneResult
 from ancf.solvers.belt_dynamics import BeltOptions, simulate
+from ancf.solvers.belt_pretension import settle
 
 INTEGRATORS = ("generalized-alpha",)
 STEADY_WINDOW = 0.1  # s before t_end over which the steady speed ratio is averaged
@@ -37,6 +38,9 @@ def params() -> tuple:
               "counter-clockwise)", lo=0, hi=1000),
         Param("Ta_max", 0.0, float, "N m", "final opposing torque on the driven pulley "
               "(Eq. 3.30; 0: none)", lo=0, hi=1e4),
+        Param("start", "settled", str, doc="initial state: 'settled' = at rest on the pulleys "
+              "after a static frictionless pre-tension solve; 'laid' = on the wrapped path, as in "
+              "the thesis", choices=("settled", "laid")),
         Param("integrator", "generalized-alpha", str, doc="time integrator", choices=INTEGRATORS),
         Param("dt", 1e-4, float, "s", "time step", lo=1e-7, hi=1e-2),
         Param("rho_inf", 0.8, float, "-", "generalized-alpha spectral radius at infinite "
@@ -105,7 +109,12 @@ def run(p: dict, progress=None) -> SceneResult:
     drive = BeltDrive(spec(p))
     opt = BeltOptions(dt=p["dt"], rho_inf=p["rho_inf"], newton_tol=p["newton_tol"],
                       max_steps=p["max_steps"])
-    res = simulate(drive, times(p), opt, progress=progress)
+    x0 = None
+    if p["start"] == "settled":
+        x0, pre = settle(drive)
+        if not pre.converged:
+            return SceneResult(False, f"pre-tension: {pre.message}", {}, extra={"drive": drive})
+    res = simulate(drive, times(p), opt, x0=x0, progress=progress)
     wd = np.asarray(drive.omega_driver(res.t), dtype=float)
     wn = res.v[:, -1] if res.t.size else np.zeros(0)
     results = {"times": [float(t) for t in res.t], "omega_driver": [float(w) for w in wd],

@@ -39,7 +39,7 @@ def params() -> tuple:
     keep = [p for p in bc.belt_params(n_elements=10, E=1e8, alpha2=0.01, belt_length=1.276)
             if p.name not in ("rho",)]
     return tuple(keep) + bc.pulley_params() + (
-        Param("rtol", 1e-9, float, "-", "residual tolerance relative to the initial residual",
+        Param("rtol", 1e-8, float, "-", "residual tolerance relative to the initial residual",
               lo=1e-14, hi=1e-2),
         Param("max_iterations", 200, int, doc="Newton iterations allowed", lo=1, hi=10000),
     )

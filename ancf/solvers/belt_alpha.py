@@ -37,6 +37,7 @@ from ancf.solvers import banded
 
 DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
 REFRESH_RATIO = 0.5
+MAX_BACKTRACKS = 8  # trial lengths 1, 1/2, ... 1/128 of a Newton increment
 DRIVEN = 1  # index of the driven pulley in the pulley arrays
 
 
@@ -105,59 +106,88 @@ def bordered_solve(S, kl, piv, u, row, schur, f):
 
 
 @njit(cache=True)
-def _step(h, k, st, fs, cf, mdl, Mb, kl, tabs, count, tol, max_iter, fresh):
-    """One step of size h ending at step index k; True on convergence."""
+def _residual(acc1, st, h, k, cf, mdl, Mb, kl, tabs, want_J, fs, count, r):
+    """r = residual at the step-end acceleration acc1 (and, if want_J, the force part of
+    the iteration matrix into fs); returns the corner's force part."""
     x, v, acc, a = st
-    S, piv, u, row, col, sc = fs  # sc = [schur, h of the factors]
     am, af, gamma, beta = cf
-    wd, ta = tabs
-    inertia = mdl[8]
     n = x.size - 1
+    a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
+    x1 = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
+    v1 = v + h * ((1 - gamma) * a + gamma * a1)
     bp = h * h * beta * (1 - af) / (1 - am)
     gp = h * gamma * (1 - af) / (1 - am)
+    corner, pairs = evaluate(x1, v1, tabs[0][k], tabs[1][k], mdl, want_J, bp, gp, r, fs[0],
+                             fs[4], fs[3])
+    count[0] += 1
+    count[6] += pairs
+    r[:n] += banded.matvec(Mb, kl, acc1[:n])
+    r[n] += mdl[8] * acc1[n]
+    return corner
+
+
+@njit(cache=True)
+def _factor(fs, Mb, kl, corner, inertia, h, count) -> bool:
+    """Factor the bordered iteration matrix assembled in fs (band LU + Schur complement)."""
+    S, piv, u, row, col, sc = fs
+    count[1] += 1
+    count[2] += 1
+    S += Mb
+    if banded.lu(S, kl, piv, True) != 0:
+        sc[1] = np.nan
+        return False
+    u[:] = col
+    banded.solve(S, kl, piv, u)
+    sc[0] = inertia + corner - np.dot(row, u)
+    sc[1] = h
+    return True
+
+
+@njit(cache=True)
+def _step(h, k, st, fs, cf, mdl, Mb, kl, tabs, count, tol, max_iter, fresh):
+    """One step of size h ending at step index k; True on convergence.  Damped Newton:
+    the increment is halved (at most MAX_BACKTRACKS times) until the residual norm
+    decreases (Armijo 1e-4), which breaks the 2-cycles of points switching between
+    sticking, sliding and no contact."""
+    x, v, acc, a = st
+    am, af, gamma, beta = cf
+    n = x.size - 1
+    bp = h * h * beta * (1 - af) / (1 - am)
     acc1 = acc.copy()
-    fz = np.zeros(n + 1)
-    refresh = fresh or sc[1] != h
+    r, rt = np.zeros(n + 1), np.zeros(n + 1)
+    refresh = fresh or fs[5][1] != h
+    corner = _residual(acc1, st, h, k, cf, mdl, Mb, kl, tabs, refresh, fs, count, r)
     d_prev = np.inf
     for _ in range(max_iter):
-        a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
-        x1 = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
-        v1 = v + h * ((1 - gamma) * a + gamma * a1)
-        corner, pairs = evaluate(x1, v1, wd[k], ta[k], mdl, refresh, bp, gp, fz, S, col, row)
-        count[0] += 1
-        count[6] += pairs
-        r = fz
-        r[:n] += banded.matvec(Mb, kl, acc1[:n])
-        r[n] += inertia * acc1[n]
         if refresh:
-            count[1] += 1
-            S += Mb
-            count[2] += 1
-            if banded.lu(S, kl, piv, True) != 0:
-                sc[1] = np.nan
+            if not _factor(fs, Mb, kl, corner, mdl[8], h, count):
                 return False
-            u[:] = col
-            banded.solve(S, kl, piv, u)
-            sc[0] = inertia + corner - np.dot(row, u)
-            sc[1] = h
             refresh = False
         d = -r
-        bordered_solve(S, kl, piv, u, row, sc[0], d)
+        bordered_solve(fs[0], kl, fs[1], fs[2], fs[3], fs[5][0], d)
         count[3] += 1
         count[5] += 1
-        acc1 += d
-        dn = np.max(np.abs(d[:n]))
+        rn, lam = np.sqrt(np.dot(r, r)), 1.0
+        for _ in range(MAX_BACKTRACKS):
+            _residual(acc1 + lam * d, st, h, k, cf, mdl, Mb, kl, tabs, False, fs, count, rt)
+            if np.sqrt(np.dot(rt, rt)) <= (1 - 1e-4 * lam) * rn:
+                break
+            lam *= 0.5
+        acc1 += lam * d
+        r[:] = rt
+        dn = lam * np.max(np.abs(d[:n]))
         if not np.isfinite(dn):
             return False
-        if bp * dn <= tol * (1 + np.max(np.abs(x1[:n]))) and bp * abs(d[n]) <= tol:
+        if bp * dn <= tol * (1 + np.max(np.abs(x[:n]))) and bp * lam * abs(d[n]) <= tol:
             a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
             x[:] = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
             v[:] = v + h * ((1 - gamma) * a + gamma * a1)
             acc[:] = acc1
             a[:] = a1
             return True
-        if dn > REFRESH_RATIO * d_prev:
+        if dn > REFRESH_RATIO * d_prev or lam < 1.0:
             refresh = True
+            corner = _residual(acc1, st, h, k, cf, mdl, Mb, kl, tabs, True, fs, count, r)
         d_prev = dn
     return False
 
