@@ -79,15 +79,15 @@ def _fd_state(case):
     return E, V, S0, w, centres, radii, omegas, np.array(case["prm"], dtype=float)
 
 
-CASES = {
+CASES = {  # ring gap (m), offset from pulley 0 (m), rotation and noise (rad/s, m/s), prm
     "none": dict(seed=0, gap=2e-3, offset=np.zeros(2), omega_b=5.0, v_noise=0.1,
                  omega=4.0, prm=[KP, CP, MU, 10.0]),
-    "linear": dict(gap=0.0, seed=1, offset=np.array([0.0018, 0.0009]), omega_b=5.0, v_noise=0.05, omega=5.0,
-                   prm=[KP, CP, MU, 10.0]),
-    "saturated": dict(gap=0.0, seed=2, offset=np.array([0.0018, 0.0009]), omega_b=5.0, v_noise=0.05,
-                      omega=5.0, prm=[KP, CP, MU, 1e7]),
-    "mixed-clamped": dict(gap=0.0, seed=3, offset=np.array([-0.0007, 0.0019]), omega_b=5.0, v_noise=0.5,
-                          omega=3.0, prm=[KP, 5e3, MU, 1e3]),
+    "linear": dict(seed=1, gap=0.0, offset=np.array([0.0018, 0.0009]), omega_b=5.0,
+                   v_noise=0.05, omega=5.0, prm=[KP, CP, MU, 10.0]),
+    "saturated": dict(seed=2, gap=0.0, offset=np.array([0.0018, 0.0009]), omega_b=5.0,
+                      v_noise=0.05, omega=5.0, prm=[KP, CP, MU, 1e7]),
+    "mixed-clamped": dict(seed=3, gap=0.0, offset=np.array([-0.0007, 0.0019]), omega_b=5.0,
+                          v_noise=0.5, omega=3.0, prm=[KP, 5e3, MU, 1e3]),
 }
 
 
@@ -112,8 +112,8 @@ def test_jacobians_match_central_differences(case):
         res = []
         for sgn in (1.0, -1.0):
             args = make(sgn * H)
-            assert np.array_equal(_branches(contact_state(*args[:3], centres, radii, args[3], prm),
-                                            prm), labels), f"{case}: state within one step of a kink"
+            state = contact_state(*args[:3], centres, radii, args[3], prm)
+            assert np.array_equal(_branches(state, prm), labels), f"{case}: a kink within one step"
             o = _forces(*args[:3], w, centres, radii, args[3], prm, want_J=False)
             res.append((o["Q"], o["T"]))
         return (res[0][0] - res[1][0]) / (2 * H), (res[0][1] - res[1][1]) / (2 * H)
@@ -160,11 +160,185 @@ def test_jacobians_match_central_differences(case):
         assert min(counts[1], counts[2], counts[3] + counts[-3]) > 0, counts
 
 
+@pytest.mark.parametrize("case", list(CASES))
+def test_point_law_follows_eqs_3_20_to_3_25(case):
+    """contact_state against the equations written out in numpy, every branch."""
+    E, V, S0, w, centres, radii, omegas, prm = _fd_state(CASES[case])
+    kp, cp, mu, nu = prm
+    r, d, Fn, phi, vt = contact_state(E, V, S0, centres, radii, omegas, prm)
+    rdot = np.einsum("egk,ekd->egd", S0, V)
+    a = np.einsum("egk,ekd->egd", S0, E)[:, :, None, :] - centres
+    dist = np.linalg.norm(a, axis=-1)
+    n = a / dist[..., None]
+    t = n @ I_TILDE.T
+    d_ref = radii - dist
+    ddot = -np.sum(n * rdot[:, :, None], axis=-1)
+    Fn_ref = np.where(d_ref >= 0, np.maximum(kp * d_ref + cp * ddot, 0.0), 0.0)
+    vt_ref = np.sum(t * (rdot[:, :, None] - (omegas * radii)[:, None] * t), axis=-1)
+    phi_ref = -np.sign(vt_ref) * np.minimum(nu * np.abs(vt_ref), mu * Fn_ref)
+    pairs = ((r[:, :, None], a + centres), (d, d_ref), (Fn, Fn_ref), (vt, vt_ref), (phi, phi_ref))
+    for got, ref in pairs:  # 64 ulps of the largest value: sums of 6 products, a sqrt
+        np.testing.assert_allclose(np.broadcast_to(got, ref.shape), ref, rtol=0,
+                                   atol=64 * EPS * np.abs(ref).max())
+
+
 def test_forces_are_added_and_jacobians_only_on_request():
     E, V, S0, w, centres, radii, omegas, prm = _fd_state(CASES["mixed-clamped"])
     full = _forces(E, V, S0, w, centres, radii, omegas, prm)
     out = {k: np.ones_like(v) for k, v in _outputs(E.shape[0], radii.size).items()}
     contact_forces(E, V, S0, w, centres, radii, omegas, prm, False, **out)
-    np.testing.assert_allclose(out["Q"] - 1.0, full["Q"], rtol=0, atol=4 * EPS * np.abs(full["Q"]).max())
-    np.testing.assert_allclose(out["T"] - 1.0, full["T"], rtol=0, atol=4 * EPS * np.abs(full["T"]).max())
+    for k in ("Q", "T"):  # 1 + x - 1 loses at most an ulp of max(1, |x|)
+        atol = 4 * EPS * max(1.0, np.abs(full[k]).max())
+        np.testing.assert_allclose(out[k] - 1.0, full[k], rtol=0, atol=atol)
     assert all(np.all(out[k] == 1.0) for k in ("Kq", "Cv", "Qw", "dTq", "dTv", "dTw"))
+
+
+# ------------------------------------------------------------------ analytic rings
+RHO = R0 - D0   # ring radius, m
+N_RING = 20
+RING_RTOL = 1e-5
+PULLEY = np.array([[0.03, -0.02]])
+
+
+def _ring_deviation(E, l, centre, rho, n=201):
+    """max | |r(x) - centre| - rho | along the ring's centreline (m), sampled densely."""
+    x = np.linspace(0.0, 1.0, n)[None, :] * l[:, None]
+    r = np.einsum("exk,ekd->exd", cubic2d_S(x, 0.0, l[:, None]), E)
+    return np.abs(np.linalg.norm(r - centre, axis=-1) - rho).max()
+
+
+def _ring_case(omega_b, omega, nu, offset=np.zeros(2), gauss_points=7):
+    E, V, S0, w, l = _ring(N_RING, RHO, PULLEY[0] + offset, omega_b, gauss_points)
+    prm = np.array([KP, CP, MU, nu])
+    args = (E, V, S0, PULLEY, np.array([R0]), np.array([omega]), prm)
+    return E, l, w, _forces(E, V, S0, w, *args[3:], want_J=False), contact_state(*args)
+
+
+def _virtual_work(E, Q, mode):
+    """Q . de for de = mode(E - o) on positions and mode(E) on slopes (a rigid field)."""
+    X = E.copy()
+    X[:, [0, 3]] -= PULLEY[0]
+    return np.sum(Q.reshape(E.shape) * (X @ mode.T))
+
+
+def test_ring_geometry_is_a_circle_within_the_ring_tolerance():
+    """Precondition of the ring tests: the Hermite ring deviates from its circle by far
+    less than RING_RTOL of the penetration, so k_p d is k_p D0 to RING_RTOL."""
+    E, _, _, _, l = _ring(N_RING, RHO, PULLEY[0])
+    assert _ring_deviation(E, l, PULLEY[0], RHO) <= 0.1 * RING_RTOL * D0
+
+
+def test_ring_at_rest_presses_k_p_d0_per_unit_length_without_torque():
+    E, _, w, out, (_, _, Fn, phi, _) = _ring_case(0.0, 0.0, 100.0)
+    total = KP * D0 * 2 * np.pi * RHO  # N
+    np.testing.assert_allclose(np.sum(w * Fn[:, :, 0]), total, rtol=RING_RTOL)
+    np.testing.assert_allclose(_virtual_work(E, out["Q"], np.eye(2)), total * RHO, rtol=RING_RTOL)
+    force = out["Q"].reshape(E.shape)[:, [0, 3]].sum(axis=(0, 1))  # S1 + S4 = 1: int f dx
+    assert np.linalg.norm(force) <= RING_RTOL * total, force
+    assert abs(out["T"][0]) <= RING_RTOL * MU * total * RHO and not phi.any()
+
+
+@pytest.mark.parametrize("omega", [9.0, 11.0], ids=["belt-faster", "pulley-faster"])
+@pytest.mark.parametrize("ratio,branch", [(0.1, "linear"), (0.999, "linear"),
+                                          (1.001, "saturated"), (100.0, "saturated")])
+def test_rotating_ring_slides_by_the_tri_linear_law(omega, ratio, branch):
+    """nu_s is set so that nu_s |v_t| = ratio mu k_p D0 (either side of saturation)."""
+    omega_b = 10.0  # rad/s
+    v_expected = omega_b * RHO - omega * R0  # m/s: belt speed minus pulley surface speed
+    nu = ratio * MU * KP * D0 / abs(v_expected)
+    E, _, w, out, (_, _, Fn, phi, vt) = _ring_case(omega_b, omega, nu)
+    phi_expected = (-nu * v_expected if branch == "linear"
+                    else -np.sign(v_expected) * MU * KP * D0)
+    assert (nu * abs(v_expected) < MU * KP * D0) == (branch == "linear")
+    np.testing.assert_allclose(vt, v_expected, rtol=RING_RTOL)
+    np.testing.assert_allclose(Fn, KP * D0, rtol=RING_RTOL)
+    np.testing.assert_allclose(phi, phi_expected, rtol=RING_RTOL)
+    torque = -phi_expected * RHO * 2 * np.pi * RHO  # N m on the pulley
+    np.testing.assert_allclose(out["T"][0], torque, rtol=RING_RTOL)
+    # action and reaction: the moment of the belt's forces about o is -T
+    np.testing.assert_allclose(_virtual_work(E, out["Q"], I_TILDE), -torque, rtol=RING_RTOL)
+
+
+ECC_OFFSET = np.array([4e-4, 3e-4])  # m, < D0: the whole ring stays in contact
+ECC_RTOL = 1e-4
+
+
+def test_gauss_rules_agree_on_the_eccentric_ring():
+    """Total force int f dx of a ring off-centre by c: against a periodic trapezoidal
+    integral of k_p d n over the exact circle (error ~ 2 max deviation / |c|, checked
+    below ECC_RTOL / 10), and the three rules against each other."""
+    theta = np.linspace(0.0, 2 * np.pi, 4096, endpoint=False)
+    a = ECC_OFFSET + RHO * np.stack([np.cos(theta), np.sin(theta)], axis=-1)
+    dist = np.linalg.norm(a, axis=-1)
+    ref = np.mean((KP * (R0 - dist) / dist)[:, None] * a, axis=0) * 2 * np.pi * RHO
+    forces = []
+    for ng in SUPPORTED_POINTS:
+        E, l, _, out, _ = _ring_case(0.0, 0.0, 100.0, ECC_OFFSET, ng)
+        forces.append(out["Q"].reshape(E.shape)[:, [0, 3]].sum(axis=(0, 1)))
+    dev = _ring_deviation(E, l, PULLEY[0] + ECC_OFFSET, RHO)
+    assert 2 * dev / np.linalg.norm(ECC_OFFSET) <= 0.1 * ECC_RTOL
+    for f in forces:
+        assert np.linalg.norm(f - ref) <= ECC_RTOL * np.linalg.norm(ref), (f, ref)
+        assert np.linalg.norm(f - forces[-1]) <= ECC_RTOL * np.linalg.norm(ref), (f, forces[-1])
+
+
+# ------------------------------------------------------------------ bounding test
+def _random_elements(rng, nel):
+    """Elements of length 0.02-0.2 m near two pulleys, slopes turned up to 60 degrees
+    from the chord and stretched 0.5-1.5: curved elements grazing the pulleys."""
+    l = rng.uniform(0.02, 0.2, nel)
+    rI = rng.uniform(-0.2, 0.2, (nel, 2))
+    chord = rng.uniform(0, 2 * np.pi, nel)
+    rJ = rI + l[:, None] * np.stack([np.cos(chord), np.sin(chord)], axis=-1)
+
+    def slope():
+        ang = chord + rng.uniform(-np.pi / 3, np.pi / 3, nel)
+        return rng.uniform(0.5, 1.5, nel)[:, None] * np.stack([np.cos(ang), np.sin(ang)], axis=-1)
+
+    ry = rng.standard_normal((nel, 2))
+    E = np.stack([rI, slope(), ry, rJ, slope(), ry], axis=1)
+    return E, rng.standard_normal(E.shape), l
+
+
+def test_bounding_test_never_skips_a_pair_in_contact():
+    rng = np.random.default_rng(7)
+    E, V, l = _random_elements(rng, 400)
+    centres, radii = np.array([[0.0, 0.0], [0.12, 0.05]]), np.array([0.1, 0.04])
+    omegas, prm = np.array([3.0, -2.0]), np.array([KP, CP, MU, 100.0])
+    S0, w, _ = contact_points(l, 7)
+    # pair by pair: a skipped pair has its whole centreline outside the pulley
+    x = np.linspace(0.0, 1.0, 401)[None, :] * l[:, None]
+    curve = np.einsum("exk,ekd->exd", cubic2d_S(x, 0.0, l[:, None]), E)
+    skipped, margin = 0, []
+    for p in range(radii.size):
+        gap = np.linalg.norm(curve - centres[p], axis=-1).min(axis=1) - radii[p]  # (nel,)
+        for e in range(E.shape[0]):
+            pair = _forces(E[e:e + 1], V[e:e + 1], S0[e:e + 1], w[e:e + 1], centres[p:p + 1],
+                           radii[p:p + 1], omegas[p:p + 1], prm, want_J=False)
+            if pair["pairs"] == 0:
+                skipped += 1
+                margin.append(gap[e] / l[e])
+    assert skipped > 0 and min(margin) > 0, (skipped, min(margin))
+    assert min(margin) < 0.05  # some skipped elements graze the pulley
+    # all pairs at once against the unbounded per-point state
+    out = _forces(E, V, S0, w, centres, radii, omegas, prm, want_J=False)
+    r, _, Fn, phi, _ = contact_state(E, V, S0, centres, radii, omegas, prm)
+    a = r[:, :, None, :] - centres                                   # (nel, ng, np, 2)
+    n = a / np.linalg.norm(a, axis=-1, keepdims=True)
+    f = Fn[..., None] * n + phi[..., None] * (n @ I_TILDE.T)
+    Q = np.einsum("eg,egk,egpd->ekd", w, S0, f).reshape(out["Q"].shape)
+    T = -np.einsum("eg,egp,egp->p", w, phi, np.linalg.norm(a, axis=-1))
+    assert np.sum(Fn > 0) > 0 and out["pairs"] == E.shape[0] * radii.size - skipped
+    np.testing.assert_allclose(out["Q"], Q, rtol=0, atol=1e-12 * np.abs(Q).max())
+    np.testing.assert_allclose(out["T"], T, rtol=1e-12)
+    shift = np.zeros(E.shape[1:])
+    shift[[0, 3], 0] = 10 * radii.max()  # positions only, the slopes stay
+    far = _forces(E + shift, V, S0, w, centres, radii, omegas, prm, want_J=False)
+    assert far["pairs"] == 0 and not far["Q"].any()
+
+
+# ------------------------------------------------------------------ input
+@pytest.mark.parametrize("bad", [3, 6, 9, "7", None])
+def test_unsupported_gauss_points_are_refused_by_name(bad):
+    with pytest.raises(ValueError, match=r"gauss_points must be one of \(5, 7, 11\)"):
+        contact_points(np.ones(3), bad)
