@@ -67,7 +67,8 @@ def contact_points(lengths, gauss_points):
         raise ValueError(f"gauss_points must be one of {SUPPORTED_POINTS} (got {gauss_points!r})")
     l = np.asarray(lengths, dtype=float)
     if l.ndim != 1 or not np.all(np.isfinite(l) & (l > 0)):
-        raise ValueError(f"lengths must be a 1-D array of positive finite lengths in m (got {lengths!r})")
+        raise ValueError(f"lengths must be a 1-D array of positive finite lengths, m "
+                         f"(got {lengths!r})")
     xi, wg = gauss01(int(gauss_points))
     L = l[:, None]
     S0 = np.ascontiguousarray(cubic2d_S(xi[None, :] * L, 0.0, L))
@@ -161,7 +162,8 @@ def _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw):
 
 
 @njit(cache=True)
-def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J, Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
+def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
+                   Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
     """Add the contact forces of every element on every pulley.
 
     E, V (nel, 6, 2) element coordinates (m, slopes -) and velocities; S0, w from
