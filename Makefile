@@ -25,6 +25,7 @@ bench: $(STAMP)
 	$(PY) -m benchmarks.summarize
 	OPENBLAS_NUM_THREADS=1 $(PY) -m benchmarks.core_profile
 	$(PY) -m benchmarks.peers
+	$(PY) -m benchmarks.peers_belt
 
 clean:
 	rm -rf $(VENV) .pytest_cache .benchmarks

@@ -79,28 +79,30 @@ def check() -> None:
 
 
 # ----------------------------------------------------------------- code generation
-def _emit(name, doc, expr, variables, args, order):
+def _emit(name, doc, expr, variables, args, order, first=None):
     """Lines of a numba function returning expr and, by order, its gradient into ``grad``
-    and its Hessian into ``hess`` (both symmetric halves)."""
+    and its Hessian into ``hess``.  A Hessian function takes value and gradient from
+    the gradient function ``first`` so that both give bit-identical gradients."""
     n = len(variables)
-    outs = [expr]
-    if order >= 1:
-        outs += [expr.diff(v) for v in variables]
-    if order >= 2:
-        outs += [expr.diff(variables[i], variables[j]) for i in range(n) for j in range(i, n)]
+    if order == 2:
+        outs = [expr.diff(variables[i], variables[j]) for i in range(n) for j in range(i, n)]
+    else:
+        outs = [expr] + [expr.diff(v) for v in variables] * order
     subs, red = sp.cse(outs, symbols=sp.numbered_symbols("x"), optimizations="basic")
     sig = ", ".join(args + ["grad"] * (order >= 1) + ["hess"] * (order >= 2))
     lines = ["@njit(cache=True)", f"def {name}({sig}):", f'    """{doc}"""']
+    if order == 2:
+        lines.append(f"    value = {first}({', '.join(args)}, grad)")
     lines += [f"    {sym} = {sp.pycode(e)}" for sym, e in subs]
-    it = iter(red[1:])
-    if order >= 1:
-        lines += [f"    grad[{i}] = {sp.pycode(next(it))}" for i in range(n)]
-    if order >= 2:
+    if order == 2:
+        it = iter(red)
         for i in range(n):
             for j in range(i, n):
                 e = sp.pycode(next(it))
                 lines.append(f"    hess[{i}, {j}] = {e}" if i == j else
                              f"    hess[{i}, {j}] = hess[{j}, {i}] = {e}")
+        return lines + ["    return value", "", ""]
+    lines += [f"    grad[{i}] = {sp.pycode(e)}" for i, e in enumerate(red[1:])]
     return lines + [f"    return {sp.pycode(red[0])}", "", ""]
 
 
@@ -121,11 +123,12 @@ def generate() -> str:
     lines += _emit("density", point, w, POINT, pargs, 0)
     lines += _emit("density_grad", point + "; gradient into grad (7,)", w, POINT, pargs, 1)
     lines += _emit("density_hess", point + "; gradient into grad (7,), Hessian into hess (7, 7)",
-                   w, POINT, pargs, 2)
+                   w, POINT, pargs, 2, "density_grad")
     node = "s^K = -(r_x.r_y)/(|r_x| |r_y|) of (rx0, rx1, ry0, ry1)"
     lines += _emit("shear_sine", node, sk, NODAL, nargs, 0)
+    lines += _emit("shear_sine_grad", node + "; gradient into grad (4,)", sk, NODAL, nargs, 1)
     lines += _emit("shear_sine_hess", node + "; gradient into grad (4,), Hessian into hess (4, 4)",
-                   sk, NODAL, nargs, 2)
+                   sk, NODAL, nargs, 2, "shear_sine_grad")
     return "\n".join(lines).rstrip() + "\n"
 
 

@@ -6,11 +6,13 @@ Reads one JSON request per line on stdin, ``{"case": NAME, "n": N}``, and answer
 JSON line on its original stdout (anything the codes print goes to stderr).  Cases:
 
 * ours: ``cantilever``, ``pendulum-ga``, ``pendulum-dop853``, ``pendulum-ref`` (DOP853
-  rtol 1e-10, untimed reference), ``reissner`` (geometrically exact rod; with
+  rtol 1e-10, untimed reference), ``belt`` (scene ``belt2d``; ``{"pending": ...}`` while
+  that scene is not registered), ``reissner`` (geometrically exact rod; with
   ``"shear_rigid": true`` the extensible Euler-Bernoulli elastica), ``info``;
 * exudyn: ``cantilever``, ``pendulum-ga`` (also answers ``pendulum-dop853``: Exudyn runs
   its generalised-alpha there), ``pendulum-ref`` (the same with h = 1e-4, untimed
-  reference), ``info``.
+  reference), ``belt`` (:func:`benchmarks.peers_belt_exudyn.exudyn_belt`; optional
+  ``t_end`` and ``step``), ``info``.
 
 Every timed answer has ``cpu_s`` (ours: the scene's ``cpu_time_s``; Exudyn:
 ``time.process_time`` around its solve call), ``converged``, ``tip_x``, ``tip_y`` and
@@ -32,19 +34,26 @@ OUR_CASES = {
     "pendulum-ga": ("pendulum", {"integrator": "generalized-alpha", "dt": "1e-3"}),
     "pendulum-dop853": ("pendulum", {}),
     "pendulum-ref": ("pendulum", {"rtol": "1e-10"}),
+    "belt": ("belt2d", {}),
 }
+#: results of our belt scene copied when present (angular velocities in rad/s)
+OUR_BELT = ("omega_driver", "omega_driven", "omega_driven_mean_last", "t_series",
+            "omega_driven_series")
 SHEAR_RIGID_KS = 1e9
 EXUDYN_REF_H = 1e-4
 
 
-def _ours(case: str, n: int, shear_rigid: bool = False) -> dict:
+def _ours(case: str, n: int, shear_rigid: bool = False, **extra) -> dict:
     if case == "reissner":
         return _reissner(shear_rigid)
     from ancf.scenes import SCENES
     scene, params = OUR_CASES[case]
-    out, _ = SCENES[scene].execute({"n_elements": str(n), **params})
+    if scene not in SCENES:
+        return {"pending": f"scene {scene} not registered"}
+    out, _ = SCENES[scene].execute({"n_elements": str(n), **params,
+                                    **{k: str(v) for k, v in extra.items()}})
     r = out["results"] or {}
-    stats = {k: r[k] for k in OUR_STATS if r.get(k) is not None}
+    stats = {k: r[k] for k in OUR_STATS + OUR_BELT if r.get(k) is not None}
     for ours, static in (("njev", "tangent_evaluations"), ("nlu", "factorizations")):
         if r.get(static) is not None:  # the static solver's names for the same counts
             stats.setdefault(ours, r[static])
@@ -59,7 +68,10 @@ def _reissner(shear_rigid: bool) -> dict:
             "ks": SHEAR_RIGID_KS if shear_rigid else 5 / 6}
 
 
-def _exudyn(case: str, n: int, **_) -> dict:
+def _exudyn(case: str, n: int, **kw) -> dict:
+    if case == "belt":
+        from benchmarks.peers_belt_exudyn import exudyn_belt
+        return exudyn_belt(n, **kw)
     from benchmarks import peers_exudyn as pe
     if case == "cantilever":
         return pe.cantilever(n)

@@ -16,11 +16,9 @@ import sympy as sp
 
 from analytic import shape_functions as sf
 from analytic.shape_functions import FAMILIES, a, b, derive, l, x, y, z
-from ancf.elements.catalogue import ELEMENTS
+from ancf.elements.catalogue import CONTRACT_ELEMENTS
 from ancf.assembly import Assembly, ElementGroup
 from ancf.elements import _generated as gen
-from ancf.elements.linear2d import LinearBeam2D
-from ancf.elements.omar_shabana import OmarShabana2D
 from ancf.mesh import BeamMesh
 from ancf.quadrature import RectangularSection
 
@@ -194,7 +192,7 @@ def test_rigid_body_motion_reproduced(family):
         np.testing.assert_allclose(rk, np.broadcast_to(R[:, k], rk.shape), rtol=0, atol=1e-12)
 
 
-ELEMENT_SCHEMES = [(cls, s) for cls in ELEMENTS.values() for s in cls.schemes]  # the catalogue
+CLASSES = list(dict.fromkeys(cls for cls, _ in CONTRACT_ELEMENTS.values()))  # every element
 
 
 def _rigid(mesh: BeamMesh, q, R, c):
@@ -205,13 +203,12 @@ def _rigid(mesh: BeamMesh, q, R, c):
     return Q.ravel()
 
 
-@pytest.mark.parametrize("cls,scheme", ELEMENT_SCHEMES,
-                         ids=[f"{c.__name__}-{s}" for c, s in ELEMENT_SCHEMES])
-def test_rigid_body_motion_has_no_strain_energy(cls, scheme):
+@pytest.mark.parametrize("cls,kw", CONTRACT_ELEMENTS.values(), ids=list(CONTRACT_ELEMENTS))
+def test_rigid_body_motion_has_no_strain_energy(cls, kw):
     L = 2.0
     m = BeamMesh(L, 3, cls.slots)
     q0 = m.reference()
-    el = cls(m.lengths, q0[m.dofmap], SECTION, E=E_MOD, nu=NU, rho=RHO, integration=scheme)
+    el = cls(m.lengths, q0[m.dofmap], SECTION, E=E_MOD, nu=NU, rho=RHO, **kw)
     q = _rigid(m, q0, _rotation2d(), C2)
     U = el.energy(q[m.dofmap])
     scale = E_MOD * SECTION.area * L
@@ -242,7 +239,7 @@ def _straight_e0(lengths, slots):
                      for i in range(len(lengths))])
 
 
-@pytest.mark.parametrize("cls", [LinearBeam2D, OmarShabana2D])
+@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
 def test_mass_equals_gauss_integration(cls):
     lengths = np.array([0.7, 1.3])
     el = cls(lengths, _straight_e0(lengths, cls.slots), SECTION, E=E_MOD, nu=NU, rho=RHO)
@@ -302,7 +299,7 @@ def test_generated_mass_offset_sections():
                                atol=1e-12 * np.abs(num).max())
 
 
-@pytest.mark.parametrize("cls", [LinearBeam2D, OmarShabana2D])
+@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
 def test_total_mass_of_rigid_translation(cls):
     L = 2.0
     m = BeamMesh(L, 4, cls.slots)

@@ -67,155 +67,136 @@ def density_grad(a0, a1, c0, c1, s, sx, ey, k, grad):
 @njit(cache=True)
 def density_hess(a0, a1, c0, c1, s, sx, ey, k, grad, hess):
     """w (J/m) at (a0, a1, c0, c1, s, sx, ey) with coefficients k (6,); gradient into grad (7,), Hessian into hess (7, 7)"""
-    x0 = s**2
-    x1 = k[4]*sx**2
-    x2 = a0**2
-    x3 = a1**2
-    x4 = x2 + x3
-    x5 = x4 - 1
-    x6 = k[3]*x4
-    x7 = a0*c1
-    x8 = a1*c0
-    x9 = x7 - x8
-    x10 = 1/x4
-    x11 = x10*x9
-    x12 = sx + x11
-    x13 = x12**2
-    x14 = x4**(-2)
-    x15 = x9**2
-    x16 = x14*x15
-    x17 = x0*x16
-    x18 = x13 + x17
-    x19 = 2*x13
-    x20 = 2*k[3]
-    x21 = x0*x20
-    x22 = 4*k[0]*x5
-    x23 = c1*x0
-    x24 = 2*a0
-    x25 = 2*x11
-    x26 = a0*x25 - c1
-    x27 = x12*x26
-    x28 = -x11*x23 + x17*x24 + x27
-    x29 = k[2]*x18
-    x30 = 4*x29
-    x31 = x10*x30
-    x32 = x10*x5
-    x33 = c0*x0
-    x34 = 2*a1
-    x35 = a1*x25 + c0
-    x36 = x12*x35
-    x37 = x11*x33 + x17*x34 + x36
-    x38 = 2*sx
-    x39 = x0*x11
-    x40 = x12 + x39
-    x41 = k[1]*(x25 + x32*x40 + x38) + x31*x40
-    x42 = k[1]*x5
-    x43 = 2*x1 + x16*x30 + x16*x42 + 2*x6
-    x44 = k[4]*x0
-    x45 = k[1]*(3*x2 + 3*x3 - 1)
-    x46 = 4*x12
-    x47 = 2*k[5]
-    x48 = x26**2
-    x49 = 2*x10
-    x50 = -x0*x15*x49
-    x51 = 8*x39
-    x52 = 12*x17
-    x53 = 4*x11
-    x54 = x2*x53 - 3*x7 + x8
-    x55 = 2*x12
-    x56 = c1**2*x0 + x2*x52 + x48 + x50 - x51*x7 + x54*x55
-    x57 = x14*x5
-    x58 = a0*x10
-    x59 = 4*x28
-    x60 = x10*x46
-    x61 = 3*x13 + x17
-    x62 = 8*k[0]
-    x63 = 8*k[2]
-    x64 = x14*x63
-    x65 = x14*x30
-    x66 = x21 + x22
-    x67 = a0*a1
-    x68 = x28*x64
-    x69 = a0*c0
-    x70 = 4*x39
-    x71 = a1*c1
-    x72 = x26*x35
-    x73 = x53*x67 + x69 - x71
-    x74 = -c0*x23 + x52*x67 + x55*x73 + x69*x70 - x70*x71 + x72
-    x75 = 4*a0
-    x76 = 4*a1
-    x77 = a0*x55 - x23 + x26 + x39*x75
-    x78 = x10*x63
-    x79 = x28*x78
-    x80 = -a0*x53 + 2*c1
-    x81 = a1*x10
-    x82 = x0*x10
-    x83 = -x39
-    x84 = x14*x9
-    x85 = 4*x0*x84
-    x86 = x2*x49
-    x87 = x12*(x86 - 1)
-    x88 = x2*x85 + x26*x58 - x7*x82 + x83 + x87
-    x89 = a0*x9
-    x90 = x26*x5
-    x91 = k[1]*x84
-    x92 = x30*x84
-    x93 = k[2]*x15/x4**3
-    x94 = 2*s
-    x95 = 6*x12
-    x96 = x35**2
-    x97 = x3*x53 - x7 + 3*x8
-    x98 = c0**2*x0 + x3*x52 + x50 + x51*x8 + x55*x97 + x96
-    x99 = 4*x37
-    x100 = x3*x49
-    x101 = x12*(x100 - 1)
-    x102 = x101 + x3*x85 + x35*x81 + x8*x82 + x83
-    x103 = a1*x55 + x33 + x35 + x39*x76
-    x104 = x37*x78
-    x105 = a1*x53 + 2*c0
-    x106 = a1*x9
-    x107 = x35*x5
-    x108 = x0 + 1
-    x109 = k[1]*(x108*x32 + 2) + x108*x31 + x40**2*x78
-    x110 = x10*x109
-    x111 = x14*x94*(k[2]*x40*x53 + x30 + x42)
-    x112 = k[1]*(x32 + 2) + x12*x40*x78 + x31
-    grad[0] = a0*x21 + a0*x22 + k[1]*(a0*x18 + a0*x19 - 2*x27 - x28*x32) - x28*x31
-    grad[1] = a1*x21 + a1*x22 + k[1]*(a1*x18 + a1*x19 - x32*x37 - 2*x36) - x31*x37
-    grad[2] = -a1*x41
-    grad[3] = a0*x41
-    grad[4] = s*x43
-    grad[5] = x12*x45 + x29*x46 + x38*x44
-    grad[6] = ey*x47
-    hess[0, 0] = k[1]*(-8*x27*x58 + x48*x49 + x54*x60 + x56*x57 - x58*x59 + x61) + x2*x62 + x28**2*x64 + x56*x65 + x66
-    hess[0, 1] = hess[1, 0] = -k[1]*x10*(x24*x37 + x27*x76 + x28*x34 - x32*x74 + x36*x75 - x46*x73 - 2*x72) + x37*x68 + x62*x67 + x65*x74
-    hess[0, 2] = hess[2, 0] = x81*(-k[1]*(x24*x40 - x32*x77 + x80) + x31*x77 + x40*x79)
-    hess[0, 3] = hess[3, 0] = -a0*x40*x68 - k[1]*(a0*x26*x49 - x2*x60 + x32*x88 - x40*x86 + 2*x87) - x31*x88
-    hess[0, 4] = hess[4, 0] = x94*(a0*x20 - x26*x92 - x59*x93 + x91*(x89 - x90))
-    hess[0, 5] = hess[5, 0] = k[1]*(a0*x95 - x10*x90 + x80) - x12*x79 - x26*x31
+    value = density_grad(a0, a1, c0, c1, s, sx, ey, k, grad)
+    x0 = a0*c1
+    x1 = a1*c0
+    x2 = x0 - x1
+    x3 = a0**2
+    x4 = a1**2
+    x5 = x3 + x4
+    x6 = 1/x5
+    x7 = x2*x6
+    x8 = 2*a0
+    x9 = -c1 + x7*x8
+    x10 = x9**2
+    x11 = 2*x6
+    x12 = s**2
+    x13 = x2**2
+    x14 = x12*x13
+    x15 = -x11*x14
+    x16 = x12*x7
+    x17 = 8*x16
+    x18 = x5**(-2)
+    x19 = x14*x18
+    x20 = 12*x19
+    x21 = 4*x7
+    x22 = -3*x0 + x1 + x21*x3
+    x23 = sx + x7
+    x24 = 2*x23
+    x25 = c1**2*x12 - x0*x17 + x10 + x15 + x20*x3 + x22*x24
+    x26 = x5 - 1
+    x27 = x18*x26
+    x28 = c1*x12
+    x29 = x23*x9
+    x30 = x19*x8 - x28*x7 + x29
+    x31 = a0*x6
+    x32 = 4*x23
+    x33 = x32*x6
+    x34 = x23**2
+    x35 = x19 + 3*x34
+    x36 = 8*k[0]
+    x37 = 8*k[2]
+    x38 = x18*x37
+    x39 = 4*k[2]
+    x40 = x39*(x19 + x34)
+    x41 = x18*x40
+    x42 = 2*k[3]
+    x43 = 4*k[0]*x26 + x12*x42
+    x44 = a0*a1
+    x45 = c0*x12
+    x46 = 2*a1
+    x47 = c0 + x46*x7
+    x48 = x23*x47
+    x49 = x19*x46 + x45*x7 + x48
+    x50 = x30*x38
+    x51 = a0*c0
+    x52 = 4*x16
+    x53 = a1*c1
+    x54 = x47*x9
+    x55 = x21*x44 + x51 - x53
+    x56 = -c0*x28 + x20*x44 + x24*x55 + x51*x52 - x52*x53 + x54
+    x57 = 4*a0
+    x58 = 4*a1
+    x59 = x26*x6
+    x60 = a0*x24 + x16*x57 - x28 + x9
+    x61 = x40*x6
+    x62 = x16 + x23
+    x63 = x37*x6
+    x64 = x30*x63
+    x65 = -a0*x21 + 2*c1
+    x66 = a1*x6
+    x67 = x12*x6
+    x68 = -x16
+    x69 = x18*x2
+    x70 = 4*x12*x69
+    x71 = x11*x3
+    x72 = x23*(x71 - 1)
+    x73 = -x0*x67 + x3*x70 + x31*x9 + x68 + x72
+    x74 = a0*x2
+    x75 = x26*x9
+    x76 = k[1]*x69
+    x77 = x40*x69
+    x78 = x13*x39/x5**3
+    x79 = 2*s
+    x80 = 6*x23
+    x81 = x47**2
+    x82 = -x0 + 3*x1 + x21*x4
+    x83 = c0**2*x12 + x1*x17 + x15 + x20*x4 + x24*x82 + x81
+    x84 = x11*x4
+    x85 = x23*(x84 - 1)
+    x86 = x1*x67 + x4*x70 + x47*x66 + x68 + x85
+    x87 = a1*x24 + x16*x58 + x45 + x47
+    x88 = x49*x63
+    x89 = a1*x21 + 2*c0
+    x90 = a1*x2
+    x91 = x26*x47
+    x92 = x12 + 1
+    x93 = k[1]*(x59*x92 + 2) + x61*x92 + x62**2*x63
+    x94 = x6*x93
+    x95 = k[1]*x26
+    x96 = x18*x79*(x39*x62*x7 + x40 + x95)
+    x97 = k[1]*(x59 + 2) + x23*x62*x63 + x61
+    x98 = 2*k[4]
+    x99 = x13*x18
+    hess[0, 0] = k[1]*(x10*x11 + x22*x33 + x25*x27 - 8*x29*x31 - 4*x30*x31 + x35) + x25*x41 + x3*x36 + x30**2*x38 + x43
+    hess[0, 1] = hess[1, 0] = -k[1]*x6*(x29*x58 + x30*x46 - x32*x55 + x48*x57 + x49*x8 - 2*x54 - x56*x59) + x36*x44 + x41*x56 + x49*x50
+    hess[0, 2] = hess[2, 0] = x66*(-k[1]*(-x59*x60 + x62*x8 + x65) + x60*x61 + x62*x64)
+    hess[0, 3] = hess[3, 0] = -a0*x50*x62 - k[1]*(a0*x11*x9 - x3*x33 + x59*x73 - x62*x71 + 2*x72) - x61*x73
+    hess[0, 4] = hess[4, 0] = x79*(a0*x42 - x30*x78 + x76*(x74 - x75) - x77*x9)
+    hess[0, 5] = hess[5, 0] = k[1]*(a0*x80 - x6*x75 + x65) - x23*x64 - x61*x9
     hess[0, 6] = hess[6, 0] = 0
-    hess[1, 1] = k[1]*(-8*x36*x81 + x49*x96 + x57*x98 + x60*x97 + x61 - x81*x99) + x3*x62 + x37**2*x64 + x65*x98 + x66
-    hess[1, 2] = hess[2, 1] = a1*x37*x40*x64 + k[1]*(a1*x35*x49 - x100*x40 + 2*x101 + x102*x32 - x3*x60) + x102*x31
-    hess[1, 3] = hess[3, 1] = -x58*(k[1]*(x103*x32 + x105 - x34*x40) + x103*x31 + x104*x40)
-    hess[1, 4] = hess[4, 1] = x94*(a1*x20 - x35*x92 + x91*(x106 - x107) - x93*x99)
-    hess[1, 5] = hess[5, 1] = -k[1]*(-a1*x95 + x10*x107 + x105) - x104*x12 - x31*x35
+    hess[1, 1] = k[1]*(x11*x81 + x27*x83 + x33*x82 + x35 - 8*x48*x66 - 4*x49*x66) + x36*x4 + x38*x49**2 + x41*x83 + x43
+    hess[1, 2] = hess[2, 1] = a1*x38*x49*x62 + k[1]*(a1*x11*x47 - x33*x4 + x59*x86 - x62*x84 + 2*x85) + x61*x86
+    hess[1, 3] = hess[3, 1] = -x31*(k[1]*(-x46*x62 + x59*x87 + x89) + x61*x87 + x62*x88)
+    hess[1, 4] = hess[4, 1] = x79*(a1*x42 - x47*x77 - x49*x78 + x76*(x90 - x91))
+    hess[1, 5] = hess[5, 1] = -k[1]*(-a1*x80 + x6*x91 + x89) - x23*x88 - x47*x61
     hess[1, 6] = hess[6, 1] = 0
-    hess[2, 2] = x110*x3
-    hess[2, 3] = hess[3, 2] = -a0*x109*x81
-    hess[2, 4] = hess[4, 2] = -x106*x111
-    hess[2, 5] = hess[5, 2] = -a1*x112
+    hess[2, 2] = x4*x94
+    hess[2, 3] = hess[3, 2] = -a0*x66*x93
+    hess[2, 4] = hess[4, 2] = -x90*x96
+    hess[2, 5] = hess[5, 2] = -a1*x97
     hess[2, 6] = hess[6, 2] = 0
-    hess[3, 3] = x110*x2
-    hess[3, 4] = hess[4, 3] = x111*x89
-    hess[3, 5] = hess[5, 3] = a0*x112
+    hess[3, 3] = x3*x94
+    hess[3, 4] = hess[4, 3] = x74*x96
+    hess[3, 5] = hess[5, 3] = a0*x97
     hess[3, 6] = hess[6, 3] = 0
-    hess[4, 4] = x0*x63*x9**4/x4**4 + x43
-    hess[4, 5] = hess[5, 4] = 4*s*(k[2]*x16*x55 + k[4]*sx)
+    hess[4, 4] = sx**2*x98 + x12*x2**4*x37/x5**4 + x40*x99 + x42*x5 + x95*x99
+    hess[4, 5] = hess[5, 4] = 4*s*(k[2]*x24*x99 + k[4]*sx)
     hess[4, 6] = hess[6, 4] = 0
-    hess[5, 5] = x13*x63 + x30 + 2*x44 + x45
+    hess[5, 5] = k[1]*(3*x3 + 3*x4 - 1) + x12*x98 + x34*x37 + x40
     hess[5, 6] = hess[6, 5] = 0
-    hess[6, 6] = x47
-    return ey**2*k[5] + k[0]*x5**2 + (1/2)*k[1]*(x18*x5 + x19*x4) + k[2]*x18**2 + x0*x1 + x0*x6
+    hess[6, 6] = 2*k[5]
+    return value
 
 
 @njit(cache=True)
@@ -225,49 +206,63 @@ def shear_sine(rx0, rx1, ry0, ry1):
 
 
 @njit(cache=True)
+def shear_sine_grad(rx0, rx1, ry0, ry1, grad):
+    """s^K = -(r_x.r_y)/(|r_x| |r_y|) of (rx0, rx1, ry0, ry1); gradient into grad (4,)"""
+    x0 = rx0*ry0 + rx1*ry1
+    x1 = rx0**2 + rx1**2
+    x2 = ry0**2 + ry1**2
+    x3 = 1/(math.sqrt(x1)*math.sqrt(x2))
+    x4 = x0/x1
+    x5 = 1/x2
+    grad[0] = x3*(rx0*x4 - ry0)
+    grad[1] = x3*(rx1*x4 - ry1)
+    grad[2] = x3*(-rx0 + ry0*x0*x5)
+    grad[3] = x3*(-rx1 + ry1*x0*x5)
+    return -x0*x3
+
+
+@njit(cache=True)
 def shear_sine_hess(rx0, rx1, ry0, ry1, grad, hess):
     """s^K = -(r_x.r_y)/(|r_x| |r_y|) of (rx0, rx1, ry0, ry1); gradient into grad (4,), Hessian into hess (4, 4)"""
+    value = shear_sine_grad(rx0, rx1, ry0, ry1, grad)
     x0 = rx0*ry0
-    x1 = rx1*ry1
-    x2 = x0 + x1
-    x3 = rx0**2
-    x4 = rx1**2
-    x5 = x3 + x4
-    x6 = 1/math.sqrt(x5)
-    x7 = ry0**2
-    x8 = ry1**2
-    x9 = x7 + x8
-    x10 = 1/math.sqrt(x9)
-    x11 = x10*x6
-    x12 = 1/x5
-    x13 = x12*x2
-    x14 = rx0*x13
-    x15 = 1/x9
-    x16 = 2*x0
-    x17 = x12*x3
-    x18 = x10/x5**(3/2)
-    x19 = rx0*ry1
-    x20 = rx1*ry0
-    x21 = x19 + x20
-    x22 = x15*x7
-    x23 = x13*x15
-    x24 = rx0*rx1*x12 + ry0*ry1*x15
-    x25 = 2*x1
-    x26 = x12*x4
-    x27 = x15*x8
-    x28 = x6/x9**(3/2)
-    grad[0] = x11*(-ry0 + x14)
-    grad[1] = x11*(rx1*x13 - ry1)
-    grad[2] = x11*(-rx0 + ry0*x15*x2)
-    grad[3] = x11*(-rx1 + ry1*x15*x2)
-    hess[0, 0] = x18*(x16 - x2*(3*x17 - 1))
-    hess[0, 1] = hess[1, 0] = x18*(-3*rx1*x14 + x21)
-    hess[0, 2] = hess[2, 0] = x11*(-x0*x23 + x17 + x22 - 1)
-    hess[0, 3] = hess[3, 0] = x11*(-x19*x23 + x24)
-    hess[1, 1] = x18*(-x2*(3*x26 - 1) + x25)
-    hess[1, 2] = hess[2, 1] = x11*(-x20*x23 + x24)
-    hess[1, 3] = hess[3, 1] = x11*(-x1*x23 + x26 + x27 - 1)
-    hess[2, 2] = x28*(x16 - x2*(3*x22 - 1))
-    hess[2, 3] = hess[3, 2] = x28*(-3*ry0*ry1*x15*x2 + x21)
-    hess[3, 3] = x28*(-x2*(3*x27 - 1) + x25)
-    return -x11*x2
+    x1 = 2*x0
+    x2 = rx1*ry1
+    x3 = x0 + x2
+    x4 = rx0**2
+    x5 = rx1**2
+    x6 = x4 + x5
+    x7 = 1/x6
+    x8 = x4*x7
+    x9 = ry0**2
+    x10 = ry1**2
+    x11 = x10 + x9
+    x12 = 1/math.sqrt(x11)
+    x13 = x12/x6**(3/2)
+    x14 = rx0*rx1*x7
+    x15 = 3*x3
+    x16 = rx0*ry1
+    x17 = rx1*ry0
+    x18 = x16 + x17
+    x19 = 1/x11
+    x20 = x19*x9
+    x21 = x19*x3*x7
+    x22 = 1/math.sqrt(x6)
+    x23 = x12*x22
+    x24 = ry0*ry1*x19
+    x25 = x14 + x24
+    x26 = 2*x2
+    x27 = x5*x7
+    x28 = x10*x19
+    x29 = x22/x11**(3/2)
+    hess[0, 0] = x13*(x1 - x3*(3*x8 - 1))
+    hess[0, 1] = hess[1, 0] = x13*(-x14*x15 + x18)
+    hess[0, 2] = hess[2, 0] = x23*(-x0*x21 + x20 + x8 - 1)
+    hess[0, 3] = hess[3, 0] = x23*(-x16*x21 + x25)
+    hess[1, 1] = x13*(x26 - x3*(3*x27 - 1))
+    hess[1, 2] = hess[2, 1] = x23*(-x17*x21 + x25)
+    hess[1, 3] = hess[3, 1] = x23*(-x2*x21 + x27 + x28 - 1)
+    hess[2, 2] = x29*(x1 - x3*(3*x20 - 1))
+    hess[2, 3] = hess[3, 2] = x29*(-x15*x24 + x18)
+    hess[3, 3] = x29*(x26 - x3*(3*x28 - 1))
+    return value

@@ -130,6 +130,16 @@ def _add_point_tangent(Ke, ww, Jv, H, HJ):
 
 
 @njit(cache=True)
+def _nodal_shear_sine(E, e, node, want_K, grad, hess):
+    """(sin gamma)^K of node 0 (I) or 1 (J), its gradient in (r_x, r_y) into grad (4,)
+    and, if want_K, its Hessian into hess (4, 4)."""
+    x, y = E[e, 3 * node + 1], E[e, 3 * node + 2]
+    if want_K:
+        return gen.shear_sine_hess(x[0], x[1], y[0], y[1], grad, hess)
+    return gen.shear_sine_grad(x[0], x[1], y[0], y[1], grad)
+
+
+@njit(cache=True)
 def gradient_tangent(E, data, want_K, g, K):
     """Add dU/de (nel, 12) to ``g`` (N or N m) and, if ``want_K``, d2U/de2 (nel, 12, 12)
     to ``K``.  E: (nel, 6, 2) C-contiguous; data: ``DufvaBelt2D.kernel_data()``."""
@@ -141,8 +151,8 @@ def gradient_tangent(E, data, want_K, g, K):
     Jv, HJ = np.empty((7, nd)), np.empty((7, nd))
     Ke = np.empty((nd, nd))
     for e in range(nel):
-        sI = gen.shear_sine_hess(E[e, 1, 0], E[e, 1, 1], E[e, 2, 0], E[e, 2, 1], gI, hI)
-        sJ = gen.shear_sine_hess(E[e, 4, 0], E[e, 4, 1], E[e, 5, 0], E[e, 5, 1], gJ, hJ)
+        sI = _nodal_shear_sine(E, e, 0, want_K, gI, hI)
+        sJ = _nodal_shear_sine(E, e, 1, want_K, gJ, hJ)
         yI, yJ = _transverse_strain(E, e, 0), _transverse_strain(E, e, 1)
         inv_l = 1.0 / lengths[e]
         bI = bJ = wI = wJ = 0.0
