@@ -91,6 +91,32 @@ RESULTS = {
         "tip_axial_mean_m": _nullable("mean axial tip deviation over the window, m"),
         "max_abs_tip_lateral_m": _nullable("largest |lateral tip deviation|, m"),
         "frame": field(STR, "frame of the tip_axial / tip_lateral components")},
+    "belt-free-static": {
+        "radius_mean_m": _nullable("mean distance of the centreline from its centroid, m"),
+        "radius_max_dev_m": _nullable("largest deviation of that distance from its mean, m"),
+        "radius_reference_m": field(NUM, "belt_length / (2 pi), the circle's radius, m"),
+        "newton_iterations": field(INT, "Newton iterations"),
+        "residual_initial": field(NUM, "largest generalised force at the wrapped shape, N"),
+        "residual_final": field(NUM, "largest generalised force at the last iterate, N")},
+    "belt2d": {
+        **_DYNAMIC,
+        "omega_driver": series("driver angular velocity (Eq. 3.29), rad/s"),
+        "omega_driven": series("driven pulley angular velocity, rad/s"),
+        "omega_ratio_steady": _nullable("mean omega_driven / mean omega_driver over the last "
+                                        "0.1 s (null before the driver turns)"),
+        "mid_tight_y_m": series("tight (upper) span: where the belt crosses the span's "
+                                "perpendicular bisector, y, m"),
+        "mid_slack_y_m": series("slack (lower) span: the same, m"),
+        "tension_tight_N": _nullable("tight span: mean axial force over its middle third at "
+                                     "t_end, N"),
+        "tension_slack_N": _nullable("slack span: the same, N"),
+        "contact_dofs": field(INT, "belt coordinates of the elements touching a pulley at t_end",
+                              nullable=True),
+        "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle", nullable=True),
+        "contact_pairs": field(INT, "element-pulley pairs whose Gauss points were evaluated "
+                                    "(after the bounding test), summed over force evaluations"),
+        "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
+                                            "(0: start = laid)")},
     "timoshenko": {"mid_deflection_m": _nullable("midspan deflection, m")},
     "reissner": {"tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
                  "tip_rotation_rad": _nullable("tip section rotation, rad")},

@@ -15,6 +15,8 @@ velocities, the model size and the run statistics.
 """
 from __future__ import annotations
 
+import sys
+
 import numpy as np
 
 from ancf.belt_drive import BeltDrive, BeltSpec
@@ -26,6 +28,7 @@ from ancf.solvers.belt_dynamics import BeltOptions, simulate
 from ancf.solvers.belt_pretension import settle
 
 INTEGRATORS = ("generalized-alpha",)
+PROGRESS_STEPS = 20_000  # runs of at least this many steps report progress on a terminal
 STEADY_WINDOW = 0.1  # s before t_end over which the steady speed ratio is averaged
 
 
@@ -42,10 +45,10 @@ def params() -> tuple:
               "after a static frictionless pre-tension solve; 'laid' = on the wrapped path, as in "
               "the thesis", choices=("settled", "laid")),
         Param("integrator", "generalized-alpha", str, doc="time integrator", choices=INTEGRATORS),
-        Param("dt", 1e-4, float, "s", "time step", lo=1e-7, hi=1e-2),
-        Param("rho_inf", 0.8, float, "-", "generalized-alpha spectral radius at infinite "
+        Param("dt", 2.5e-4, float, "s", "time step (Exudyn's belt example uses the same)", lo=1e-7, hi=1e-2),
+        Param("rho_inf", 0.5, float, "-", "generalized-alpha spectral radius at infinite "
               "frequency", lo=0, hi=1),
-        Param("newton_tol", 1e-9, float, "-", "Newton tolerance on the position increment "
+        Param("newton_tol", 1e-7, float, "-", "Newton tolerance on the position increment "
               "relative to 1 + |q|", lo=1e-14, hi=1e-3),
         Param("t_end", 1.0, float, "s", "simulated time", lo=0, lo_open=True, hi=100),
         Param("output_dt", following(0.005, "t_end"), float, "s", "sampling interval "
@@ -105,30 +108,38 @@ def _midpoints(drive, res, p) -> dict:
     return {"mid_tight_y_m": mids["tight"], "mid_slack_y_m": mids["slack"]}
 
 
-def run(p: dict, progress=None) -> SceneResult:
+def run(p: dict) -> SceneResult:
     drive = BeltDrive(spec(p))
     opt = BeltOptions(dt=p["dt"], rho_inf=p["rho_inf"], newton_tol=p["newton_tol"],
                       max_steps=p["max_steps"])
-    x0 = None
+    x0, pre_iterations = None, 0
     if p["start"] == "settled":
         x0, pre = settle(drive)
+        pre_iterations = pre.iterations
         if not pre.converged:
-            return SceneResult(False, f"pre-tension: {pre.message}", {}, extra={"drive": drive})
-    res = simulate(drive, times(p), opt, x0=x0, progress=progress)
+            x0 = None
+    res = simulate(drive, times(p), opt, x0=x0, progress=_progress(p))
+    if p["start"] == "settled" and not pre.converged:
+        res.converged, res.message = False, f"pre-tension: {pre.message}"
     wd = np.asarray(drive.omega_driver(res.t), dtype=float)
-    wn = res.v[:, -1] if res.t.size else np.zeros(0)
+    wn = res.v[:, -1]
+    ok = res.converged
     results = {"times": [float(t) for t in res.t], "omega_driver": [float(w) for w in wd],
                "omega_driven": [float(w) for w in wn],
-               "omega_ratio_steady": _steady_ratio(res.t, wd, wn, p["t_end"]) if res.converged else None}
+               "omega_ratio_steady": _steady_ratio(res.t, wd, wn, p["t_end"]) if ok else None}
     results.update(_midpoints(drive, res, p))
-    results.update(_at_end(drive, res, p) if res.converged else
+    results.update(_at_end(drive, res, p) if ok else
                    dict.fromkeys(("tension_tight_N", "tension_slack_N", "contact_dofs", "total_dofs")))
-    stats = res.stats()
-    stats.update(samples=int(res.t.size), t_reached=float(res.t[-1]) if res.t.size else 0.0,
-                 contact_pairs=res.extra["contact_pairs"])
-    results.update(stats)
-    return SceneResult(res.converged, res.message, results, extra={"result": res, "drive": drive})
+    results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
+                   contact_pairs=res.extra["contact_pairs"], pretension_iterations=pre_iterations)
+    return SceneResult(ok, res.message, results, extra={"result": res, "drive": drive})
 
+
+def _progress(p: dict):
+    """Progress lines on stderr for long runs from a terminal."""
+    if not sys.stderr.isatty() or p["t_end"] / p["dt"] < PROGRESS_STEPS:
+        return None
+    return lambda t: print(f"belt2d: t = {t:.4g} / {p['t_end']:g} s", file=sys.stderr, flush=True)
 
 SCENE = Scene(
     "belt2d",

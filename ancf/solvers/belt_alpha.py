@@ -127,13 +127,16 @@ def _residual(acc1, st, h, k, cf, mdl, Mb, kl, tabs, want_J, fs, count, r):
 
 
 @njit(cache=True)
-def _factor(fs, Mb, kl, corner, inertia, h, count) -> bool:
-    """Factor the bordered iteration matrix assembled in fs (band LU + Schur complement)."""
+def _factor(fs, Mb, kl, corner, inertia, h, pivoting, count) -> bool:
+    """Factor the bordered iteration matrix assembled in fs (band LU + Schur complement).
+    Without pivoting the LU works on kl instead of 2 kl columns per row; the mass
+    matrix makes S_zz diagonally dominant enough in practice, and a step that fails
+    is retried with fresh, pivoted factors."""
     S, piv, u, row, col, sc = fs
     count[1] += 1
     count[2] += 1
     S += Mb
-    if banded.lu(S, kl, piv, True) != 0:
+    if banded.lu(S, kl, piv, pivoting) != 0:
         sc[1] = np.nan
         return False
     u[:] = col
@@ -160,7 +163,7 @@ def _step(h, k, st, fs, cf, mdl, Mb, kl, tabs, count, tol, max_iter, fresh):
     d_prev = np.inf
     for _ in range(max_iter):
         if refresh:
-            if not _factor(fs, Mb, kl, corner, mdl[8], h, count):
+            if not _factor(fs, Mb, kl, corner, mdl[8], h, fresh, count):
                 return False
             refresh = False
         d = -r

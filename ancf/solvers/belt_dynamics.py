@@ -27,9 +27,9 @@ MESSAGES = {DONE: "ok", BUDGET: "step budget exhausted (max_steps)",
 
 @dataclass(frozen=True)
 class BeltOptions:
-    dt: float = 1e-4
-    rho_inf: float = 0.8
-    newton_tol: float = 1e-9     # beta' |d acc|_inf <= tol (1 + |z|_inf)
+    dt: float = 2.5e-4
+    rho_inf: float = 0.5
+    newton_tol: float = 1e-7     # beta' |d acc|_inf <= tol (1 + |z|_inf)
     max_iter: int = 12
     max_halvings: int = 4
     max_steps: int = 400_000
