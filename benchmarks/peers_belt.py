@@ -38,7 +38,8 @@ T_END, WARMUP_T_END = 1.0, 0.01
 PENDING = "ours: pending (scene belt2d not registered)"
 SETTINGS = {
     "ours": "scene belt2d, params {n_elements: n, t_end: 1.0} (the scene's defaults "
-            "otherwise); settling instead of a static pre-tension",
+            "otherwise: dt 2.5e-4 s, generalised-alpha rho_inf 0.5, 7 contact points); "
+            "static frictionless pre-tension first, like Exudyn's",
     "exudyn": f"ObjectANCFCable2D loop, ObjectContactFrictionCircleCable2D per element and "
               f"pulley ({SEGMENTS} segments), static pre-tension, then generalised-alpha h = {STEP:g} s "
               "(fixed; Exudyn halves it when Newton fails), spectralRadius 0.5, modified "

@@ -26,8 +26,9 @@ from ancf.scenes import belt_common as bc
 from ancf.scenes.base import InputError, Param, Scene, SceneResult
 from ancf.solvers.belt_dynamics import BeltOptions, simulate
 from ancf.solvers.belt_pretension import settle
+from ancf.solvers.belt_scipy import simulate_bdf
 
-INTEGRATORS = ("generalized-alpha",)
+INTEGRATORS = ("generalized-alpha", "bdf")
 PROGRESS_STEPS = 20_000  # runs of at least this many steps report progress on a terminal
 STEADY_WINDOW = 0.1  # s before t_end over which the steady speed ratio is averaged
 
@@ -45,6 +46,9 @@ def params() -> tuple:
               "after a static frictionless pre-tension solve; 'laid' = on the wrapped path, as in "
               "the thesis", choices=("settled", "laid")),
         Param("integrator", "generalized-alpha", str, doc="time integrator", choices=INTEGRATORS),
+        Param("rtol", 1e-6, float, "-", "relative tolerance (bdf)", lo=1e-12, hi=0.1),
+        Param("atol", 1e-9, float, "-", "absolute tolerance (bdf; m, m/s, rad, rad/s)", lo=1e-15,
+              hi=1.0),
         Param("dt", 2.5e-4, float, "s", "time step (Exudyn's belt example uses the same)", lo=1e-7, hi=1e-2),
         Param("rho_inf", 0.5, float, "-", "generalized-alpha spectral radius at infinite "
               "frequency", lo=0, hi=1),
@@ -118,7 +122,11 @@ def run(p: dict) -> SceneResult:
         pre_iterations = pre.iterations
         if not pre.converged:
             x0 = None
-    res = simulate(drive, times(p), opt, x0=x0, progress=_progress(p))
+    if p["integrator"] == "bdf":
+        x0 = drive.state(drive.q0) if x0 is None else x0
+        res = simulate_bdf(drive, times(p), p["rtol"], p["atol"], x0, p["max_steps"])
+    else:
+        res = simulate(drive, times(p), opt, x0=x0, progress=_progress(p))
     if p["start"] == "settled" and not pre.converged:
         res.converged, res.message = False, f"pre-tension: {pre.message}"
     wd = np.asarray(drive.omega_driver(res.t), dtype=float)
