@@ -12,6 +12,7 @@ one_blas_thread()  # before numpy: reproducible numbers and single-thread CPU ti
 import pandas as pd  # noqa: E402
 
 from analytic import timoshenko
+from ancf.reports.belt2d import belt2d_chapter
 from ancf.reports.extremes import extremes_chapter
 from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
@@ -185,7 +186,7 @@ def static_chapter() -> tuple[str, dict]:
     return "\n".join(parts), status
 
 
-CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md")
+CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md", "belt2d.md")
 
 _INDEX = [
     "| report | contents |", "|---|---|",
@@ -197,6 +198,9 @@ _INDEX = [
     "Pareto fronts, cheapest configuration per error level, calibration of work to seconds |",
     "| [extremes.md](extremes.md) | Stability maps at the extremes: slenderness, ν, element "
     "count, load, load steps, time limit, time steps (soft and stiff pendulum), spinning speed |",
+    "| [belt2d.md](belt2d.md) | 2D belt drive (thesis 3.3, Figs 3.5-3.21): free belt, element "
+    "count, stiffness and creep-rate trends, span tensions vs torque, contact forces, "
+    "relative velocity, contact points, pulleys of different size; acceptance checks |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
@@ -213,7 +217,8 @@ def write_chapters(root: Path) -> dict:
     (root / "static_beams.md").write_text(text)
     for name, chapter in (("dynamics.md", dynamics_chapter),
                           ("speed_accuracy.md", speed_accuracy_chapter),
-                          ("extremes.md", extremes_chapter)):
+                          ("extremes.md", extremes_chapter),
+                          ("belt2d.md", belt2d_chapter)):
         text, st = chapter()
         (root / name).write_text(text)
         status.update(st)
