@@ -51,12 +51,13 @@ def test_span_tensions_carry_the_driven_torque():
 
 
 def test_normal_force_against_T_over_R_and_the_exact_relation():
-    """F_n differs from N/R by the belt's stretch and penetration (about 5 %); the exact
-    relation of a stretched belt on a circle accounts for it to 1 %."""
+    """F_n per unit belt length is T/R within 5 % (the rest: penetration and centripetal
+    terms); per unit reference length the exact relation of a stretched belt on a circle
+    holds to 1 %."""
     thin, exact = bc.normal_force()
     assert exact.passed, exact
-    assert thin.difference < 0.08, thin
-    assert bc.normal_force_status(thin, exact) == "DIFFERS (explained)"
+    assert thin.passed, thin
+    assert bc.normal_force_status(thin, exact) == "PASS"
 
 
 def test_5_7_11_contact_points_give_the_same_driven_speed():

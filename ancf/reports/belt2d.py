@@ -317,18 +317,22 @@ def checks_table(checks: list, status: dict) -> list:
             "unless the measure says otherwise; trend rows give a ratio that must stay below 1.\n",
             markdown_table(df, 4), "",
             f"**F_n against T/R** (status {status[thin.name]}). In the middle of the wraps the "
-            f"normal force differs from N/R by {100 * thin.difference:.2f} % (tolerance "
-            f"{100 * thin.tolerance:g} %). T/R is the relation of an inextensible belt lying on "
-            "the pulley surface. Here F_n is per unit reference length of a stretched belt "
-            "(factor λ² = 1 + 2N/(EA) on N/R), the penalty contact lets the centreline sink by "
-            "d = F_n/k_p so it runs on a radius R − d, and the belt's centripetal acceleration "
-            "takes ρAv²/(R − d). Equilibrium of the belt on a circle gives "
+            f"normal force per unit length of the belt differs from N/R by "
+            f"{100 * thin.difference:.2f} % (tolerance {100 * thin.tolerance:g} %). Eq. 3.27 "
+            "integrates the contact force over the reference length, so the kernel's F_n is per "
+            "unit reference length; per unit length of the stretched belt it is F_n/λ, "
+            "λ² = 1 + 2N/(EA). Compared per reference length, F_n exceeds N/R by the whole "
+            "factor below (about 5 %). T/R is the relation of an inextensible belt lying on the "
+            "pulley surface; the penalty contact lets the centreline sink by d = F_n/k_p so it "
+            "runs on a radius R − d, and the belt's centripetal acceleration takes ρAv²/(R − d). "
+            "Equilibrium of the stretched belt on a circle gives, per reference length, "
             f"F_n = (N λ² − ρAv²)/(R − d), which matches to {100 * exact.difference:.2f} %. "
             "The factors, averaged over the same points:\n",
             markdown_table(_normal_force_factors(), 5), "",
-            "They are properties of the thesis's own model (Table 3.1's k_p, E = 1e9 Pa at "
-            "these tensions), so the few-per-cent excess over T/R is a limit of the T/R check, "
-            "not an error of the contact.\n"]
+            "The stretch, the penetration and the centripetal term are properties of the "
+            "thesis's own model (Table 3.1's k_p, E = 1e9 Pa at these tensions): what remains "
+            "between F_n/λ and T/R is the penetration and centripetal part, not an error of "
+            "the contact.\n"]
 
 
 def _gauss_statement() -> str:
