@@ -128,6 +128,16 @@ def _span_statement() -> str:
             f"{1e3 * np.std(y['slack'][early]):.3f} → {1e3 * np.std(y['slack'][late]):.3f} mm")
 
 
+def _node0_statement() -> str:
+    """Where node 0 is at the tension times (the belt's material points move)."""
+    pts = []
+    for t in TENSION_TIMES:
+        drive, smp = _at(t, **_case(1e5))
+        pts.append(f"({1e3 * smp.r[0, 0]:.1f}, {1e3 * smp.r[0, 1]:.1f}) mm at t = {t:g} s")
+    return ("The points move with the belt; node 0's neighbourhood is at " + " and ".join(pts)
+            + ", so the curves compare the same stretch of belt at nearly the same place.")
+
+
 def spans_and_tension() -> list:
     progress("belt2d: 120 rad/s case, spans and tension (Figs 3.10-3.12)")
     r = bc.run(**_case(1e5))[0]["results"]
@@ -150,9 +160,7 @@ def spans_and_tension() -> list:
             "`ancf run belt2d --set E=1e9 --set belt_length=1.24437 --set alpha2=0.001 "
             "--set Ta_max=45 --set omega_final=120 --set n_elements=30 --set output_dt=0.001` "
             "(ν_s = 1e5 unless stated). Belt arc coordinate s: reference arc length from node 0 "
-            "(the driver's outer point at t = 0; between 0.428 and 0.976 s the belt runs about "
-            "four whole loops, so at both times node 0 is back near that point and the curves "
-            "can be compared point by point, as in the thesis's figure).\n", "![span midpoints](figures/belt_span_midpoints.png)\n",
+            f"(the driver's outer point at t = 0). {_node0_statement()}\n", "![span midpoints](figures/belt_span_midpoints.png)\n",
             "![tension](figures/belt_tension.png)\n"]
 
 
