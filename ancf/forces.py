@@ -9,6 +9,7 @@ velocity-dependent forces add the same methods.
 from __future__ import annotations
 
 import numpy as np
+import scipy.sparse as sp
 
 from ancf.quadrature import gauss01
 
@@ -52,6 +53,31 @@ class Gravity:
         """V_i = -int rho g . r dV of each element, J (zero in the reference at y = 0)."""
         return [-np.einsum("ek,ek->e", qe, q[grp.dofmap])
                 for grp, qe in zip(self.groups, self.element_vectors)]
+
+
+class EndMoment:
+    """A moment M (N m) on the slope r_x = (x, y) at coordinates ``dofs``: the generalised
+    force of the angle theta = atan2(y, x), Q = M dtheta/dr_x = M (-y, x) / |r_x|^2
+    (a follower moment: it turns with the slope), and its exact Jacobian, symmetric
+    because Q = grad(M theta)."""
+
+    def __init__(self, n_dofs: int, dofs, M: float):
+        self.n_dofs, self.dofs, self.M = n_dofs, list(dofs), M
+        self.dofmap = np.array([self.dofs])
+
+    def value(self, q, v, t) -> np.ndarray:
+        x, y = q[self.dofs]
+        out = np.zeros(self.n_dofs)
+        out[self.dofs] = self.M * np.array([-y, x]) / (x * x + y * y)
+        return out
+
+    def jacobians(self, q, v, t):
+        x, y = q[self.dofs]
+        J = self.M / (x * x + y * y) ** 2 * np.array([[2 * x * y, y * y - x * x],
+                                                      [y * y - x * x, -2 * x * y]])
+        rows, cols = np.meshgrid(self.dofs, self.dofs, indexing="ij")
+        return sp.csr_matrix((J.ravel(), (rows.ravel(), cols.ravel())),
+                             shape=(self.n_dofs, self.n_dofs)), None
 
 
 class Forces:

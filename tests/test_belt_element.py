@@ -18,37 +18,22 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-import scipy.sparse as sp
 
 from analytic import dufva_belt, reissner, timoshenko
-from ancf.assembly import Assembly, ElementGroup
-from ancf.constraints import Elimination
+from ancf.belt_element_checks import (CIRCLE_H_FOUR, MODEL1, REISSNER_TOL, SECTION1, cantilever,
+                                      circle_gap)
 from ancf.elements import _generated as shape_gen
 from ancf.elements.dufva2d import DufvaBelt2D
-from ancf.forces import Forces
+from ancf.forces import EndMoment
 from ancf.mesh import BeamMesh
-from ancf.quadrature import RectangularSection, gauss01
+from ancf.quadrature import gauss01
 from ancf.solvers.static import NewtonOptions, solve_static
-
-MODEL1 = reissner.MODELS["model1"]  # L = 2 m, b = h = 0.1 m, E = 2.07e11 Pa, nu = 0.3, F = -5e5 N
-SECTION1 = RectangularSection(MODEL1["b"], MODEL1["h"])
-
-
-def _cantilever(n, section=SECTION1, L=MODEL1["L"], **kw):
-    """(mesh, q0, assembly, elimination) of a straight cantilever along +x clamped at
-    the root in r and r_y; kw go to the element (E, nu default to Model 1)."""
-    kw = {"E": MODEL1["E"], "nu": MODEL1["nu"], **kw}
-    m = BeamMesh(L, n, DufvaBelt2D.slots)
-    q0 = m.reference()
-    el = DufvaBelt2D(m.lengths, q0[m.dofmap], section, **kw)
-    root = [m.dof(0, s, c) for s in ("r", "r_y") for c in (0, 1)]
-    return m, q0, Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]), Elimination(m.n_dofs).fix(root, q0[root])
 
 
 def _tip_under(n, F, n_steps=4, **kw):
     """Tip position (x, y) of an n-element cantilever under the dead tip force F = (Fx, Fy) N,
     with the static result, the mesh and the element."""
-    m, q0, asm, elim = _cantilever(n, **kw)
+    m, q0, asm, elim = cantilever(n, **kw)
     tip = [m.dof(n, "r", 0), m.dof(n, "r", 1)]
     Qk = np.zeros(m.n_dofs)
     Qk[tip] = F
@@ -116,7 +101,7 @@ def test_rigid_motion_of_straight_mesh_is_strain_free(alpha2):
     """Rotation by 2.5 rad and translation by (3, -1) m of a straight 4-element mesh:
     U <= 1e-12 E A L (round-off gives ~1e-21 J against E A L = 4e9 J) and
     |dU/de| <= 1e-9 E A (2e0 N; round-off gives ~1e-6 N)."""
-    m, q0, asm, _ = _cantilever(4, alpha2=alpha2)
+    m, q0, asm, _ = cantilever(4, alpha2=alpha2)
     c, s = np.cos(2.5), np.sin(2.5)
     Q = q0.reshape(m.n_nodes, 3, 2) @ np.array([[c, -s], [s, c]]).T
     Q[:, 0] += [3.0, -1.0]
@@ -143,7 +128,7 @@ def test_model1_cantilever_converges_to_reissner():
     tips = {n: _tip_under(n, (0.0, MODEL1["F"]))[0] for n in (8, 16, 32)}
     print({n: t - [ref.tip_x, ref.tip_y] for n, t in tips.items()})
     for t in tips.values():
-        assert np.linalg.norm(t - [ref.tip_x, ref.tip_y]) <= 4e-4
+        assert np.linalg.norm(t - [ref.tip_x, ref.tip_y]) <= REISSNER_TOL
     step1, step2 = np.linalg.norm(tips[16] - tips[8]), np.linalg.norm(tips[32] - tips[16])
     assert step2 <= 1e-6 and step2 <= step1 / 16, (step1, step2)
 
@@ -161,30 +146,6 @@ def test_small_load_cantilever_is_timoshenko_with_one_element():
 
 
 # ------------------------------------------------------------ 3. full circle, ref. [54]
-class EndMoment:
-    """Configuration-dependent end moment: the generalised force of a moment M (N m)
-    on the angle theta = atan2(r_x[1], r_x[0]) of the slope at coordinates ``dofs``,
-    Q = M dtheta/dr_x, with its exact (symmetric: Q = grad(M theta)) Jacobian."""
-
-    def __init__(self, n_dofs, dofs, M):
-        self.n_dofs, self.dofs, self.M = n_dofs, list(dofs), M
-        self.dofmap = np.array([self.dofs])
-
-    def value(self, q, v, t):
-        x, y = q[self.dofs]
-        out = np.zeros(self.n_dofs)
-        out[self.dofs] = self.M * np.array([-y, x]) / (x * x + y * y)
-        return out
-
-    def jacobians(self, q, v, t):
-        x, y = q[self.dofs]
-        J = self.M / (x * x + y * y) ** 2 * np.array([[2 * x * y, y * y - x * x],
-                                                      [y * y - x * x, -2 * x * y]])
-        rows, cols = np.meshgrid(self.dofs, self.dofs, indexing="ij")
-        return sp.csr_matrix((J.ravel(), (rows.ravel(), cols.ravel())),
-                             shape=(self.n_dofs, self.n_dofs)), None
-
-
 def test_end_moment_jacobian_matches_differences():
     """The test's force term: its Jacobian against central differences of its value
     (h = 1e-6, error ~h^2 = 1e-12 relative; tolerance 1e-7)."""
@@ -199,19 +160,6 @@ def test_end_moment_jacobian_matches_differences():
     np.testing.assert_allclose(J, fd, rtol=0, atol=1e-7 * np.abs(J).max())
 
 
-def _circle_gap(n, h, L=2.0, **kw):
-    """|tip - root| / L of an n-element cantilever (b = h) under the end moment
-    M = 2 pi E I / L that bends the linear elastic beam into a full circle."""
-    section = RectangularSection(h, h)
-    m, q0, asm, elim = _cantilever(n, section=section, L=L, **kw)
-    M = 2 * np.pi * MODEL1["E"] * section.second_moment / L
-    tip_slope = [m.dof(n, "r_x", 0), m.dof(n, "r_x", 1)]
-    forces = Forces(m.n_dofs, [EndMoment(m.n_dofs, tip_slope, M)])
-    res = solve_static(asm, elim, np.zeros(m.n_dofs), q0, NewtonOptions(n_steps=8), forces=forces)
-    assert res.converged, res.message
-    return np.linalg.norm(res.q[[m.dof(n, "r", 0), m.dof(n, "r", 1)]]) / L
-
-
 def test_slender_cantilever_bends_into_a_full_circle():
     """Slender section b = h = 0.01 m, L = 2 m (the y^4 term is (3 h^2/20) kappa^2/4
     = 4e-5 of the bending energy, the Green-strain shortening of the axis
@@ -221,7 +169,7 @@ def test_slender_cantilever_bends_into_a_full_circle():
     90 deg per element at constant |r_x|), confirmed by alpha1 = 0.01, which brings
     the 4-element gap to 1.7e-2.  Tolerances: 16 elements within 1e-3 L, and the
     gap shrinking at least 4-fold per halving."""
-    gaps = [_circle_gap(n, 0.01) for n in (4, 8, 16)]
+    gaps = [circle_gap(n, 0.01) for n in (4, 8, 16)]
     print("slender full circle, gap/L with 4, 8, 16 elements:", gaps)
     assert gaps[2] <= 1e-3
     assert gaps[1] <= gaps[0] / 4 and gaps[2] <= gaps[1] / 4
@@ -234,7 +182,7 @@ def test_four_elements_bend_into_a_full_circle_at_moderate_slenderness():
     shortening of the axis (gap growing with h) balance: seen (nx = 5) h = 0.06,
     0.08, 0.10, 0.12 m -> gap/L = 1.7e-2, 4.6e-3, 1.04e-2, 2.5e-2.  Here
     h = 0.08 m (L/h = 25); tolerance 1 % of L (the claim)."""
-    gap = _circle_gap(4, 0.08)
+    gap = circle_gap(4, CIRCLE_H_FOUR)
     print(f"full circle, 4 elements, h = 0.08 m: gap/L = {gap:.2e}")
     assert gap <= 0.01
 
