@@ -15,6 +15,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 TD, TP = "tests/test_dynamics.py::", "tests/test_published_tables.py::"
 TA = "tests/test_analytic.py::"
+TB = "tests/test_belt_drive.py::"
 
 
 def plus_1_percent(before: str, value: str, after: str = "") -> tuple[str, str]:
@@ -59,6 +60,16 @@ MUTATIONS = [
      plus_1_percent("n_elements=4, E=", "2.07e7"), TD + "test_defaults_are_the_thesis_problem"),
     ("spinning beam E +1 %", "ancf/scenes/spinning_beam.py",
      plus_1_percent("n_elements=3, E=", "6.895e10"), TD + "test_spinning_beam_axial_extension_against_eq_2_36"),
+    ("opposing torque T_a helps the driven pulley", "ancf/solvers/belt_alpha.py",
+     ("fz[n] = -T[DRIVEN] + Ta", "fz[n] = -T[DRIVEN] - Ta"),
+     TB + "test_span_tensions_carry_the_driven_torque"),
+    ("driver ramp ends at 0.5 s (Eq. 3.29)", "ancf/pulleys.py",
+     ("T0, T1 = 0.05, 0.6", "T0, T1 = 0.05, 0.5"), TB + "test_eq_3_29_at_its_breakpoints"),
+    ("Table 3.1 R1 +1 %", "ancf/scenes/belt_common.py",
+     plus_1_percent("R1, R2, X_CENTRE = ", "0.08125"), TB + "test_table_3_1_span_and_path_length"),
+    ("creep slope nu_s halved in the linear branch", "ancf/contact.py",
+     ("return rho, d, Fn, vt, -nu * vt, -nu, 0.0", "return rho, d, Fn, vt, -0.5 * nu * vt, -0.5 * nu, 0.0"),
+     "tests/test_contact.py::test_rotating_ring_slides_by_the_tri_linear_law"),
 ]
 
 

@@ -9,7 +9,7 @@ import pytest
 from ancf import belt_checks as bc
 from ancf.belt_path import TwoPulleyPath
 from ancf.cli import main
-from ancf.pulleys import T0, T1, driver_omega, opposing_torque
+from ancf.pulleys import driver_omega, opposing_torque
 from ancf.scenes import SCENES
 from ancf.scenes import belt_common as common
 from ancf.scenes.base import InputError
@@ -86,6 +86,10 @@ def test_a_wrong_reference_fails_the_check():
 # ------------------------------------------------------------------ geometry
 
 def test_table_3_1_span_and_path_length():
+    defaults = SCENES["belt2d"].resolve({})
+    scene_path = common.path_of(defaults)
+    assert (scene_path.O1, scene_path.R1, scene_path.O2, scene_path.R2) == (
+        TABLE.O1, TABLE.R1, TABLE.O2, TABLE.R2)  # the scene's defaults are Table 3.1
     assert round(TABLE.span, 6) == 0.382882
     assert TABLE.length == pytest.approx(2 * 0.382882 + 2 * math.pi * 0.08125, abs=1e-6)
     s = np.linspace(0.0, TABLE.length, 20001)
@@ -118,11 +122,14 @@ def test_wrap_angles_of_unequal_pulleys_sum_to_two_pi(R2):
 # ------------------------------------------------------------------ pulley laws
 
 def test_eq_3_29_at_its_breakpoints():
-    t = np.array([0.0, T0, (T0 + T1) / 2, T1, 1.0])
+    """Eq. 3.29 as printed: 0 up to 0.05 s, linear to 12 rad/s at 0.6 s."""
+    t = np.array([0.0, 0.05, 0.325, 0.6, 1.0])
     assert driver_omega(t, 12.0) == pytest.approx([0.0, 0.0, 6.0, 12.0, 12.0], abs=1e-14)
 
 
 def test_eq_3_30_at_its_breakpoints():
+    """Eq. 3.30 as printed: 0 up to 0.05 s, 45/2 (1 - cos(pi t / 0.6)) up to 0.6 s, 45."""
+    T0, T1 = 0.05, 0.6
     t = np.array([0.0, T0, T0 + 1e-12, 0.3, T1, 1.0])
     want = [0.0, 0.0, 22.5 * (1 - math.cos(math.pi * T0 / 0.6)), 22.5, 45.0, 45.0]
     assert opposing_torque(t, 45.0) == pytest.approx(want, abs=1e-9)
