@@ -154,15 +154,23 @@ def spans_and_tension() -> list:
         ax.grid(alpha=0.3)
     axs[1].set(xlabel="t [s]")
     save_figure(fig, "belt_span_midpoints")
-    fig, ax = plt.subplots(figsize=(6.5, 4))
+    fig, (ax, axv) = plt.subplots(2, 1, figsize=(6.5, 6.5), sharex=True)
     for t in TENSION_TIMES:
-        _, smp = _at(t, **_case(1e5))
-        ax.plot(smp.s, smp.N, label=f"t = {t:g} s")
-    ax.set(xlabel="belt arc coordinate s [m]", ylabel="axial force N [N]",
-           title="Belt tension, 120 rad/s case (Fig. 3.12)")
-    ax.grid(alpha=0.3), ax.legend()
+        drive, smp = _at(t, **_case(1e5))
+        line, = ax.plot(smp.s, smp.N, label=f"t = {t:g} s")
+        axv.plot(smp.s, smp.speed, color=line.get_color(), label=f"|ṙ|, t = {t:g} s")
+        i = int(np.argmin(np.abs(bc.run(**_case(1e5))[1].extra["result"].t - t)))
+        surface = (float(drive.omega_driver(t)) * drive.radii[0],
+                   float(bc.run(**_case(1e5))[1].extra["result"].v[i, -1]) * drive.radii[1])
+        for v, style in zip(surface, ("--", ":")):
+            axv.axhline(v, color=line.get_color(), ls=style, lw=0.8)
+    ax.set(ylabel="axial force N [N]", title="Belt tension, 120 rad/s case (Fig. 3.12)")
+    axv.set(xlabel="belt arc coordinate s [m]", ylabel="belt speed [m/s]",
+            title="Belt speed (dashed: driver surface ω1 R1, dotted: driven ω2 R2)")
+    for a in (ax, axv):
+        a.grid(alpha=0.3), a.legend(fontsize=8)
     save_figure(fig, "belt_tension")
-    return ["## 120 rad/s case: span midpoints and tension (Figs 3.10-3.12)\n",
+    return ["## 120 rad/s case: span midpoints, tension and belt speed (Figs 3.10-3.12)\n",
             "`ancf run belt2d --set E=1e9 --set belt_length=1.24437 --set alpha2=0.001 "
             "--set Ta_max=45 --set omega_final=120 --set n_elements=30 --set output_dt=0.001` "
             "(ν_s = 1e5 unless stated). Belt arc coordinate s: reference arc length from node 0 "
