@@ -87,13 +87,22 @@ def _first(results, *keys) -> float | None:
     return None
 
 
+def belt_shape(params) -> tuple[int, int]:
+    """(coordinates, points) per Dufva belt element (the belt scenes: no ``element``
+    knob): 12 coordinates (r, r_x, r_y at two nodes), elastic plus contact points."""
+    from ancf.elements.dufva2d import DufvaBelt2D
+    contact = _num(params.get("gauss_points")) or 0
+    return 4 * len(DufvaBelt2D.slots), int(_num(params.get("elastic_points")) + contact)
+
+
 def element_shape(params) -> tuple[int, int]:
     """(coordinates per element, quadrature points per element) of the run's element and
-    integration scheme; (0, 0) for an element family this module does not know."""
+    integration scheme (or of the belt element, :func:`belt_shape`); (0, 0) for an element
+    family this module does not know."""
     from ancf.elements.catalogue import ELEMENTS
     cls = ELEMENTS.get(str(params.get("element")))
     if cls is None:
-        return 0, 0
+        return belt_shape(params) if _num(params.get("elastic_points")) else (0, 0)
     spec = getattr(cls, "schemes", {}).get(params.get("integration"), params.get("integration"))
     return 4 * len(cls.slots), quadrature_points(str(spec))
 
