@@ -223,8 +223,8 @@ def belt_warning(row) -> str | None:
     """Accuracy warning of a converged belt2d row: deep penetration, else large slip."""
     pen, ratio = row.get("res_penetration_max_m"), row.get("res_omega_ratio_steady")
     if pen is not None and pen == pen and pen > BELT_PENETRATION * belt_prestretch(row):
-        return (f"penetration {pen * 1e3:.2g} mm = {pen / belt_prestretch(row):.2g} × "
-                "pre-stretch")
+        return (f"penetration {pen * 1e3:.2g} mm = {pen / row['h']:.2g} h = "
+                f"{pen / belt_prestretch(row):.2g} × pre-stretch")
     err = row.get("error")
     if ratio is not None and err is not None and err == err and err > BELT_SLIP:
         return f"slip {100 * err:.2g} %"
