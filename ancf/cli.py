@@ -103,7 +103,7 @@ def _recommend(args) -> int:
         print(res["message"])
         if res["params"]:
             print("  ancf run " + args.name + " " + " ".join(
-                f"--set {k}={v}" for k, v in res["params"].items()))
+                f"--set {k}={v}" for k, v in res["params"].items() if v is not None))
     return res["exit_code"]
 
 

@@ -11,7 +11,10 @@ load against Timoshenko), Poisson's ratio 0..0.499, 2..1024 elements (Models 1 a
 against Reissner), tip load up to 10x Model 1 (against Reissner), load steps and Newton
 iterations per step at 10x load, and a watchdog case that exceeds its time limit.
 Dynamic axes: time steps and tolerances on the soft and on the stiff pendulum (explicit,
-implicit and generalised-alpha), spinning speed up to 10x omega_s.
+implicit and generalised-alpha), spinning speed up to 10x omega_s.  Contact axes (belt
+drive): penalty stiffness 1e4..1e10 N/m^2 and creep-rate factor nu_s 1e2..1e7 kg/(m s),
+to the end of the driver's ramp, against the no-slip drive; a converged run with deep
+penetration or large slip carries an accuracy warning (``Axis.warn``) as its diagnosis.
 
 The reduced configuration of the reports (``--quick``) runs the axes that declare
 ``quick`` grids (the cells the acceptance checks read, and one case per outcome class)
@@ -62,6 +65,7 @@ class Axis:
     label: Callable[[pd.DataFrame], pd.Series] | None = None  # axis values for display
     extra: dict = field(default_factory=dict)
     quick: Callable[[], list] | None = None  # reduced grids of ``--quick`` (None: skipped)
+    warn: Callable[[pd.Series], str | None] | None = None  # accuracy warning of an ok row
 
     def applicable(self) -> tuple[bool, str]:
         from ancf.scenes import SCENES
@@ -175,6 +179,58 @@ def _spin_grids():
              "dt": [2.5e-3]}]
 
 
+BELT_T_END = 0.6       # s: the driver's ramp ends (Eq. 3.29)
+BELT_SLIP = 1e-2       # slip beyond which a converged belt run is flagged
+BELT_PENETRATION = 0.5  # x the pre-stretch per wrap beyond which penetration is flagged
+
+
+def _belt_grid(key, values):
+    return [{key: list(values), "n_elements": [20], "dt": [2.5e-4], "t_end": [BELT_T_END]}]
+
+
+def _penalty_grids():
+    return _belt_grid("k_p", (1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10))
+
+
+def _penalty_quick():
+    return _belt_grid("k_p", (1e4, 1e7))
+
+
+def _nu_s_grids():
+    return _belt_grid("nu_s", (1e2, 1e3, 1e4, 1e5, 1e6, 1e7))
+
+
+def _nu_s_quick():
+    return _belt_grid("nu_s", (1e2, 1e7))
+
+
+def _belt_label(key, unit):
+    return lambda df: df[key].map(lambda v: f"{key} = {v:g} {unit}")
+
+
+def belt_prestretch(row) -> float:
+    """(wrapped path - belt_length) / (2 pi) of a belt2d row, m: the penetration depth on
+    both pulleys that shortens the path to the belt's length (releases the pre-tension)."""
+    import math
+    from ancf.scenes import SCENES
+    from ancf.scenes import belt_common as bc
+    p = SCENES["belt2d"].resolve({k: row[k] for k in ("R1", "R2", "belt_length") if k in row
+                                  and row[k] is not None and row[k] == row[k]})
+    return (bc.path_of(p).length - bc.belt_length(p)) / (2 * math.pi)
+
+
+def belt_warning(row) -> str | None:
+    """Accuracy warning of a converged belt2d row: deep penetration, else large slip."""
+    pen, ratio = row.get("res_penetration_max_m"), row.get("res_omega_ratio_steady")
+    if pen is not None and pen == pen and pen > BELT_PENETRATION * belt_prestretch(row):
+        return (f"penetration {pen * 1e3:.2g} mm = {pen / row['h']:.2g} h = "
+                f"{pen / belt_prestretch(row):.2g} × pre-stretch")
+    err = row.get("error")
+    if ratio is not None and err is not None and err == err and err > BELT_SLIP:
+        return f"slip {100 * err:.2g} %"
+    return None
+
+
 def _step_label(df):
     return df.apply(lambda r: f"dt = {r['dt']:g}" if r["integrator"] == "generalized-alpha"
                     else f"rtol = {r['rtol']:g}", axis=1)
@@ -253,10 +309,26 @@ AXES = (
              "damping, a fine mesh and high speed together: ρ∞ ≤ 0.7 or dt = 2.5 ms (last row) "
              "removes it, as do n ≤ 4; either constraint form fails alike. Use dt ≤ 2.5 ms for "
              "n ≥ 6 at this speed (stronger damping biases the extension: +1.1 % at ρ∞ = 0.5)."),
-    Axis("penalty", "Penalty stiffness 1e4 to 1e10", "belt", lambda: [], "penalty", (),
-         na_reason="not applicable yet: no contact scene"),
-    Axis("nu_s", "ν_s (contact / friction regularisation) 1e2 to 1e7", "belt", lambda: [],
-         "nu_s", (), na_reason="not applicable yet: no contact scene"),
+    Axis("penalty", "Penalty stiffness 1e4 to 1e10", "belt2d", _penalty_grids, "k_p",
+         ("n_elements", "dt"), reference="no-slip", requires=("belt2d",), time_limit=120.0,
+         label=_belt_label("k_p", "N/m²"), quick=_penalty_quick, warn=belt_warning,
+         doc=f"Belt drive (Table 3.1, 20 elements, dt = 2.5e-4 s) to t_end = {BELT_T_END:g} s, "
+             "the end of the driver's ramp, where the driven pulley needs the most torque; k_p "
+             "from 1e4 to 1e10 N/m² (default 1e7). Error against the no-slip drive "
+             "(ω_driven / ω_driver = R1/R2), i.e. the slip over the last 0.1 s. A converged run "
+             f"is flagged when its penetration at t_end exceeds {BELT_PENETRATION:g} × the "
+             "belt's pre-stretch per wrap, (path − belt_length)/(2π): sunk that deep into the "
+             "pulleys the belt has lost most of its pre-tension, so the drive slips; when its "
+             f"slip exceeds {100 * BELT_SLIP:g} % the cell shows the slip."),
+    Axis("nu_s", "ν_s (contact / friction regularisation) 1e2 to 1e7", "belt2d", _nu_s_grids,
+         "nu_s", ("n_elements", "dt"), reference="no-slip", requires=("belt2d",),
+         time_limit=120.0, label=_belt_label("nu_s", "kg/(m s)"), quick=_nu_s_quick,
+         warn=belt_warning,
+         doc=f"The same belt drive to t_end = {BELT_T_END:g} s with the friction creep-rate "
+             "factor ν_s from 1e2 to 1e7 kg/(m s) (default 1e5): the friction force per unit "
+             "length is ν_s × the sliding velocity up to μ × the normal force, so a small ν_s "
+             "needs a large sliding velocity to carry the torque (slip), a large one makes the "
+             "friction law stiff. Error and flags as on the penalty axis."),
 )
 
 
@@ -293,6 +365,9 @@ def diagnosis(row) -> str:
     m = re.search(r"diverged at step (\d+)", low)
     if m:
         return f"diverged at step {m.group(1)}"
+    m = re.search(r"newton failed at t = ([0-9.eE+-]+) s", low)
+    if m:
+        return f"Newton failed at t = {float(m.group(1)):.4g} s"
     m = _LOAD_RE.search(msg)
     if m:
         return f"Newton diverged at load factor {float(m.group(1)):.3g}"
@@ -321,4 +396,7 @@ def run_axis(axis: Axis, workers=None, fresh: bool = True, log=None,
                    time_limit=axis.time_limit, progress=False, log=log)
     df = df.copy()
     df["diagnosis"] = [diagnosis(r) for _, r in df.iterrows()]
+    if axis.warn:
+        df["diagnosis"] = [(axis.warn(r) or d) if d == "ok" else d
+                           for d, (_, r) in zip(df["diagnosis"], df.iterrows())]
     return df

@@ -47,14 +47,26 @@ def _params(row, names) -> dict:
     return out
 
 
+def _belt_parts(p: dict) -> list:
+    """The quadrature knobs of the belt scenes (no element choice)."""
+    parts = [f"n = {p.get('n_elements')}"]
+    if p.get("gauss_points") is not None:
+        parts.append(f"{p['gauss_points']} contact points")
+    return parts + [f"{p.get('elastic_points')} elastic points"]
+
+
 def describe(p: dict, dynamic: bool) -> str:
     """Short text of a model configuration."""
-    parts = [f"{p.get('element')} element", f"{p.get('integration')} quadrature",
-             f"n = {p.get('n_elements')}"]
+    parts = ([f"{p.get('element')} element", f"{p.get('integration')} quadrature",
+              f"n = {p.get('n_elements')}"] if p.get("element") is not None else _belt_parts(p))
     if dynamic:
         integ = p.get("integrator")
         parts.append(f"{integ}, dt = {p.get('dt'):g}" if integ == "generalized-alpha"
                      else f"{integ}, rtol = {p.get('rtol'):g}")
+        if p.get("newton_tol") is not None:
+            parts.append(f"Newton tol = {p['newton_tol']:g}")
+    elif p.get("load_steps") is None:
+        parts.append(f"static Newton, rtol = {p.get('rtol'):g}")
     else:
         parts.append(f"static Newton, rtol = {p.get('rtol'):g}, {p.get('load_steps')} load steps")
     return ", ".join(parts)

@@ -238,6 +238,7 @@ class SceneSpec:
     recommend_grids: tuple = ()
     dynamic: bool = False
     notes: str = ""
+    provides: frozenset | None = None  # physics of a scene without an element choice
 
     def reference(self, name: str | None = None) -> Reference:
         name = name or self.default_reference
@@ -412,6 +413,96 @@ def _spinning_spec() -> SceneSpec:
                      notes="Spinning beam (thesis Eq. 2.35 spin-up) against the steady extension.")
 
 
+BELT_STATIC_KNOBS = ("n_elements", "elastic_points", "rtol", "max_iterations")
+BELT_KNOBS = ("n_elements", "gauss_points", "elastic_points", "integrator", "dt", "rho_inf",
+              "newton_tol", "max_steps")
+BELT_PHYSICS = frozenset({"axial", "bending", "shear", "large-rotation"})
+
+
+def _circle(p):
+    return {"radius_m": p["belt_length"] / (2 * math.pi)}
+
+
+def _roundness_error(res, ref, p):
+    """max(|mean radius - R|, max |radius - mean radius|) / R, R = L/(2 pi)."""
+    return max(abs(res["radius_mean_m"] - ref["radius_m"]), res["radius_max_dev_m"]) / ref["radius_m"]
+
+
+def _belt_free_static_spec() -> SceneSpec:
+    refs = {"circle": Reference(
+        "circle", "analytic",
+        "the circle of circumference belt_length, radius R = L/(2π); error = max(|r̄ − R|, "
+        "max |r − r̄|) / R over the centreline's distance r from its centroid (r̄ its mean). "
+        "The mean radius levels off at 3.0e-6 R from 16 elements on (the ring's own axial "
+        "strain under bending), the deviation from roundness falls with the element count",
+        _circle, _roundness_error)}
+    grid = ({"n_elements": [4, 6, 8, 10, 16, 20, 40, 80], "elastic_points": [3, 5],
+             "rtol": [1e-8, 1e-4]},)
+    return SceneSpec("belt-free-static", BELT_STATIC_KNOBS,
+                     frozenset({"axial", "bending", "large-rotation"}), refs, "circle",
+                     report_grids=grid, recommend_grids=grid, provides=BELT_PHYSICS,
+                     notes="Belt released from the pulleys (Dufva elements, Table 3.1) against "
+                           "the circle it relaxes to.")
+
+
+BELT_WINDOW = 0.2  # s before t_end over which the driven speed is averaged
+
+
+def _mean_driven(res) -> float:
+    t, w = np.asarray(res["times"], float), np.asarray(res["omega_driven"], float)
+    return float(w[t >= t[-1] - BELT_WINDOW - 1e-12].mean())
+
+
+def _belt_error(res, ref, p):
+    """max of the relative errors of the driven speed averaged over the last BELT_WINDOW
+    seconds and of the tight and slack span tensions at t_end."""
+    if res.get("tension_tight_N") is None or float(res["times"][-1]) < ref["times"][-1] - 1e-9:
+        return float("nan")
+    errs = [abs(_mean_driven(res) - _mean_driven(ref)) / abs(_mean_driven(ref))]
+    errs += [abs(res[k] - ref[k]) / abs(ref[k]) for k in ("tension_tight_N", "tension_slack_N")]
+    return max(errs)
+
+
+#: the belt drive's self-reference: 120 elements differ from 80 by 1.4e-3 (tight tension),
+#: 40 from 80 by 2.8e-2; halving dt from 6.25e-5 s moves nothing by more than 5e-4
+BELT_FINE = {"n_elements": 120, "gauss_points": 11, "elastic_points": 5,
+             "integrator": "generalized-alpha", "dt": 1.25e-4, "newton_tol": 1e-10}
+
+
+def _no_slip(p):
+    return {"omega_ratio": p["R1"] / p["R2"]}
+
+
+def _slip_error(res, ref, p):
+    """|omega_ratio_steady - R1/R2| / (R1/R2): the slip of the drive."""
+    return abs(res["omega_ratio_steady"] - ref["omega_ratio"]) / ref["omega_ratio"]
+
+
+def _belt2d_spec() -> SceneSpec:
+    refs = {"self": self_reference(
+        "belt2d", BELT_FINE, ("times", "omega_driven", "tension_tight_N", "tension_slack_N"),
+        _belt_error,
+        "converged self-reference: 120 elements, 11 contact points, generalized-α, dt = "
+        "1.25e-4 s, Newton tolerance 1e-10 (cached; 80 elements differ from it by 1.4e-3); "
+        f"error = max of the relative errors of the driven speed averaged over the last "
+        f"{BELT_WINDOW:g} s and of the tight and slack span tensions at t_end",
+        check={"n_elements": 80}, knobs=BELT_KNOBS),
+            "no-slip": Reference(
+                "no-slip", "analytic",
+                "the inextensible belt without slip: ω_driven / ω_driver = R1/R2; error = "
+                "|omega_ratio_steady − R1/R2| / (R1/R2), the slip (creep and spin-up lag) "
+                "averaged over the last 0.1 s", _no_slip, _slip_error)}
+    grids = ({"n_elements": [10, 20, 40, 80], "gauss_points": [5, 7, 11],
+              "integrator": ["generalized-alpha"], "dt": [1e-3, 5e-4, 2.5e-4]},
+             {"n_elements": [20], "gauss_points": [7], "integrator": ["generalized-alpha"],
+              "dt": [2.5e-4], "newton_tol": [1e-4, 1e-5]})
+    needs = frozenset({"axial", "bending", "large-rotation", "inertia", "contact"})
+    return SceneSpec("belt2d", BELT_KNOBS, needs, refs, "self", report_grids=grids, recommend_grids=grids, dynamic=True,
+                     provides=BELT_PHYSICS | {"inertia", "contact"},
+                     notes="Two-pulley belt drive (thesis 3.3, Table 3.1, no opposing torque) "
+                           "against a converged self-reference.")
+
+
 #: Scene name -> spec factory.  One entry per scene; dynamic ones activate with their scene.
 SPECS: dict[str, Callable[[], SceneSpec]] = {
     "cantilever": _cantilever_spec,
@@ -419,6 +510,8 @@ SPECS: dict[str, Callable[[], SceneSpec]] = {
     "axial-bar": _axial_bar_spec,
     "pendulum": _pendulum_spec,
     "spinning-beam": _spinning_spec,
+    "belt-free-static": _belt_free_static_spec,
+    "belt2d": _belt2d_spec,
 }
 
 
@@ -461,6 +554,8 @@ def specs() -> dict:
 def model_physics(scene: str, params: dict) -> frozenset:
     """The physics a configuration provides."""
     s = spec(scene)
+    if s.provides is not None:
+        return s.provides
     got = set(ELEMENT_PHYSICS.get(params.get("element", "linear"), frozenset()))
     if not s.dynamic:
         got.discard("inertia")

@@ -648,7 +648,9 @@ def rows_for(df: pd.DataFrame, scene: str, physical: dict) -> pd.DataFrame:
         if k not in df:
             return df.iloc[0:0]
         col = df[k]
-        if isinstance(v, float):
+        if v is None:  # a parameter computed by the scene (stored as null)
+            m &= col.isna()
+        elif isinstance(v, float):
             m &= np.isclose(pd.to_numeric(col, errors="coerce"), v, rtol=1e-12, atol=0)
         else:
             m &= col.astype(str) == str(v)

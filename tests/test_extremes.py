@@ -98,12 +98,46 @@ def test_every_issue_axis_is_declared_and_missing_scenes_are_said():
     for a in extremes.AXES:
         ok, why = a.applicable()
         if a.name in ("penalty", "nu_s"):
-            assert not ok and why == "not applicable yet: no contact scene"
+            assert ok and a.scene == "belt2d" and a.reference == "no-slip"
         elif not ok:
             assert why.startswith("not applicable yet")
 
 
+def _belt_ends(workdir):
+    """Both ends of the penalty and nu_s axes, as the axes run them (t_end = 0.6 s)."""
+    ax = {a.name: a for a in extremes.AXES}
+    grids = [dict(g, **{k: [v] for k, v in pin.items()})
+             for name, values in (("penalty", (1e4, 1e10)), ("nu_s", (1e2, 1e7)))
+             for g in ax[name].grids() for pin in ({ax[name].column: x} for x in values)]
+    df = run_sweep("belt2d", grids, out=workdir / "belt_ends.parquet", workers=2, progress=False,
+                   log=lambda m: None, reference="no-slip", time_limit=120.0)
+    df["diagnosis"] = [extremes.diagnosis(r) for _, r in df.iterrows()]
+    df["diagnosis"] = [(extremes.belt_warning(r) or d) if d == "ok" else d
+                       for d, (_, r) in zip(df["diagnosis"], df.iterrows())]
+    return df
+
+
+def test_belt_contact_extremes_end_in_a_result_or_a_diagnosis(workdir):
+    """Soft penalty (k_p = 1e4): the belt sinks into the pulleys by more than its
+    pre-stretch per wrap and slips (today 83 %); tiny nu_s (1e2): slip (today 85 %);
+    k_p = 1e10 and nu_s = 1e7: Newton fails even at dt/16 (today at t = 0.257 s and
+    0.0528 s, during the ramp)."""
+    df = _belt_ends(workdir)
+    soft, stiff = df[df["k_p"] == 1e4].iloc[0], df[df["k_p"] == 1e10].iloc[0]
+    slow, sticky = df[df["nu_s"] == 1e2].iloc[0], df[df["nu_s"] == 1e7].iloc[0]
+    pre = extremes.belt_prestretch(soft)
+    assert pre == pytest.approx((1.27627 - 1.2727) / (2 * math.pi), rel=1e-3)
+    assert soft["status"] == "ok" and soft["res_penetration_max_m"] > 0.5 * pre
+    assert soft["diagnosis"].startswith("penetration") and soft["error"] > 0.5
+    assert slow["status"] == "ok" and slow["diagnosis"].startswith("slip") and slow["error"] > 0.5
+    for r in (stiff, sticky):
+        assert r["status"] == "not-converged" and math.isnan(r["error"])
+        assert r["diagnosis"].startswith("Newton failed at t = ")
+
+
 @pytest.mark.parametrize("message,status,expected", [
+    ("no convergence: Newton failed at t = 0.05275 s even with steps of dt/2^4", "not-converged",
+     "Newton failed at t = 0.05275 s"),
     ("No convergence: singular tangent stiffness (x); load factor reached 0.5000", "not-converged",
      "singular tangent"),
     ("No convergence: no convergence in 25 iterations (|r| = 1e3); load factor reached 0.2500 "

@@ -125,7 +125,9 @@ def extremes_chapter(workers=None) -> tuple[str, dict]:
             status[f"Extremes: {axis.title}"] = msg
             continue
         keep = [c for c in ("element", "integration", "n_elements", "integrator", "dt", "rtol",
-                            "nu", "h", "F", "load_steps", "max_iterations", "status",
+                            "nu", "h", "F", "load_steps", "max_iterations", "k_p", "nu_s",
+                            "t_end", "res_omega_ratio_steady", "res_penetration_max_m",
+                            "res_tension_tight_N", "res_tension_slack_N", "status",
                             "diagnosis", "error", "message", "cpu_time_s", "wall_time_s")
                 if c in df]
         write_csv(df[keep], f"extremes_{axis.name.replace('-', '_')}")

@@ -44,7 +44,12 @@ def pareto(df: pd.DataFrame, cost: str = "work", err: str = "error") -> pd.DataF
 
 
 def _model(row, dynamic: bool) -> str:
-    s = f"{row['element']} / {row['integration']}"
+    if isinstance(row.get("element"), str):
+        s = f"{row['element']} / {row['integration']}"
+    elif "gauss_points" in row:
+        s = f"{int(row['gauss_points'])} contact points"
+    else:
+        s = f"{int(row['elastic_points'])} elastic points"
     if dynamic:
         integ = row.get("integrator")
         s += f" / {integ}"
@@ -54,7 +59,8 @@ def _model(row, dynamic: bool) -> str:
 def _solver(row, dynamic: bool) -> str:
     if dynamic:
         if row.get("integrator") == "generalized-alpha":
-            return f"dt = {row['dt']:g}"
+            tol = f", Newton tol = {row['newton_tol']:g}" if "newton_tol" in row else ""
+            return f"dt = {row['dt']:g}{tol}"
         return f"rtol = {row['rtol']:g}"
     return f"Newton rtol = {row['rtol']:g}"
 
@@ -113,7 +119,8 @@ def plot(df: pd.DataFrame, scene: str, dynamic: bool, ax, err: str = "error", ti
 #: and the first value of every other list; dynamic scenes over a shorter simulated time
 QUICK_N = 2
 QUICK_FIXED = {"pendulum": {"t_end": 0.2, "output_dt": 0.01},
-               "spinning-beam": {"t_end": 2.0, "mean_window": 1.0}}
+               "spinning-beam": {"t_end": 2.0, "mean_window": 1.0},
+               "belt2d": {"t_end": 0.3}}
 
 
 def quick_grids(grids) -> list:
@@ -144,8 +151,8 @@ def scene_sweep(scene: str, workers=None, fresh: bool = True, out=None) -> pd.Da
     return with_work(df[df["scene"] == scene])
 
 
-_CSV_COLS = ("element", "integration", "n_elements", "integrator", "rtol", "atol", "dt",
-             "load_steps", "status", "message", "error", "error_self", "work", "cpu_time_s",
+_CSV_COLS = ("element", "integration", "n_elements", "gauss_points", "elastic_points",
+             "integrator", "rtol", "atol", "dt", "newton_tol", "load_steps", "status", "message", "error", "error_self", "work", "cpu_time_s",
              "steps", "iterations") + tuple(f"count_{k}" for k in FEATURES)
 
 _INTRO = (

@@ -46,6 +46,8 @@ class Param:
         return f"{kind} in {'(' if self.lo_open or self.lo is None else '['}{lo}, {hi}{')' if self.hi_open or self.hi is None else ']'}"
 
     def parse(self, value):
+        if value is None and self.default is None:
+            return None  # a parameter computed when not given: resolved sets round-trip
         try:
             if self.kind is int:
                 v = float(value)

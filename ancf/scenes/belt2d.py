@@ -10,7 +10,8 @@ creep-rate friction at ``gauss_points`` points per element (:mod:`ancf.contact`)
 
 Results: the angular velocities of both pulleys sampled every ``output_dt``, the
 vertical positions of the span midpoints, the span tensions at ``t_end`` (mean
-axial force over each span's middle third), the steady ratio of the angular
+axial force over each span's middle third) and the largest penetration into a
+pulley at ``t_end``, the steady ratio of the angular
 velocities, the model size and the run statistics.
 """
 from __future__ import annotations
@@ -98,6 +99,7 @@ def _at_end(drive, res, p) -> dict:
     in_contact = (smp.d >= 0).any(axis=1).reshape(drive.mesh.n_elements, -1).any(axis=1)
     return {"tension_tight_N": span_tension(smp, sp["tight"], R),
             "tension_slack_N": span_tension(smp, sp["slack"], R),
+            "penetration_max_m": float(max(smp.d.max(), 0.0)),
             "contact_dofs": int(np.unique(drive.mesh.dofmap[in_contact]).size),
             "total_dofs": drive.n + 1}
 
@@ -137,7 +139,8 @@ def run(p: dict) -> SceneResult:
                "omega_ratio_steady": _steady_ratio(res.t, wd, wn, p["t_end"]) if ok else None}
     results.update(_midpoints(drive, res, p))
     results.update(_at_end(drive, res, p) if ok else
-                   dict.fromkeys(("tension_tight_N", "tension_slack_N", "contact_dofs", "total_dofs")))
+                   dict.fromkeys(("tension_tight_N", "tension_slack_N", "penetration_max_m",
+                                  "contact_dofs", "total_dofs")))
     results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
                    contact_pairs=res.extra["contact_pairs"], pretension_iterations=pre_iterations)
     return SceneResult(ok, res.message, results, extra={"result": res, "drive": drive})
