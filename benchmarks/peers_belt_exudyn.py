@@ -42,9 +42,12 @@ import time
 
 import numpy as np
 
-import exudyn as exu
-from exudyn import itemInterface as ei
-from exudyn.utilities import CreateSymbolicUserFunction
+try:
+    import exudyn as exu
+    from exudyn import itemInterface as ei
+    from exudyn.utilities import CreateSymbolicUserFunction
+except ImportError:  # optional extra `peers`: the constants and the path serve without it
+    exu = ei = CreateSymbolicUserFunction = None
 
 #: Table 3.1 [SI units: m, kg/m^3, Pa, N/m^2, N s/m^2, kg/(m s), kg m^2]
 TABLE = {"R": 0.08125, "x_driver": -0.191441, "x_driven": 0.191441, "rho": 1036.0,
