@@ -110,6 +110,10 @@ RESULTS = {
         "tension_tight_N": _nullable("tight span: mean axial force over its middle third at "
                                      "t_end, N"),
         "tension_slack_N": _nullable("slack span: the same, N"),
+        "tension_tight_mean_N": _nullable("tight span tension averaged over the samples of the "
+                                          "last 0.1 s (the instantaneous one carries the span "
+                                          "and pulley oscillations), N"),
+        "tension_slack_mean_N": _nullable("slack span: the same, N"),
         "penetration_max_m": _nullable("largest penetration of the belt's centreline sample "
                                        "points into a pulley at t_end, m"),
         "contact_dofs": field(INT, "belt coordinates of the elements touching a pulley at t_end",

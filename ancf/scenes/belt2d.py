@@ -92,14 +92,20 @@ def _steady_ratio(t, wd, wn, t_end) -> float | None:
 
 
 def _at_end(drive, res, p) -> dict:
-    """Span tensions and model size at the last sample."""
+    """Span tensions at t_end and averaged over the last STEADY_WINDOW, model size."""
+    sp, R = spans(drive.spec.path), min(p["R1"], p["R2"])
     smp = sample(drive, res.q[-1], res.v[-1], float(res.t[-1]))
-    sp = spans(drive.spec.path)
-    R = min(p["R1"], p["R2"])
     in_contact = (smp.d >= 0).any(axis=1).reshape(drive.mesh.n_elements, -1).any(axis=1)
+    window = np.flatnonzero(res.t >= res.t[-1] - STEADY_WINDOW - 1e-12)
+    mean = {k: [] for k in sp}
+    for i in window:
+        s_i = sample(drive, res.q[i], res.v[i], float(res.t[i]), npts=4)
+        for k, span in sp.items():
+            mean[k].append(span_tension(s_i, span, R))
     return {"tension_tight_N": span_tension(smp, sp["tight"], R),
             "tension_slack_N": span_tension(smp, sp["slack"], R),
-            "penetration_max_m": float(max(smp.d.max(), 0.0)),
+            "tension_tight_mean_N": float(np.mean(mean["tight"])),
+            "tension_slack_mean_N": float(np.mean(mean["slack"])),
             "contact_dofs": int(np.unique(drive.mesh.dofmap[in_contact]).size),
             "total_dofs": drive.n + 1}
 
