@@ -106,6 +106,7 @@ def _at_end(drive, res, p) -> dict:
             "tension_slack_N": span_tension(smp, sp["slack"], R),
             "tension_tight_mean_N": float(np.mean(mean["tight"])),
             "tension_slack_mean_N": float(np.mean(mean["slack"])),
+            "penetration_max_m": float(max(smp.d.max(), 0.0)),
             "contact_dofs": int(np.unique(drive.mesh.dofmap[in_contact]).size),
             "total_dofs": drive.n + 1}
 
@@ -145,8 +146,9 @@ def run(p: dict) -> SceneResult:
                "omega_ratio_steady": _steady_ratio(res.t, wd, wn, p["t_end"]) if ok else None}
     results.update(_midpoints(drive, res, p))
     results.update(_at_end(drive, res, p) if ok else
-                   dict.fromkeys(("tension_tight_N", "tension_slack_N", "penetration_max_m",
-                                  "contact_dofs", "total_dofs")))
+                   dict.fromkeys(("tension_tight_N", "tension_slack_N", "tension_tight_mean_N",
+                                  "tension_slack_mean_N", "penetration_max_m", "contact_dofs",
+                                  "total_dofs")))
     results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
                    contact_pairs=res.extra["contact_pairs"], pretension_iterations=pre_iterations)
     return SceneResult(ok, res.message, results, extra={"result": res, "drive": drive})
