@@ -30,6 +30,7 @@ import pandas as pd
 
 from ancf.elements.catalogue import ELEMENTS
 from ancf.references import cache_root
+from ancf.scenes.belt2d import PENETRATION_WARN
 
 E, L, B = 2.07e11, 2.0, 0.1
 MODEL_1 = {"h": 0.1, "nu": 0.3}
@@ -181,7 +182,6 @@ def _spin_grids():
 
 BELT_T_END = 0.6       # s: the driver's ramp ends (Eq. 3.29)
 BELT_SLIP = 1e-2       # slip beyond which a converged belt run is flagged
-BELT_PENETRATION = 0.5  # x the pre-stretch per wrap beyond which penetration is flagged
 
 
 def _belt_grid(key, values):
@@ -209,20 +209,18 @@ def _belt_label(key, unit):
 
 
 def belt_prestretch(row) -> float:
-    """(wrapped path - belt_length) / (2 pi) of a belt2d row, m: the penetration depth on
-    both pulleys that shortens the path to the belt's length (releases the pre-tension)."""
-    import math
+    """The pre-stretch per wrap (:func:`ancf.scenes.belt2d.prestretch`) of a belt2d row, m."""
     from ancf.scenes import SCENES
-    from ancf.scenes import belt_common as bc
+    from ancf.scenes import belt2d
     p = SCENES["belt2d"].resolve({k: row[k] for k in ("R1", "R2", "belt_length") if k in row
                                   and row[k] is not None and row[k] == row[k]})
-    return (bc.path_of(p).length - bc.belt_length(p)) / (2 * math.pi)
+    return belt2d.prestretch(belt2d.spec(p))
 
 
 def belt_warning(row) -> str | None:
     """Accuracy warning of a converged belt2d row: deep penetration, else large slip."""
     pen, ratio = row.get("res_penetration_max_m"), row.get("res_omega_ratio_steady")
-    if pen is not None and pen == pen and pen > BELT_PENETRATION * belt_prestretch(row):
+    if pen is not None and pen == pen and pen > PENETRATION_WARN * belt_prestretch(row):
         return (f"penetration {pen * 1e3:.2g} mm = {pen / row['h']:.2g} h = "
                 f"{pen / belt_prestretch(row):.2g} × pre-stretch")
     err = row.get("error")
@@ -316,7 +314,7 @@ AXES = (
              "the end of the driver's ramp, where the driven pulley needs the most torque; k_p "
              "from 1e4 to 1e10 N/m² (default 1e7). Error against the no-slip drive "
              "(ω_driven / ω_driver = R1/R2), i.e. the slip over the last 0.1 s. A converged run "
-             f"is flagged when its penetration at t_end exceeds {BELT_PENETRATION:g} × the "
+             f"is flagged when its penetration at t_end exceeds {PENETRATION_WARN:g} × the "
              "belt's pre-stretch per wrap, (path − belt_length)/(2π): sunk that deep into the "
              "pulleys the belt has lost most of its pre-tension, so the drive slips; when its "
              f"slip exceeds {100 * BELT_SLIP:g} % the cell shows the slip."),

@@ -16,6 +16,7 @@ velocities, the model size and the run statistics.
 """
 from __future__ import annotations
 
+import math
 import sys
 
 import numpy as np
@@ -31,6 +32,7 @@ from ancf.solvers.belt_scipy import simulate_bdf
 
 INTEGRATORS = ("generalized-alpha", "bdf")
 PROGRESS_STEPS = 20_000  # runs of at least this many steps report progress on a terminal
+PENETRATION_WARN = 0.5  # x the pre-stretch per wrap (see warn)
 STEADY_WINDOW = 0.1  # s before t_end over which the steady speed ratio is averaged
 
 
@@ -154,6 +156,26 @@ def run(p: dict) -> SceneResult:
     return SceneResult(ok, res.message, results, extra={"result": res, "drive": drive})
 
 
+def prestretch(spec) -> float:
+    """(wrapped path - belt length) / (2 pi), m: the penetration on both pulleys that
+    would shorten the path to the belt's length and release its pre-tension."""
+    return (spec.path.length - spec.belt_length) / (2 * math.pi)
+
+
+def warn(p: dict, res: SceneResult) -> list:
+    """Penetration beyond PENETRATION_WARN x the pre-stretch per wrap: the penalty is too
+    soft for the pre-tension (the drive then slips for want of belt tension)."""
+    pen, drive = res.results.get("penetration_max_m"), res.extra.get("drive")
+    if pen is None or drive is None or prestretch(drive.spec) <= 0:
+        return []
+    pre = prestretch(drive.spec)
+    if pen <= PENETRATION_WARN * pre:
+        return []
+    return [f"penetration {1e3 * pen:.2g} mm = {pen / pre:.2g} x the pre-stretch per wrap "
+            f"((path - belt_length)/2 pi = {1e3 * pre:.2g} mm): k_p = {p['k_p']:g} N/m^2 is too "
+            "soft for the pre-tension; raise k_p"]
+
+
 def _progress(p: dict):
     """Progress lines on stderr for long runs from a terminal."""
     if not sys.stderr.isatty() or p["t_end"] / p["dt"] < PROGRESS_STEPS:
@@ -164,4 +186,4 @@ SCENE = Scene(
     "belt2d",
     "Two-pulley belt drive: Dufva belt elements, penalty contact with creep-rate friction, "
     "driver ramp Eq. 3.29, driven pulley with inertia and opposing torque (thesis 3.3).",
-    params(), run, check)
+    params(), run, check, warn=warn)
