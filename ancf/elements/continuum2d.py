@@ -11,9 +11,11 @@ its own quadrature rule; the bases of all terms are set side by side once
 (:class:`~ancf.elements.basis.Basis`), and energy, gradient and tangent are one
 call of the strain model's compiled kernel (:mod:`ancf.elements.green2d`).
 
-A concrete element (``linear2d``, ``omar_shabana``) names its shape-function
-``family``, its nodal ``slots`` (each a dim-vector), its integration ``schemes``
-and how its material splits into terms; it then satisfies
+A concrete element (``linear2d``, ``omar_shabana``, ``linear3d``) names its
+shape-function ``family``, its nodal ``slots`` (each a dim-vector), its integration
+``schemes`` and how its material splits into terms (a spatial one also its
+``strain`` model, :mod:`ancf.elements.green3d`, and its ``basis``,
+:class:`~ancf.elements.basis.SectionBasis`); it then satisfies
 :class:`ancf.elements.contract.Element`.
 """
 from __future__ import annotations
@@ -36,6 +38,7 @@ class ContinuumElement:
     slots: tuple = ()
     schemes: dict = {}
     strain = GreenPlanar
+    basis = Basis
 
     def __init__(self, lengths, e0, section: RectangularSection, terms, rho: float = 0.0):
         self.shapes = family_shapes(self.family)
@@ -44,8 +47,8 @@ class ContinuumElement:
         self.ndof = self.dim * self.nshape
         self.section, self.rho, self.terms = section, rho, tuple(terms)
         E0 = np.asarray(e0, dtype=float).reshape(self.nel, self.nshape, self.dim)
-        self.points = Basis.concat([Basis(self.shapes, self.lengths, E0, section, t.nx, t.ny)
-                                    for t in self.terms])
+        self.points = self.basis.concat([self.basis(self.shapes, self.lengths, E0, section, t.nx, t.ny)
+                                         for t in self.terms])
         self.C = np.ascontiguousarray(np.stack([np.asarray(t.C, dtype=float) for t in self.terms]))
 
     @classmethod
@@ -56,7 +59,7 @@ class ContinuumElement:
     def _args(self, e):
         E = np.ascontiguousarray(e, dtype=float).reshape(self.nel, self.nshape, self.dim)
         p = self.points
-        return (E, p.E0, p.BX, p.BY, p.dX0, p.dY0, p.w, self.C, p.cidx)
+        return (E, p.E0, *p.arrays(), self.C, p.cidx)
 
     def energy(self, e) -> np.ndarray:
         """Strain energy U of each element, J (e: (nel, ndof))."""

@@ -1,7 +1,8 @@
 """Materials of the planar continuum beams and the energy terms they are split into.
 
 A material is a 3x3 matrix acting on Voigt Green strains ``[eps_xx, eps_yy, 2 eps_xy]``
-(Pa).  An element's strain energy is a sum of :class:`EnergyTerm` s, each a part of
+(Pa), or for the spatial beams a 6x6 one on ``[eps_xx, eps_yy, eps_zz, 2 eps_yz,
+2 eps_xz, 2 eps_xy]``.  An element's strain energy is a sum of :class:`EnergyTerm` s, each a part of
 the material integrated with its own rule: this is how selective and reduced
 integration are expressed (``normal=2x2,shear=1x1``; ``e`` = exact across the height).
 """
@@ -37,6 +38,14 @@ def beam_material(E: float, nu: float, ks: float) -> tuple[np.ndarray, np.ndarra
     and its shear part diag(0, 0, ks G), G = E / (2 (1 + nu))."""
     G = E / (2.0 * (1.0 + nu))
     return np.diag([E, E, 0.0]), np.diag([0.0, 0.0, ks * G])
+
+
+def beam_material_3d(E: float, nu: float, ks: float) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`beam_material` in 3D: normal part diag(E, E, E, 0, 0, 0) and shear part
+    diag(0, 0, 0, ks G, ks G, ks G) on the spatial Voigt strains, Pa."""
+    C_normal, C_shear = beam_material(E, nu, ks)
+    e, ksg = C_normal[0, 0], C_shear[2, 2]
+    return np.diag([e, e, e, 0.0, 0.0, 0.0]), np.diag([0.0, 0.0, 0.0, ksg, ksg, ksg])
 
 
 def parse_rule(text: str):
