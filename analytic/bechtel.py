@@ -33,6 +33,7 @@ transmissible torque is the ``T_a`` whose slip arc is the whole wrap, ``phi = pi
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass
 
 import numpy as np
@@ -48,15 +49,16 @@ RTOL = 4e-15
 
 PARAMS = (
     Param("k", 0.2e3, float, "N", "axial stiffness E A (thesis: 0.2 kN compliant, 25 kN stiff)",
-          lo=0, lo_open=True),
-    Param("R", MODEL2["R"], float, "m", "radius of both pulleys", lo=0, lo_open=True),
-    Param("omega", MODEL2["omega"], float, "rad/s", "driver angular velocity", lo=0, lo_open=True),
-    Param("mu", MODEL2["mu"], float, "-", "Coulomb friction coefficient", lo=0, lo_open=True),
+          lo=1e-6, hi=1e12),
+    Param("R", MODEL2["R"], float, "m", "radius of both pulleys", lo=0, lo_open=True, hi=10),
+    Param("omega", MODEL2["omega"], float, "rad/s", "driver angular velocity", lo=0, lo_open=True,
+          hi=1e5),
+    Param("mu", MODEL2["mu"], float, "-", "Coulomb friction coefficient", lo=1e-6, hi=10),
     Param("T_i", 50.0, float, "N", "installation tension (uniform, belt at rest)",
-          lo=0, lo_open=True),
-    Param("T_a", 2.0, float, "N m", "torque taken off the driven pulley", lo=0),
+          lo=0, lo_open=True, hi=1e9),
+    Param("T_a", 2.0, float, "N m", "torque taken off the driven pulley", lo=0, hi=1e9),
     Param("rhoA", MODEL2["rho"] * MODEL2["w"] * MODEL2["h"], float, "kg/m",
-          "mass per unstretched length (default rho w h of Model 2)", lo=0),
+          "mass per unstretched length (default rho w h of Model 2)", lo=0, hi=1e3),
 )
 
 
@@ -110,7 +112,7 @@ def _state(p: dict, n_s: float, T_a: float) -> Belt:
     """
     k, m = p["k"], p["rhoA"] * (p["omega"] * p["R"]) ** 2
     n_t = n_s + T_a / p["R"]
-    T_t = n_t + 2.0 * k * m / (math.sqrt((k + n_t) ** 2 + 4.0 * k * m) + k + n_t)
+    T_t = n_t + 2.0 * k * m / (math.hypot(k + n_t, 2.0 * math.sqrt(k * m)) + k + n_t)
     T_s = (k * (T_t - T_a / p["R"]) + n_s * T_t) / (k + n_t)
     v_o = p["omega"] * p["R"] / (1.0 + T_t / k)
     return Belt(k, p["R"], p["omega"], p["mu"], p["rhoA"], T_t, T_s, n_t, n_s, v_o)
@@ -130,7 +132,7 @@ def mass_residual(b: Belt, T_i: float) -> float:
 
 def _n_min(p: dict, T_a: float) -> float:
     """Smallest n_s (N): slip over the whole wrap, phi = pi (positive normal force at T_a = 0)."""
-    return T_a / (p["R"] * math.expm1(p["mu"] * math.pi)) if T_a > 0 else XTOL_N
+    return T_a / (p["R"] * math.expm1(p["mu"] * math.pi)) if T_a > 0 else sys.float_info.min
 
 
 def _full_slip_residual(p: dict, T_a: float) -> float:
@@ -176,7 +178,8 @@ def steady(p: dict, capstan: bool = False) -> tuple[Belt, float]:
                          "slip over the whole wrap)")
     f = lambda n_s: mass_residual(_state(p, n_s, p["T_a"]), p["T_i"])  # noqa: E731
     lo = _n_min(p, p["T_a"])
-    n_s = brentq(f, lo, _bracket_up(f, max(lo, p["T_i"])), xtol=XTOL_N, rtol=RTOL)
+    n_s = lo if f(lo) <= 0 else brentq(f, lo, _bracket_up(f, max(lo, p["T_i"])), xtol=XTOL_N,
+                                       rtol=RTOL)  # f(lo) <= 0 only at T_a = max, round-off
     return _state(p, n_s, p["T_a"]), top
 
 
