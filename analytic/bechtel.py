@@ -29,6 +29,12 @@ With ``n_s = T_slack - G v_slack`` (N) as the one unknown, everything else is cl
 condition.  The capstan variant drops the inertia from the momentum equations (G = 0 in
 Eqs 4.2-4.3: ``n = T``), i.e. it is the same solution at ``rhoA = 0``.  The largest
 transmissible torque is the ``T_a`` whose slip arc is the whole wrap, ``phi = pi``.
+
+Defaults: Table 4.1 Model 2 (R, mu, omega_0, rhoA = rho w h = 0.02 kg/m), k = 0.2 kN
+(Figs 4.11-4.18; = E w h with the E = 1.6667e6 Pa of the plate model), T_i = 50 N (thesis,
+after Fig. 4.10), T_a = 2 N m (Eq. 4.47 at steady state).  The thesis's "approximately
+14.6 %" slower driven pulley (k = 0.2 kN, read off Fig. 4.14) is not reproduced: this
+model gives 15.16 % (capstan 14.71 %); see tests/test_bechtel.py.
 """
 from __future__ import annotations
 
@@ -173,9 +179,8 @@ def steady(p: dict, capstan: bool = False) -> tuple[Belt, float]:
     p = dict(p, rhoA=0.0) if capstan else p
     top = max_torque(p)
     if p["T_a"] > top:
-        raise InputError(f"T_a = {p['T_a']!r} N m is out of range{' (capstan)' if capstan else ''}"
-                         f"; allowed: [0, {top:.6g}] N m (the largest transmissible torque, "
-                         "slip over the whole wrap)")
+        raise InputError(f"T_a = {p['T_a']!r} N m is out of range; allowed: [0, {top:.6g}] N m "
+                         "(the largest transmissible torque, slip over the whole wrap)")
     f = lambda n_s: mass_residual(_state(p, n_s, p["T_a"]), p["T_i"])  # noqa: E731
     lo = _n_min(p, p["T_a"])
     n_s = lo if f(lo) <= 0 else brentq(f, lo, _bracket_up(f, max(lo, p["T_i"])), xtol=XTOL_N,
