@@ -1,7 +1,7 @@
 """Analytic references exposed like scenes (``ancf analytic NAME``)."""
 from __future__ import annotations
 
-from analytic import reissner, timoshenko
+from analytic import bechtel, reissner, timoshenko
 from ancf.scenes.base import Param, Scene, SceneResult
 
 _SECTION = (
@@ -26,6 +26,11 @@ def _reissner(p):
                        extra={"solution": r})
 
 
+def _bechtel(p):
+    return SceneResult(True, "closed form per slip arc, installed mass by Brent's method "
+                       f"(xtol {bechtel.XTOL_N:g} N)", bechtel.results(p))
+
+
 def _with(params, **defaults):
     return tuple(Param(p.name, defaults.get(p.name, p.default), p.kind, p.unit, p.doc, p.lo, p.hi,
                        p.lo_open, p.hi_open, p.choices) for p in params)
@@ -39,6 +44,9 @@ REFERENCES = {
         "reissner", "Geometrically exact (Reissner) cantilever, dead tip load (BVP, scipy).",
         _with(_SECTION, nu=0.3) + (Param("F", lambda v: -5e8 * v["h"] ** 3, float, "N",
                                          "vertical tip force (default -5e8 h^3)"),), _reissner),
+    "bechtel": Scene(
+        "bechtel", "Bechtel et al.'s steady extensible belt on two pulleys, stick and slip arcs "
+        "(thesis 4.1; Model 2).", bechtel.PARAMS, _bechtel),
 }
 
 from analytic.dynamics_refs import DYNAMIC_REFERENCES  # noqa: E402  (imports Scene from above)

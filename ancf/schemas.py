@@ -21,10 +21,11 @@ NUM, INT, STR, BOOL = "number", "integer", "string", "boolean"
 
 
 def field(kind: str, doc: str, nullable: bool = False, required: bool = True,
-          items: str | None = None) -> dict:
-    """Declaration of one result key (``items``: the element type of an array)."""
+          items: str | None = None, keys: dict | None = None) -> dict:
+    """Declaration of one result key (``items``: the element type of an array; ``keys``:
+    the declarations of an object's keys)."""
     return {"kind": kind, "doc": doc, "nullable": nullable, "required": required,
-            "items": items}
+            "items": items, "keys": keys}
 
 
 def series(doc: str) -> dict:
@@ -67,6 +68,15 @@ _DYNAMIC = {
 def _nullable(doc: str) -> dict:
     return field(NUM, doc, nullable=True)
 
+
+_BELT_STEADY = {
+    "T_tight_N": _nullable("tight-span tension, N"), "T_slack_N": _nullable("slack-span tension, N"),
+    "v_tight": _nullable("tight-span speed (= omega R of the driver), m/s"),
+    "v_slack": _nullable("slack-span speed (= omega R of the driven pulley), m/s"),
+    "slip_arc_driver_rad": _nullable("slip arc on the driver, rad"),
+    "slip_arc_driven_rad": _nullable("slip arc on the driven pulley, rad"),
+    "omega_ratio": _nullable("omega_driven / omega_driver = v_slack / v_tight"),
+    "max_torque_Nm": _nullable("largest transmissible torque (slip over the whole wrap), N m")}
 
 #: result keys per scene / analytic reference
 RESULTS = {
@@ -130,6 +140,9 @@ RESULTS = {
         "axial_extension_m": _nullable("steady axial extension (Eq. 2.36), m"),
         "al": _nullable("the parameter a L of Eq. 2.36"),
         "axial_extension_thesis_m": _nullable("the same as printed in the thesis, m")},
+    "bechtel": {**_BELT_STEADY, "capstan": field("object", "the same keys with the belt's "
+                                                 "inertia neglected (capstan model)",
+                                                 keys=_BELT_STEADY)},
     "rigid-pendulum": {"times": series("sample times, s"), "theta": series("angle, rad"),
                        "tip_x": series("tip x, m"), "tip_y": series("tip y, m")},
 }
@@ -147,6 +160,8 @@ def _result_schema(decl: dict) -> dict:
         props[k] = {"type": _type(f["kind"], f["nullable"]), "description": f["doc"]}
         if f["items"]:
             props[k]["items"] = {"type": [f["items"], "null"]}
+        if f["keys"]:
+            props[k].update({kk: v for kk, v in _result_schema(f["keys"]).items() if kk != "type"})
     return {"type": "object", "properties": props, "additionalProperties": False,
             "required": [k for k, f in decl.items() if f["required"]]}
 
