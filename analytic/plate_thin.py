@@ -6,7 +6,8 @@ surface, the energy per unit area (J/m^2) as a function of fifteen point variabl
     r_x, r_y (3 each, -), r_xx, r_xy, r_yy (3 each, 1/m),
 
 and of three material coefficients ``k = (E h / (2 (1 - nu^2)) (N/m), D / 2 (N m),
-nu (-))`` with ``D = E h^3 / 12``.
+nu (-))`` with ``D = E h^3 / (12 (1 - nu^2))`` (the element's choice; the
+thesis prints ``E h^3 / 12``).
 
 Membrane part, Eq. 4.16, from the mid-surface Green strains of a reference that is
 flat and aligned with the local axes (``r_x = e_x``, ``r_y = e_y``)::
