@@ -152,9 +152,9 @@ class Plate36:
         _check("nu", nu, lambda v: -1.0 < v < 0.5, "in (-1, 0.5)")
         _check("rho", rho, lambda v: np.isfinite(v) and v >= 0, "finite and >= 0")
         _check("ng", ng, lambda v: isinstance(v, (int, np.integer)) and v >= 1, "an integer >= 1")
-        a, b = np.broadcast_arrays(np.asarray(a, dtype=float).ravel(), np.asarray(b, dtype=float).ravel())
-        _check("a, b", (a, b), lambda v: a.size > 0 and np.all(np.isfinite(a) & (a > 0) & np.isfinite(b)
-                                                                & (b > 0)), "finite and > 0")
+        a, b = np.broadcast_arrays(*(np.asarray(v, dtype=float).ravel() for v in (a, b)))
+        _check("a, b", (a, b), lambda v: a.size > 0 and np.all(np.isfinite(v) & (np.stack(v) > 0)),
+               "non-empty, finite and > 0")
         self.lengths, self.widths = a.copy(), b.copy()
         self.nel, self.nshape = a.size, 12
         self.ndof = self.dim * self.nshape
