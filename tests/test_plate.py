@@ -14,6 +14,9 @@ with nu = 0 the cubic beam deflection lies in the element space and every mesh
 gives it (1 x 1: 2e-11, 8 x 2: 2e-7 relative, round-off); with nu = 0.3 the plate
 is stiffer than E I (read as the clamp suppressing anticlastic curvature): -6.7 %, -3.9 %,
 -2.0 %, -1.1 % with 1, 2, 4, 8 x 1 elements, -0.70 % with 16 x 2, -0.57 % with 32 x 4.
+Large deflection (nu = 0, F = E I/L^2, tip at 0.30 L; Newton, ancf.solvers.static)
+against the Reissner beam (analytic/reissner.py): largest relative tip-coordinate
+error 6.2e-3, 2.5e-4, 4.6e-5 with 4, 8, 16 x 1 elements.
 """
 from __future__ import annotations
 
@@ -23,12 +26,14 @@ import numpy as np
 import pytest
 import scipy.sparse.linalg as sla
 
-from analytic import navier_plate, plate_thin
+from analytic import navier_plate, plate_thin, reissner
 from ancf.assembly import Assembly, ElementGroup
+from ancf.constraints import Elimination
 from ancf.elements import _generated as shape_gen
 from ancf.elements.plate36 import Plate36
 from ancf.plate_mesh import SLOTS, PlateMesh
 from ancf.quadrature import gauss01
+from ancf.solvers.static import NewtonOptions, solve_static
 
 STEEL = dict(h=0.01, E=2.1e11, nu=0.3)
 NAVIER_TOL = 0.01  # relative centre-deflection error of the finest mesh
@@ -212,3 +217,32 @@ def test_cantilever_strip_matches_euler_bernoulli(nx, ny):
     L, b, P = 1.0, 0.05, 1.0
     w_eb = P * L**3 / (3 * STEEL["E"] * b * STEEL["h"] ** 3 / 12)
     assert _strip_tip(nx, ny, L, b, P) == pytest.approx(w_eb, rel=STRIP_TOL)
+
+
+REISSNER_STRIP_TOL = 1e-3  # relative tip error of the 8 x 1 strip (large deflection)
+
+
+def _strip_large(nx, F, L=1.0, b=0.05):
+    """Tip (x, z) (m) of an nx x 1 strip L x b, nu = 0, clamped at x = 0, under the dead
+    end load F (N, +z) spread over x = L, by Newton (ancf.solvers.static)."""
+    m = PlateMesh(L, b, nx, 1)
+    el = Plate36(m.lengths, m.widths, **{**STEEL, "nu": 0.0})
+    q0 = m.reference()
+    root = [m.dof(k, s, c) for k in range(m.n_nodes) if m.X[k] == 0.0
+            for s in SLOTS for c in range(3)]
+    res = solve_static(Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]),
+                       Elimination(m.n_dofs).fix(root, q0[root]), _edge_load(m, F), q0,
+                       NewtonOptions(n_steps=4, rtol=1e-10))
+    assert res.converged, res.message
+    tips = [m.node(nx, j) for j in range(2)]
+    return np.array([res.q[[m.dof(k, "r", c) for k in tips]].mean() for c in (0, 2)])
+
+
+def test_cantilever_strip_large_deflection_converges_to_reissner():
+    """F = E I / L^2 bends the strip to a tip deflection of 0.30 L."""
+    L, b, h, E = 1.0, 0.05, STEEL["h"], STEEL["E"]
+    F = E * b * h**3 / 12 / L**2
+    ref = reissner.tip_position(E, 0.0, L, h, b, F)
+    assert ref.converged
+    err = [np.abs(_strip_large(n, F) / [ref.tip_x, ref.tip_y] - 1).max() for n in (4, 8, 16)]
+    assert err[1] <= REISSNER_STRIP_TOL and err[2] < err[1] < err[0], err
