@@ -1,0 +1,248 @@
+"""The thin ANCF plate (thesis 4.3, Eqs 4.14-4.19) and its rectangular mesh.
+
+Generated code up to date; finite-difference gradient and tangent; rigid motion;
+exact membrane force under a uniform stretch; exact mass; the bending switch; the
+simply supported square plate under uniform pressure against Navier's series
+(linear solve at the flat reference: the deflection is h/47).
+
+Navier, a = 1 m, h = 0.01 m, E = 2.1e11 Pa, nu = 0.3, p = 1e3 Pa (w_c = 2.1124e-4 m),
+relative centre-deflection errors seen: 2 x 2 +24.6 %, 4 x 4 +6.54 %, 8 x 8 +1.65 %,
+16 x 16 +0.41 % (order 2.0 from 4 to 16).
+
+Cantilever strip 1 m x 0.05 m under an end load, against Euler-Bernoulli P L^3/(3 E I):
+with nu = 0 the cubic beam deflection lies in the element space and every mesh
+gives it (1 x 1: 2e-11, 8 x 2: 2e-7 relative, round-off); with nu = 0.3 the plate
+is stiffer than E I (read as the clamp suppressing anticlastic curvature): -6.7 %, -3.9 %,
+-2.0 %, -1.1 % with 1, 2, 4, 8 x 1 elements, -0.70 % with 16 x 2, -0.57 % with 32 x 4.
+Large deflection (nu = 0, F = E I/L^2, tip at 0.30 L; Newton, ancf.solvers.static)
+against the Reissner beam (analytic/reissner.py): largest relative tip-coordinate
+error 6.2e-3, 2.5e-4, 4.6e-5 with 4, 8, 16 x 1 elements.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import scipy.sparse.linalg as sla
+
+from analytic import navier_plate, plate_thin, reissner
+from ancf.assembly import Assembly, ElementGroup
+from ancf.constraints import Elimination
+from ancf.elements import _generated as shape_gen
+from ancf.elements.plate36 import Plate36
+from ancf.plate_mesh import SLOTS, PlateMesh
+from ancf.quadrature import gauss01
+from ancf.solvers.static import NewtonOptions, solve_static
+
+STEEL = dict(h=0.01, E=2.1e11, nu=0.3)
+NAVIER_TOL = 0.01  # relative centre-deflection error of the finest mesh
+FD_TOL = 1e-6      # central differences (step 1e-6) relative to the largest entry
+
+
+def _plate(m: PlateMesh, **kw) -> Plate36:
+    return Plate36(m.lengths, m.widths, **{**STEEL, **kw})
+
+
+def _rotation(axis, angle):
+    """Rodrigues' rotation matrix about ``axis`` by ``angle`` rad."""
+    k = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
+    Kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + math.sin(angle) * Kx + (1 - math.cos(angle)) * Kx @ Kx
+
+
+def _perturbed(m, scale, seed=0):
+    q0 = m.reference()
+    return q0 + scale * np.random.default_rng(seed).standard_normal(q0.size)
+
+
+# ------------------------------------------------------------------ generated code
+def test_generated_plate_code_is_up_to_date():
+    assert plate_thin.generate() == plate_thin.TARGET.read_text(), (
+        "ancf/elements/_plate_generated.py is stale: run `python -m analytic.plate_thin --write`")
+
+
+# ------------------------------------------------------------------ derivatives
+@pytest.mark.parametrize("bending", [True, False])
+def test_gradient_and_tangent_match_finite_differences(bending):
+    m = PlateMesh(0.6, 0.4, 2, 1)
+    el = _plate(m, bending=bending)
+    e = _perturbed(m, 0.05)[m.dofmap]
+    g, K = el.gradient(e, tangent=True)
+    step, eye = 1e-6, np.eye(el.ndof)
+    gfd = np.stack([(el.energy(e + step * eye[i]) - el.energy(e - step * eye[i])) / (2 * step)
+                    for i in range(el.ndof)], -1)
+    Kfd = np.stack([(el.gradient(e + step * eye[i])[0] - el.gradient(e - step * eye[i])[0])
+                    / (2 * step) for i in range(el.ndof)], -1)
+    assert np.abs(gfd - g).max() <= FD_TOL * np.abs(g).max()
+    assert np.abs(Kfd - K).max() <= FD_TOL * np.abs(K).max()
+    assert np.abs(K - K.transpose(0, 2, 1)).max() <= 1e-12 * np.abs(K).max()
+
+
+def test_rigid_motion_has_zero_energy_and_force():
+    m = PlateMesh(0.6, 0.4, 2, 2)
+    el = _plate(m)
+    R = _rotation([1.0, 2.0, 3.0], 1.3)
+    q = (m.reference().reshape(-1, 3) @ R.T).ravel()
+    r = [m.dof(n, "r", c) for n in range(m.n_nodes) for c in range(3)]
+    q[r] += np.tile([0.3, -2.0, 5.0], m.n_nodes)
+    scale = STEEL["E"] * STEEL["h"] * m.a * m.b  # J at unit strain
+    g, _ = el.gradient(q[m.dofmap])
+    assert np.abs(el.energy(q[m.dofmap])).max() <= 1e-12 * scale
+    assert np.abs(g).max() <= 1e-12 * STEEL["E"] * STEEL["h"] * m.a
+
+
+# ------------------------------------------------------------------ membrane
+def test_uniform_stretch_gives_the_plane_stress_green_force():
+    """r = (lx X, ly Y, 0): Green strains (l^2 - 1)/2, S_xx = E h/(1 - nu^2) (e_xx + nu e_yy)
+    per unit length; the edge x = a carries the force lx S_xx b along x."""
+    m = PlateMesh(0.6, 0.4, 3, 2)
+    el = _plate(m)
+    lx, ly = 1.02, 0.99
+    q = m.reference().reshape(m.n_nodes, 3, 3) * np.array([lx, ly, 1.0])
+    asm = Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)])
+    exx, eyy = (lx**2 - 1) / 2, (ly**2 - 1) / 2
+    E, h, nu = STEEL["E"], STEEL["h"], STEEL["nu"]
+    Sxx = E * h / (1 - nu**2) * (exx + nu * eyy)
+    U = m.a * m.b * E * h / (2 * (1 - nu**2)) * (exx**2 + eyy**2 + 2 * nu * exx * eyy)
+    g = asm.gradient(q.ravel())
+    edge = [m.dof(m.node(m.nx, j), "r", 0) for j in range(m.ny + 1)]
+    assert asm.strain_energy(q.ravel()) == pytest.approx(U, rel=1e-12)
+    assert g[edge].sum() == pytest.approx(lx * Sxx * m.b, rel=1e-12)
+
+
+# ------------------------------------------------------------------ mass, switch
+def test_mass_of_a_rigid_translation_is_rho_h_area():
+    m = PlateMesh(0.6, 0.4, 3, 2)
+    M = Assembly(m.n_dofs, [ElementGroup(_plate(m, rho=7800.0), m.dofmap)]).mass()
+    u = np.zeros(m.n_dofs)
+    u[[m.dof(n, "r", 2) for n in range(m.n_nodes)]] = 1.0
+    assert u @ M @ u == pytest.approx(7800.0 * STEEL["h"] * m.a * m.b, rel=1e-12)
+
+
+def test_bending_switch_removes_the_transverse_stiffness():
+    m = PlateMesh(0.6, 0.4, 1, 1)
+    z = np.arange(2, 36, 3)
+    e0 = m.reference()[m.dofmap]
+    K_on, K_off = (_plate(m, bending=b).gradient(e0, tangent=True)[1][0][np.ix_(z, z)]
+                   for b in (True, False))
+    assert np.abs(K_off).max() <= 1e-14 * STEEL["E"] * STEEL["h"]  # round-off of the membrane
+    # all but the rigid w = c0 + c1 x + c2 y (the rest is membrane round-off, 1e-14 relative)
+    assert np.linalg.matrix_rank(K_on, rtol=1e-10) == 12 - 3
+
+
+# ------------------------------------------------------------------ mesh
+def test_mesh_shares_nodes_and_loads_the_whole_pressure():
+    m = PlateMesh(0.6, 0.4, 3, 2)
+    assert m.n_dofs == 12 * 9 and m.dofmap.shape == (6, 36)
+    assert np.array_equal(m.dofmap[0, 9:18], m.dofmap[1, 0:9])       # B of 0 = A of 1
+    assert np.array_equal(m.dofmap[0, 18:27], m.dofmap[4, 0:9])      # C of 0 = A of 4
+    e0 = m.reference()[m.dofmap].reshape(6, 4, 3, 3)
+    assert np.allclose(e0[:, 2, 0, :2] - e0[:, 0, 0, :2], [m.a / 3, m.b / 2], rtol=0, atol=1e-15)
+    assert m.dof(m.node(1, 1), "r_y", 1) == 5 * 9 + 3 * SLOTS.index("r_y") + 1
+    assert m.pressure_load(1e3)[2::9].sum() == pytest.approx(1e3 * m.a * m.b, rel=1e-12)
+
+
+# ------------------------------------------------------------------ Navier
+def test_navier_double_series_matches_levy_single_series():
+    for a, b in ((1.0, 1.0), (2.0, 1.0)):
+        w, _ = navier_plate.centre_deflection(a, b, p=1e3, rtol=1e-10, **STEEL)
+        assert w == pytest.approx(navier_plate.levy_centre_deflection(a, b, p=1e3, **STEEL), rel=1e-8)
+
+
+def _simply_supported_centre(n, a=1.0, p=1e3):
+    """Centre deflection (m) of an n x n mesh of the simply supported square plate:
+    in-plane coordinates fixed (decoupled at the flat reference), w = 0 and the
+    slope along the edge = 0 on the boundary; linear solve at the reference."""
+    m = PlateMesh(a, a, n, n)
+    _, K = Assembly(m.n_dofs, [ElementGroup(_plate(m), m.dofmap)]).gradient_tangent(m.reference())
+    fixed = {m.dof(k, s, c) for k in range(m.n_nodes) for s in SLOTS for c in (0, 1)}
+    for k in range(m.n_nodes):
+        on_x, on_y = m.X[k] in (0.0, a), m.Y[k] in (0.0, a)
+        fixed |= {m.dof(k, "r", 2)} if on_x or on_y else set()
+        fixed |= {m.dof(k, "r_y", 2)} if on_x else set()
+        fixed |= {m.dof(k, "r_x", 2)} if on_y else set()
+    free = np.setdiff1d(np.arange(m.n_dofs), sorted(fixed))
+    u = sla.spsolve(K[free][:, free].tocsc(), m.pressure_load(p)[free])
+    return u[np.searchsorted(free, m.dof(m.node(n // 2, n // 2), "r", 2))]
+
+
+def test_simply_supported_plate_converges_to_navier():
+    w_ref, _ = navier_plate.centre_deflection(1.0, 1.0, p=1e3, **STEEL)
+    err = np.array([_simply_supported_centre(n) / w_ref - 1 for n in (4, 8, 16)])
+    assert abs(err[-1]) <= NAVIER_TOL
+    assert np.all(np.abs(np.diff(np.abs(err))) > 0) and np.all(np.diff(np.abs(err)) < 0)
+    order = np.log2(np.abs(err[:-1] / err[1:]))
+    assert np.all(np.abs(order - 2) <= 0.2), order
+
+
+def test_bad_input_names_the_field():
+    for kw, field in ((dict(a=-1.0), "a, b"), (dict(nu=0.5), "nu"), (dict(ng=0), "ng"),
+                      (dict(h=0.0), "h")):
+        with pytest.raises(ValueError, match=field):
+            Plate36(**{"a": 1.0, "b": 1.0, **STEEL, **kw})
+    with pytest.raises(ValueError, match="nx"):
+        PlateMesh(1.0, 1.0, 0, 1)
+
+
+# ------------------------------------------------------------------ cantilever strip
+STRIP_TOL = 1e-6  # nu = 0: the cubic beam deflection is in the element space
+
+
+def _edge_load(m: PlateMesh, P: float) -> np.ndarray:
+    """Consistent forces of the end load P (N, along +z) spread uniformly over x = a."""
+    t, w = gauss01(2)
+    a, b = m.lengths[0], m.widths[0]
+    fe = P / m.b * b * (w @ shape_gen.plate36_S(np.full(2, a), t * b, a, b))
+    f = np.zeros(m.n_dofs)
+    np.add.at(f, m.dofmap[m.nx - 1::m.nx, 2::3], np.broadcast_to(fe, (m.ny, 12)))
+    return f
+
+
+def _strip_tip(nx, ny, L=1.0, b=0.05, P=1.0, nu=0.0):
+    """Mean tip deflection (m) of a strip L x b clamped at x = 0 (r, r_x, r_y), linear solve."""
+    m = PlateMesh(L, b, nx, ny)
+    el = Plate36(m.lengths, m.widths, **{**STEEL, "nu": nu})
+    _, K = Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]).gradient_tangent(m.reference())
+    fixed = {m.dof(k, s, c) for k in range(m.n_nodes) for s in SLOTS for c in (0, 1)}
+    fixed |= {m.dof(k, s, 2) for k in range(m.n_nodes) if m.X[k] == 0.0 for s in SLOTS}
+    free = np.setdiff1d(np.arange(m.n_dofs), sorted(fixed))
+    u = sla.spsolve(K[free][:, free].tocsc(), _edge_load(m, P)[free])
+    tips = [m.dof(m.node(nx, j), "r", 2) for j in range(ny + 1)]
+    return u[np.searchsorted(free, tips)].mean()
+
+
+@pytest.mark.parametrize("nx, ny", [(1, 1), (4, 1), (8, 2)])
+def test_cantilever_strip_matches_euler_bernoulli(nx, ny):
+    L, b, P = 1.0, 0.05, 1.0
+    w_eb = P * L**3 / (3 * STEEL["E"] * b * STEEL["h"] ** 3 / 12)
+    assert _strip_tip(nx, ny, L, b, P) == pytest.approx(w_eb, rel=STRIP_TOL)
+
+
+REISSNER_STRIP_TOL = 1e-3  # relative tip error of the 8 x 1 strip (large deflection)
+
+
+def _strip_large(nx, F, L=1.0, b=0.05):
+    """Tip (x, z) (m) of an nx x 1 strip L x b, nu = 0, clamped at x = 0, under the dead
+    end load F (N, +z) spread over x = L, by Newton (ancf.solvers.static)."""
+    m = PlateMesh(L, b, nx, 1)
+    el = Plate36(m.lengths, m.widths, **{**STEEL, "nu": 0.0})
+    q0 = m.reference()
+    root = [m.dof(k, s, c) for k in range(m.n_nodes) if m.X[k] == 0.0
+            for s in SLOTS for c in range(3)]
+    res = solve_static(Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]),
+                       Elimination(m.n_dofs).fix(root, q0[root]), _edge_load(m, F), q0,
+                       NewtonOptions(n_steps=4, rtol=1e-10))
+    assert res.converged, res.message
+    tips = [m.node(nx, j) for j in range(2)]
+    return np.array([res.q[[m.dof(k, "r", c) for k in tips]].mean() for c in (0, 2)])
+
+
+def test_cantilever_strip_large_deflection_converges_to_reissner():
+    """F = E I / L^2 bends the strip to a tip deflection of 0.30 L."""
+    L, b, h, E = 1.0, 0.05, STEEL["h"], STEEL["E"]
+    F = E * b * h**3 / 12 / L**2
+    ref = reissner.tip_position(E, 0.0, L, h, b, F)
+    assert ref.converged
+    err = [np.abs(_strip_large(n, F) / [ref.tip_x, ref.tip_y] - 1).max() for n in (4, 8, 16)]
+    assert err[1] <= REISSNER_STRIP_TOL and err[2] < err[1] < err[0], err
