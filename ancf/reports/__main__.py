@@ -13,6 +13,7 @@ import pandas as pd  # noqa: E402
 
 from analytic import timoshenko
 from ancf.reports.belt2d import belt2d_chapter
+from ancf.reports.bechtel import bechtel_chapter
 from ancf.reports.extremes import extremes_chapter
 from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
@@ -186,7 +187,8 @@ def static_chapter() -> tuple[str, dict]:
     return "\n".join(parts), status
 
 
-CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md", "belt2d.md")
+CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md", "belt2d.md",
+            "bechtel.md")
 
 _INDEX = [
     "| report | contents |", "|---|---|",
@@ -201,6 +203,9 @@ _INDEX = [
     "| [belt2d.md](belt2d.md) | 2D belt drive (thesis 3.3, Figs 3.5-3.21): free belt, element "
     "count, stiffness and creep-rate trends, span tensions vs torque, contact forces, "
     "relative velocity, contact points, pulleys of different size; acceptance checks |",
+    "| [bechtel.md](bechtel.md) | Bechtel's analytic steady belt (thesis 4.1, Model 2): tensions, "
+    "speeds, slip arcs, driven slip and largest torque, full and capstan, distributions along "
+    "the belt; the thesis's 14.6 % slip |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
@@ -218,7 +223,8 @@ def write_chapters(root: Path) -> dict:
     for name, chapter in (("dynamics.md", dynamics_chapter),
                           ("speed_accuracy.md", speed_accuracy_chapter),
                           ("extremes.md", extremes_chapter),
-                          ("belt2d.md", belt2d_chapter)):
+                          ("belt2d.md", belt2d_chapter),
+                          ("bechtel.md", bechtel_chapter)):
         text, st = chapter()
         (root / name).write_text(text)
         status.update(st)
