@@ -216,6 +216,6 @@ def test_a_scene_at_the_floating_point_limit_reports_one_line(capsys):
 def test_package_metadata_describes_what_exists():
     meta = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
     assert meta["license"] == "MIT"
-    assert "planned" in meta["description"] and "plates" in meta["description"]
+    assert "planned" in meta["description"] and "3D belt drive" in meta["description"]
     readme = (ROOT / "README.md").read_text()
-    assert "planar\nbeam elements today (belt drives and plates are planned)" in readme
+    assert "planar\nbeams and the 2D belt drive today" in readme and "3D belt drive is planned" in readme
