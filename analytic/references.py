@@ -1,7 +1,7 @@
 """Analytic references exposed like scenes (``ancf analytic NAME``)."""
 from __future__ import annotations
 
-from analytic import bechtel, reissner, timoshenko
+from analytic import bechtel, navier_plate, reissner, timoshenko
 from ancf.scenes.base import Param, Scene, SceneResult
 
 _SECTION = (
@@ -31,6 +31,24 @@ def _bechtel(p):
                        f"(xtol {bechtel.XTOL_N:g} N)", bechtel.results(p))
 
 
+def _navier(p):
+    w, N = navier_plate.centre_deflection(p["a"], p["b"], p["h"], p["E"], p["nu"], p["p"],
+                                          rtol=p["rtol"])
+    return SceneResult(True, f"Navier double series, odd indices up to {N} (tail bound below "
+                       f"rtol = {p['rtol']:g})", {"center_deflection_m": w, "terms": N})
+
+
+_NAVIER = (
+    Param("a", 1.0, float, "m", "plate side along x", lo=0, lo_open=True, hi=1e3),
+    Param("b", 1.0, float, "m", "plate side along y", lo=0, lo_open=True, hi=1e3),
+    Param("h", 0.01, float, "m", "thickness", lo=0, lo_open=True, hi=1e2),
+    Param("E", 2.1e11, float, "Pa", "Young's modulus", lo=0, lo_open=True),
+    Param("nu", 0.3, float, "-", "Poisson's ratio", lo=0, hi=0.5, hi_open=True),
+    Param("p", 1e3, float, "Pa", "uniform pressure (deflection positive along it)", lo=-1e12, hi=1e12),
+    Param("rtol", 1e-10, float, "-", "relative truncation tolerance of the series", lo=1e-14, hi=1e-2),
+)
+
+
 def _with(params, **defaults):
     return tuple(Param(p.name, defaults.get(p.name, p.default), p.kind, p.unit, p.doc, p.lo, p.hi,
                        p.lo_open, p.hi_open, p.choices) for p in params)
@@ -47,6 +65,9 @@ REFERENCES = {
     "bechtel": Scene(
         "bechtel", "Bechtel et al.'s steady extensible belt on two pulleys, stick and slip arcs "
         "(thesis 4.1; Model 2).", bechtel.PARAMS, _bechtel),
+    "navier-plate": Scene(
+        "navier-plate", "Simply supported Kirchhoff plate under uniform pressure: Navier series "
+        "centre deflection (D = E h^3 / (12 (1 - nu^2))).", _NAVIER, _navier),
 }
 
 from analytic.dynamics_refs import DYNAMIC_REFERENCES  # noqa: E402  (imports Scene from above)

@@ -133,6 +133,8 @@ RESULTS = {
                                     "(after the bounding test), summed over force evaluations"),
         "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
                                             "(0: start = laid)")},
+    "navier-plate": {"center_deflection_m": _nullable("centre deflection along the pressure, m"),
+                     "terms": field(INT, "largest odd series index summed")},
     "timoshenko": {"mid_deflection_m": _nullable("midspan deflection, m")},
     "reissner": {"tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
                  "tip_rotation_rad": _nullable("tip section rotation, rad")},

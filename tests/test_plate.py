@@ -246,3 +246,21 @@ def test_cantilever_strip_large_deflection_converges_to_reissner():
     assert ref.converged
     err = [np.abs(_strip_large(n, F) / [ref.tip_x, ref.tip_y] - 1).max() for n in (4, 8, 16)]
     assert err[1] <= REISSNER_STRIP_TOL and err[2] < err[1] < err[0], err
+
+
+# ------------------------------------------------------------------ CLI: ancf analytic navier-plate
+def test_cli_navier_plate_is_the_series_and_levys_value(capsys):
+    """`ancf analytic navier-plate --json` (defaults: a = b = 1 m, h = 0.01 m, E = 2.1e11,
+    nu = 0.3, p = 1e3 Pa) equals Levy's single series to 1e-8 relative; a zero-width plate
+    is one error line naming the field."""
+    import json
+
+    from ancf.cli import main
+    assert main(["analytic", "navier-plate", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    levy = navier_plate.levy_centre_deflection(1.0, 1.0, 0.01, 2.1e11, 0.3, 1e3)
+    levy = levy[0] if isinstance(levy, tuple) else levy
+    assert out["results"]["center_deflection_m"] == pytest.approx(levy, rel=1e-8)
+    assert main(["analytic", "navier-plate", "--set", "b=0"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: b = 0")
