@@ -20,11 +20,12 @@ a test regenerates it and checks that the committed file is up to date.
 """
 from __future__ import annotations
 
-import argparse
 from dataclasses import dataclass
 from pathlib import Path
 
 import sympy as sp
+
+from analytic._codegen import main
 
 x, y, z = sp.symbols("x y z", real=True)
 l, a, b = sp.symbols("l a b", positive=True)  # element length; plate sides a (x), b (y)
@@ -171,18 +172,5 @@ def generate() -> str:
 TARGET = Path(__file__).resolve().parent.parent / "ancf" / "elements" / "_generated.py"
 
 
-def main(argv=None) -> int:
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--write", action="store_true", help=f"write {TARGET.name}")
-    args = p.parse_args(argv)
-    text = generate()
-    if args.write:
-        TARGET.write_text(text)
-        print(f"wrote {TARGET}")
-    else:
-        print(text)
-    return 0
-
-
 if __name__ == "__main__":
-    raise SystemExit(main())
+    raise SystemExit(main(generate, TARGET, __doc__.splitlines()[0]))
