@@ -38,9 +38,9 @@ from numba import njit
 from ancf.elements import _dufva_generated as gen
 from ancf.elements import _generated as shape_gen
 from ancf.elements.basis import consistent_mass, family_shapes
+from ancf.elements.compiled_element import CompiledElement, check, check_material
 from ancf.quadrature import RectangularSection, gauss01
 
-_NO_TANGENT = np.zeros((0, 0, 0))
 _NODE = 6  # coordinates per node: r, r_x, r_y
 
 
@@ -186,12 +186,7 @@ def gradient_tangent(E, data, want_K, g, K):
             K[e] += Ke
 
 
-def _check(name, value, ok, rng):
-    if not ok(value):
-        raise ValueError(f"{name} must be {rng} (got {value!r})")
-
-
-class DufvaBelt2D:
+class DufvaBelt2D(CompiledElement):
     """Belt elements of lengths ``lengths`` (nel,) m, reference coordinates ``e0``
     (nel, 12) (checked for shape only: the reference is straight), cross-section
     ``section`` (b, h in m), Young's modulus ``E`` Pa, Poisson's ratio ``nu`` (enters
@@ -202,23 +197,21 @@ class DufvaBelt2D:
     slots = ("r", "r_x", "r_y")
     schemes: dict = {}  # one rule: nx Gauss points along x, the section in closed form
     dim = 2
+    kernel_energy = staticmethod(energy)
+    kernel_gradient_tangent = staticmethod(gradient_tangent)
 
     def __init__(self, lengths, e0, section: RectangularSection, E, nu, rho=0.0,
                  alpha1=1.0, alpha2=1.0, ks=5.0 / 6.0, nx=5):
-        pos = lambda v: np.isfinite(v) and v > 0  # noqa: E731
-        for name, v in (("E", E), ("alpha1", alpha1), ("alpha2", alpha2), ("ks", ks),
-                        ("section.b", section.b), ("section.h", section.h)):
-            _check(name, v, pos, "finite and > 0")
-        _check("nu", nu, lambda v: -1.0 < v < 0.5, "in (-1, 0.5)")
-        _check("rho", rho, lambda v: np.isfinite(v) and v >= 0, "finite and >= 0")
-        _check("nx", nx, lambda v: isinstance(v, (int, np.integer)) and v >= 1, "an integer >= 1")
+        check_material(nu, rho, E=E, alpha1=alpha1, alpha2=alpha2, ks=ks,
+                       **{"section.b": section.b, "section.h": section.h})
+        check("nx", nx, lambda v: isinstance(v, (int, np.integer)) and v >= 1, "an integer >= 1")
         self.lengths = np.asarray(lengths, dtype=float).ravel()
-        _check("lengths", lengths, lambda v: self.lengths.size > 0 and np.all(
+        check("lengths", lengths, lambda v: self.lengths.size > 0 and np.all(
             np.isfinite(self.lengths) & (self.lengths > 0)), "a non-empty array of finite values > 0")
         self.shapes = family_shapes(self.family)
         self.nel, self.nshape = self.lengths.size, self.shapes["n"]
         self.ndof = self.dim * self.nshape
-        _check("e0 size", np.size(e0), lambda v: v == self.nel * self.ndof,
+        check("e0 size", np.size(e0), lambda v: v == self.nel * self.ndof,
                f"nel * 12 = {self.nel * self.ndof}")
         self.section, self.rho, self.nx = section, float(rho), int(nx)
         self.E_mod, self.alpha1 = float(E), float(alpha1)
@@ -243,21 +236,6 @@ class DufvaBelt2D:
         xi (nx,) Gauss points in [0, 1], wq (nel, nx) weights (m), lengths (nel,) m,
         k (6,) density coefficients (N, N m^2, N m^4, N, N m^2, N))."""
         return self._data
-
-    def _coords(self, e):
-        return np.ascontiguousarray(e, dtype=float).reshape(self.nel, self.nshape, self.dim)
-
-    def energy(self, e) -> np.ndarray:
-        """Strain energy U of each element (nel,), J (e: (nel, 12))."""
-        return energy(self._coords(e), self._data)
-
-    def gradient(self, e, tangent: bool = False):
-        """dU/de (nel, 12) (Qe = -dU/de, Eq. 2.20) and, if ``tangent``, the exact
-        d2U/de2 (nel, 12, 12), else None."""
-        g = np.zeros((self.nel, self.ndof))
-        K = np.zeros((self.nel, self.ndof, self.ndof)) if tangent else _NO_TANGENT
-        gradient_tangent(self._coords(e), self._data, tangent, g, K)
-        return g, (K if tangent else None)
 
     def mass(self) -> np.ndarray:
         """Exact consistent mass matrices (nel, 12, 12), Eq. 2.26, kg."""

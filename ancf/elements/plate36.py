@@ -28,9 +28,9 @@ from numba import njit
 
 from ancf.elements import _generated as shape_gen
 from ancf.elements import _plate_generated as gen
+from ancf.elements.compiled_element import CompiledElement, check, check_material
 from ancf.quadrature import gauss01
 
-_NO_TANGENT = np.zeros((0, 0, 0))
 _DERIVS = ("x", "y", "xx", "xy", "yy")  # point variables: r_x, r_y, r_xx, r_xy, r_yy
 
 
@@ -129,12 +129,7 @@ def gradient_tangent(E, data, want_K, g, K):
             _add_point(B[e, q], wq[e, q], nd, gw, H, want_K, g[e], K[e] if want_K else H, T)
 
 
-def _check(name, value, ok, rng):
-    if not ok(value):
-        raise ValueError(f"{name} must be {rng} (got {value!r})")
-
-
-class Plate36:
+class Plate36(CompiledElement):
     """Thin plate elements of sides ``a`` (x) and ``b`` (y) (each (nel,) or scalar, m),
     thickness ``h`` m, Young's modulus ``E`` Pa, Poisson's ratio ``nu`` (-), density
     ``rho`` kg/m^3, ``ng`` x ``ng`` Gauss points; ``bending=False`` drops Eq. 4.17
@@ -144,16 +139,14 @@ class Plate36:
     slots = ("r", "r_x", "r_y")
     schemes: dict = {}  # one rule: ng x ng Gauss points over the mid surface
     dim = 3
+    kernel_energy = staticmethod(energy)
+    kernel_gradient_tangent = staticmethod(gradient_tangent)
 
     def __init__(self, a, b, h, E, nu, rho=0.0, bending=True, ng=4):
-        pos = lambda v: np.isfinite(v) and v > 0  # noqa: E731
-        for name, v in (("h", h), ("E", E)):
-            _check(name, v, pos, "finite and > 0")
-        _check("nu", nu, lambda v: -1.0 < v < 0.5, "in (-1, 0.5)")
-        _check("rho", rho, lambda v: np.isfinite(v) and v >= 0, "finite and >= 0")
-        _check("ng", ng, lambda v: isinstance(v, (int, np.integer)) and v >= 1, "an integer >= 1")
+        check_material(nu, rho, h=h, E=E)
+        check("ng", ng, lambda v: isinstance(v, (int, np.integer)) and v >= 1, "an integer >= 1")
         a, b = np.broadcast_arrays(*(np.asarray(v, dtype=float).ravel() for v in (a, b)))
-        _check("a, b", (a, b), lambda v: a.size > 0 and np.all(np.isfinite(v) & (np.stack(v) > 0)),
+        check("a, b", (a, b), lambda v: a.size > 0 and np.all(np.isfinite(v) & (np.stack(v) > 0)),
                "non-empty, finite and > 0")
         self.lengths, self.widths = a.copy(), b.copy()
         self.nel, self.nshape = a.size, 12
@@ -184,21 +177,6 @@ class Plate36:
         d2/dy2 (1/m), wq (nel, ng^2) weights (m^2), k (3,) coefficients
         (E h/(2(1 - nu^2)) N/m, D/2 N m, nu), bending flag (1,)."""
         return self._data
-
-    def _coords(self, e):
-        return np.ascontiguousarray(e, dtype=float).reshape(self.nel, self.nshape, self.dim)
-
-    def energy(self, e) -> np.ndarray:
-        """Strain energy U of each element (nel,), J (e: (nel, 36))."""
-        return energy(self._coords(e), self._data)
-
-    def gradient(self, e, tangent: bool = False):
-        """dU/de (nel, 36) (Qe = -dU/de, Eq. 2.20), N or N m, and, if ``tangent``,
-        the exact d2U/de2 (nel, 36, 36), else None."""
-        g = np.zeros((self.nel, self.ndof))
-        K = np.zeros((self.nel, self.ndof, self.ndof)) if tangent else _NO_TANGENT
-        gradient_tangent(self._coords(e), self._data, tangent, g, K)
-        return g, (K if tangent else None)
 
     def mass(self) -> np.ndarray:
         """Exact consistent mass matrices (nel, 36, 36), kg: rho h int S^T S dA."""
