@@ -87,6 +87,11 @@ class BeltDrive:
     def torque(self, t):
         return opposing_torque(t, self.spec.Ta_max)
 
+    def laws(self, t) -> np.ndarray:
+        """Pulley laws (2, len(t)) of the march: driver omega (rad/s), T_a (N m)."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        return np.stack([self.omega_driver(t), self.torque(t)])
+
     def state(self, q, theta=0.0) -> np.ndarray:
         """System vector (belt in pattern numbering, then theta) from global belt q."""
         return np.append(self.pattern.restrict(q), theta)

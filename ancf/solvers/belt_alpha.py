@@ -1,4 +1,5 @@
-"""Compiled generalised-alpha march of the 2D belt drive (:mod:`ancf.belt_drive`).
+"""Compiled generalised-alpha march of the belt drives (:mod:`ancf.belt_drive` in 2D,
+:mod:`ancf.belt3d_drive` in 3D; their forces: :mod:`ancf.solvers.belt_forces`).
 
 The recurrence is that of :mod:`ancf.solvers.generalized_alpha` (Arnold & Brüls:
 unknown the acceleration at t_{n+1}).  Unknowns: the belt coordinates z (band
@@ -7,7 +8,9 @@ numbering of the model's pattern) and the driven pulley's angle theta:
     M z'' + dU/dz - Q_c(z, z', omega_1(t), theta') = 0         (Eqs 2.27, 3.27)
     I theta'' - T_c(z, z', theta') + T_a(t) = 0                 (Eq. 3.26)
 
-with the contact forces Q_c and pulley moment T_c of :mod:`ancf.contact`.  The
+with the contact forces Q_c and pulley moment T_c (:mod:`ancf.contact`,
+:mod:`ancf.contact3d`); ``tabs`` (nlaws, nsteps) holds the pulley laws at every
+step time (the model's ``laws(ts)``).  The
 iteration matrix is bordered: a band block for the belt,
 
     S_zz = M + beta' (K - dQ_c/dz) - gamma' dQ_c/dz'
@@ -30,67 +33,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ancf.contact import contact_forces
-from ancf.elements.dufva2d import gradient_tangent
-from ancf.pattern import scatter
 from ancf.solvers import banded
+from ancf.solvers.belt_forces import evaluate
 
 DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
 REFRESH_RATIO = 0.5
 MAX_BACKTRACKS = 8  # trial lengths 1, 1/2, ... 1/128 of a Newton increment
-DRIVEN = 1  # index of the driven pulley in the pulley arrays
-
-
-@njit(cache=True)
-def gather(x, vidx, E, V, v):
-    """Element coordinates E and velocities V (nel, 6, 2) from system vectors x, v."""
-    nel, nd = vidx.shape
-    for e in range(nel):
-        for a in range(nd):
-            E[e, a // 2, a % 2] = x[vidx[e, a]]
-            V[e, a // 2, a % 2] = v[vidx[e, a]]
-
-
-@njit(cache=True)
-def evaluate(x, v, omega_driver, Ta, mdl, want_J, bp, gp, fz, mat, col, row):
-    """Residual forces fz (belt: dU/dz - Q_c; fz[n]: -T_c + Ta) at (x, v) and, if
-    want_J, the stiffness/damping part of the iteration matrix: band ``mat`` =
-    bp (K - dQ/dz) - gp dQ/dz' (without M), border ``col``/``row`` and the corner's
-    force part (returned).  Returns (corner, pairs evaluated)."""
-    vidx, midx, eld, S0, w, centres, radii, prm, inertia = mdl
-    nel = vidx.shape[0]
-    npul = radii.size
-    E, V = np.empty((nel, 6, 2)), np.empty((nel, 6, 2))
-    gather(x, vidx, E, V, v)
-    g = np.zeros((nel, 12))
-    K = np.zeros((nel, 12, 12)) if want_J else np.zeros((0, 0, 0))
-    gradient_tangent(E, eld, want_J, g, K)
-    Q = np.zeros((nel, 12))
-    nj = nel if want_J else 0
-    Kq, Cv = np.zeros((nj, 12, 12)), np.zeros((nj, 12, 12))
-    Qw = np.zeros((nj, npul, 12))
-    T = np.zeros(npul)
-    dTq, dTv, dTw = np.zeros((npul, nj, 12)), np.zeros((npul, nj, 12)), np.zeros(npul)
-    omegas = np.array([omega_driver, v[v.size - 1]])
-    pairs = contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
-                           Q, Kq, Cv, Qw, T, dTq, dTv, dTw)
-    n = fz.size - 1
-    fz[:] = 0.0
-    g -= Q
-    if want_J:
-        mat[:, :] = 0.0
-        col[:] = 0.0
-        row[:] = 0.0
-        for e in range(nel):
-            for a in range(12):
-                i = vidx[e, a]
-                col[i] -= gp * Qw[e, DRIVEN, a]
-                row[i] -= bp * dTq[DRIVEN, e, a] + gp * dTv[DRIVEN, e, a]
-                for b in range(12):
-                    K[e, a, b] = bp * (K[e, a, b] - Kq[e, a, b]) - gp * Cv[e, a, b]
-    scatter(g, K, vidx, midx, fz, mat, want_J)
-    fz[n] = -T[DRIVEN] + Ta
-    return -gp * dTw[DRIVEN], pairs
 
 
 @njit(cache=True)
@@ -117,7 +65,7 @@ def _residual(acc1, st, h, k, cf, mdl, Mb, kl, tabs, want_J, fs, count, r):
     v1 = v + h * ((1 - gamma) * a + gamma * a1)
     bp = h * h * beta * (1 - af) / (1 - am)
     gp = h * gamma * (1 - af) / (1 - am)
-    corner, pairs = evaluate(x1, v1, tabs[0][k], tabs[1][k], mdl, want_J, bp, gp, r, fs[0],
+    corner, pairs = evaluate(x1, v1, tabs[:, k], mdl, want_J, bp, gp, r, fs[0],
                              fs[4], fs[3])
     count[0] += 1
     count[6] += pairs

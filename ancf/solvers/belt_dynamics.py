@@ -16,7 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ancf.solvers import banded
-from ancf.solvers.belt_alpha import BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE, evaluate, march
+from ancf.solvers.belt_alpha import BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE, march
+from ancf.solvers.belt_forces import evaluate_any
 from ancf.solvers.generalized_alpha import AlphaOptions, step_times
 from ancf.solvers.result import DynamicResult
 
@@ -51,13 +52,13 @@ class _March:
 
     def set_times(self, ts):
         self.ts = ts
-        self.tabs = (self.drive.omega_driver(ts), self.drive.torque(ts))
+        self.tabs = self.drive.laws(ts)
 
     def initial_acceleration(self, x, v):
         n = self.drive.n
         f = np.zeros(n + 1)
-        evaluate(x, v, float(self.tabs[0][0]), float(self.tabs[1][0]), self.mdl, False, 0.0, 0.0,
-                 f, np.zeros((1, 1)), np.zeros(n), np.zeros(n))
+        evaluate_any(x, v, self.tabs[:, 0].copy(), self.mdl, False, 0.0, 0.0, f, np.zeros((1, 1)),
+                     np.zeros(n), np.zeros(n))
         M = self.Mb.copy()
         piv = np.zeros(n, dtype=np.int64)
         banded.lu(M, self.kl, piv, True)

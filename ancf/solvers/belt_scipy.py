@@ -6,7 +6,7 @@ First-order form y = (x, v) of the equations of :mod:`ancf.solvers.belt_alpha`:
 
     x' = v,    v' = -Mt^-1 f(x, v, t),    Mt = diag(M, I)
 
-with the same compiled forces (:func:`ancf.solvers.belt_alpha.evaluate`; the mass
+with the same compiled forces (:func:`ancf.solvers.belt_forces.evaluate_any`; the mass
 matrix is factored once).  The Jacobian is exact and dense,
 ``[[0, I], [-Mt^-1 df/dx, -Mt^-1 df/dv]]``, its two blocks from two evaluations of
 the iteration-matrix assembly (beta' = 1, gamma' = 0 and the reverse).
@@ -19,7 +19,7 @@ import numpy as np
 from scipy.integrate import BDF
 
 from ancf.solvers import banded
-from ancf.solvers.belt_alpha import evaluate
+from ancf.solvers.belt_forces import evaluate_any
 from ancf.solvers.result import DynamicResult
 
 
@@ -43,13 +43,13 @@ class _FirstOrder:
         return F
 
     def _laws(self, t):
-        return float(self.d.omega_driver(t)), float(self.d.torque(t))
+        return self.d.laws(np.array([t]))[:, 0].copy()
 
     def fun(self, t, y):
         m = self.n + 1
         f = np.zeros(m)
-        evaluate(y[:m], y[m:], *self._laws(t), self.mdl, False, 0.0, 0.0, f, np.zeros((1, 1)),
-                 np.zeros(self.n), np.zeros(self.n))
+        evaluate_any(y[:m], y[m:], self._laws(t), self.mdl, False, 0.0, 0.0, f, np.zeros((1, 1)),
+                     np.zeros(self.n), np.zeros(self.n))
         self.nfev += 1
         return np.concatenate([y[m:], -self._inv_mass(f)])
 
@@ -57,8 +57,8 @@ class _FirstOrder:
         """Dense d f / d(x or v) (bp, gp = 1, 0 or 0, 1)."""
         m, n = self.n + 1, self.n
         mat, col, row = self.d.pattern.zeros_matrix(), np.zeros(n), np.zeros(n)
-        corner, _ = evaluate(y[:m], y[m:], *self._laws(t), self.mdl, True, bp, gp, np.zeros(m),
-                             mat, col, row)
+        corner, _ = evaluate_any(y[:m], y[m:], self._laws(t), self.mdl, True, bp, gp, np.zeros(m),
+                                 mat, col, row)
         D = np.zeros((m, m))
         D[:n, :n] = self.d.pattern.as_csr(mat).toarray()
         D[:n, n], D[n, :n], D[n, n] = col, row, corner
