@@ -19,7 +19,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ancf.belt_path import TwoPulleyPath, laid_belt
-from ancf.contact import contact_points
+from ancf.contact import contact_forces, contact_points, contact_state
 from ancf.elements.dufva2d import DufvaBelt2D
 from ancf.mesh import BeamMesh
 from ancf.pattern import ReducedPattern, scatter
@@ -99,6 +99,39 @@ class BeltDrive:
     def belt(self, x) -> np.ndarray:
         """Global belt coordinates from a system vector."""
         return self.pattern.expand(np.asarray(x)[: self.n], np.zeros(self.mesh.n_dofs))
+
+    @property
+    def dofmap(self) -> np.ndarray:
+        return self.mesh.dofmap
+
+    @property
+    def n_dofs(self) -> int:
+        return self.mesh.n_dofs
+
+    def element_coords(self, q) -> np.ndarray:
+        """(nel, 6, 2) element coordinates from global belt coordinates q."""
+        return np.ascontiguousarray(np.asarray(q)[self.dofmap].reshape(-1, 6, 2))
+
+    def fixed_dofs(self) -> list:
+        """Node 0's coordinate along the path tangent (the larger component): the rigid
+        sliding round frictionless pulleys (:mod:`ancf.solvers.belt_pretension`)."""
+        return [self.mesh.dof(0, "r", int(np.argmax(np.abs(self.q0[2:4]))))]
+
+    def penalty(self, E, want_J: bool):
+        """Frictionless, undamped contact at rest: (energy sum w k_p d^2/2 J, Q (nel, 12) N,
+        dQ/de (nel, 12, 12) N/m or None)."""
+        nel = E.shape[0]
+        V, om = np.zeros_like(E), np.zeros(2)
+        prm = np.array([self.spec.k_p, 0.0, 0.0, 0.0])
+        _, d, _, _, _ = contact_state(E, V, self.S0, self.centres, self.radii, om, prm)
+        U = 0.5 * self.spec.k_p * np.einsum("eg,egp->", self.w, np.maximum(d, 0.0) ** 2)
+        if not want_J:
+            return float(U), None, None
+        Q, Kq = np.zeros((nel, 12)), np.zeros((nel, 12, 12))
+        contact_forces(E, V, self.S0, self.w, self.centres, self.radii, om, prm, True, Q, Kq,
+                       np.zeros_like(Kq), np.zeros((nel, 2, 12)), np.zeros(2),
+                       np.zeros((2, nel, 12)), np.zeros((2, nel, 12)), np.zeros(2))
+        return float(U), Q, Kq
 
     def kernel(self):
         """The arrays of the compiled march (:mod:`ancf.solvers.belt_alpha`)."""

@@ -1,13 +1,20 @@
-"""Pulley laws of the 2D belt drive (thesis section 3.3): the driver's prescribed
-angular velocity (Eq. 3.29) and the opposing torque on the driven pulley (Eq. 3.30).
+"""Pulley laws of the belt drives (thesis sections 3.3 and 4.6): the driver's prescribed
+angular velocity (Eq. 3.29), the opposing torque on the driven pulley (Eq. 3.30; in 3D
+Eq. 4.47) and the driver's pre-tensioning displacement (Eq. 4.46).
 
 Angular velocities are counter-clockwise positive (rad/s), torques in N m.  Both
-laws start at ``t0`` = 0.05 s and reach their final value at ``t1`` = 0.6 s; the
+laws start at ``t0`` = 0.05 s and reach their final value at ``t1`` (0.6 s in 2D; in
+3D Table 4.1's t1: 0.6 s for Model 1, 1.0 s for Model 2); the
 driver ramps linearly, the torque follows ``T_max/2 (1 - cos(pi t / t1))`` as
 printed (so it jumps from 0 to 0.0043 T_max at t0).  The driven pulley obeys
 Eq. 3.26 with the opposing torque entering as ``-T_a(t)``: it resists the
 pulley's counter-clockwise rotation (the thesis writes ``+ T_a`` for "the possible
 opposing torque" without fixing its sign).
+
+Eq. 4.47 prints T_a = 1 - cos(pi t / 1.0) for 0.05 < t <= 1.0 and 2 for 0.6 < t; the
+branches overlap on (0.6, 1.0].  We take the middle branch up to 1.0 s (first match
+as printed): it is Eq. 3.30 with t1 = 1.0 s and T_max = 2 N m, continuous at 1.0 s,
+whereas the 0.6 of the last branch would jump from 1.69 to 2 N m (it is Model 1's t1).
 """
 from __future__ import annotations
 
@@ -16,14 +23,21 @@ import numpy as np
 T0, T1 = 0.05, 0.6
 
 
-def driver_omega(t, omega_final: float) -> np.ndarray:
+def driver_omega(t, omega_final: float, t0: float = T0, t1: float = T1) -> np.ndarray:
     """Eq. 3.29: 0 up to t0, linear to ``omega_final`` (rad/s) at t1, then constant."""
     t = np.asarray(t, dtype=float)
-    return omega_final * np.clip((t - T0) / (T1 - T0), 0.0, 1.0)
+    return omega_final * np.clip((t - t0) / (t1 - t0), 0.0, 1.0)
 
 
-def opposing_torque(t, Ta_max: float) -> np.ndarray:
+def opposing_torque(t, Ta_max: float, t0: float = T0, t1: float = T1) -> np.ndarray:
     """Eq. 3.30: 0 up to t0, ``Ta_max/2 (1 - cos(pi t / t1))`` up to t1, then Ta_max (N m)."""
     t = np.asarray(t, dtype=float)
-    ramp = 0.5 * Ta_max * (1.0 - np.cos(np.pi * t / T1))
-    return np.where(t <= T0, 0.0, np.where(t <= T1, ramp, Ta_max))
+    ramp = 0.5 * Ta_max * (1.0 - np.cos(np.pi * t / t1))
+    return np.where(t <= t0, 0.0, np.where(t <= t1, ramp, Ta_max))
+
+
+def driver_shift(t, u0: float, t0: float = T0) -> tuple:
+    """Eq. 4.46: the driver's displacement u = u0 t / t0 up to t0, then u0 (m), and its
+    rate (m/s)."""
+    t = np.asarray(t, dtype=float)
+    return u0 * np.clip(t / t0, 0.0, 1.0), np.where(t < t0, u0 / t0, 0.0)
