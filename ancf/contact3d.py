@@ -33,7 +33,8 @@ over each element's reference rectangle:
     T_p += sum_q w_q ((r - o) x (-f_q)) . p = -sum_q w_q |N| t . f_t    N m
 
 Element coordinates are ordered ``k * 3 + d`` (shape function k of ``plate36_S``,
-component d), 36 per element; E, V are (nel, 12, 3).  With a plane motion about an
+component d), 36 per element; E, V are (nel, 12, 3).  A point exactly on a pulley
+axis has no normal; the penalty regime (d << R) never reaches it.  With a plane motion about an
 axis along z, the law per unit width is the planar one of :mod:`ancf.contact` with
 k_p, c_p, nu_s divided by the width (tests/test_contact3d.py).
 """

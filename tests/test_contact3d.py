@@ -449,6 +449,24 @@ def test_plane_motion_reduces_to_the_2d_law_per_unit_width():
 
 
 # ------------------------------------------------------------------ bounding test
+def test_bernstein_control_points_reproduce_the_plate_field():
+    """Premise of the bounding test: sum_ij B_i(x/a) B_j(y/b) P_ij = S e for any a x b
+    element, with P from the unit-square controls and the r_x (r_y) columns scaled by
+    a (b); the Bernstein weights are >= 0 and sum to one (the convex hull)."""
+    from math import comb
+
+    from ancf.contact3d import _CONTROLS
+    rng = np.random.default_rng(5)
+    a, b = 0.17, 0.06
+    xi, eta = rng.uniform(0, 1, 300), rng.uniform(0, 1, 300)
+    bern = np.stack([comb(3, i) * xi**i * (1 - xi)**(3 - i) * comb(3, j) * eta**j * (1 - eta)**(3 - j)
+                     for i in range(4) for j in range(4)], axis=1)
+    assert np.all(bern >= 0) and np.allclose(bern.sum(axis=1), 1.0, rtol=0, atol=1e-15)
+    scale = np.tile([1.0, a, b], 4)
+    np.testing.assert_allclose(bern @ (_CONTROLS * scale), plate36_S(xi * a, eta * b, a, b),
+                               rtol=0, atol=1e-14)
+
+
 def _random_elements(rng, nel):
     """Plates of 0.02-0.2 m x 0.02-0.1 m in random orientation near two pulleys, corner
     positions perturbed by up to 20 % of the sides, slopes turned up to 45 degrees and
