@@ -51,8 +51,9 @@ from ancf.quadrature import gauss01
 #: n x n Gauss rules over each element's mid surface (the thesis uses 81 points).
 SUPPORTED_RULES = (25, 49, 81)
 
-#: relative widening of the bounding sphere, so that the rounding of the point
-#: positions (a few ulps of the coordinates) cannot put a skipped point in contact.
+#: relative widening of the bounding disc, so that the rounding of the point and
+#: control-point positions (a few ulps of the coordinates) cannot put a skipped point
+#: in contact.
 _BOUND_MARGIN = 1e3 * np.finfo(np.float64).eps
 
 
@@ -129,12 +130,9 @@ def _sides(S0, w, e):
 
 
 @njit(cache=True)
-def _may_touch(E, e, a, b, o, p, R, P):
-    """False only if the element's mid surface provably stays outside the pulley's
-    cylinder |N| < R: the surface lies in the convex hull of its 16 Bernstein control
-    points P (see ``_bernstein_controls``), hence in a sphere of centre c (their mean)
-    and radius r_b about it, and |N| is 1-Lipschitz (a projection), so |N| >= |N(c)| - r_b
-    on the whole surface."""
+def _control_points(E, e, a, b, P):
+    """P (16, 3): the Bernstein control points of element e (sides a, b, m); the mid
+    surface lies in their convex hull (see ``_bernstein_controls``)."""
     P[:] = 0.0
     for i in range(16):
         for k in range(12):
@@ -143,18 +141,29 @@ def _may_touch(E, e, a, b, o, p, R, P):
             if ck != 0.0:
                 for c in range(3):
                     P[i, c] += ck * E[e, k, c]
-    c0 = c1 = c2 = 0.0
+
+
+@njit(cache=True)
+def _may_touch(P, o, p, R, X):
+    """False only if the element's mid surface provably stays outside the pulley's
+    cylinder |N| < R.  N = (I - p p^T)(r - o) is affine in r, so it maps the convex
+    hull of the control points P onto the hull of their images X_i = N(P_i) in the
+    plane normal to the axis, which lies in the disc of centre c (their mean) and
+    radius r_b = max |X_i - c|; hence |N| >= |c| - r_b on the whole surface."""
+    c0 = c1 = c2 = big = 0.0
     for i in range(16):
-        c0 += P[i, 0] / 16.0
-        c1 += P[i, 1] / 16.0
-        c2 += P[i, 2] / 16.0
+        xp = (P[i, 0] - o[0]) * p[0] + (P[i, 1] - o[1]) * p[1] + (P[i, 2] - o[2]) * p[2]
+        big = max(big, abs(P[i, 0]) + abs(P[i, 1]) + abs(P[i, 2]) + abs(xp))
+        for c in range(3):
+            X[i, c] = P[i, c] - o[c] - xp * p[c]
+        c0 += X[i, 0] / 16.0
+        c1 += X[i, 1] / 16.0
+        c2 += X[i, 2] / 16.0
     rb = 0.0
     for i in range(16):
-        rb = max(rb, np.sqrt((P[i, 0] - c0) ** 2 + (P[i, 1] - c1) ** 2 + (P[i, 2] - c2) ** 2))
-    x0, x1, x2 = c0 - o[0], c1 - o[1], c2 - o[2]
-    xp = x0 * p[0] + x1 * p[1] + x2 * p[2]
-    dist = np.sqrt((x0 - xp * p[0]) ** 2 + (x1 - xp * p[1]) ** 2 + (x2 - xp * p[2]) ** 2)
-    scale = dist + rb + R + np.sqrt(c0 * c0 + c1 * c1 + c2 * c2)
+        rb = max(rb, np.sqrt((X[i, 0] - c0) ** 2 + (X[i, 1] - c1) ** 2 + (X[i, 2] - c2) ** 2))
+    dist = np.sqrt(c0 * c0 + c1 * c1 + c2 * c2)
+    scale = dist + rb + R + big + abs(o[0]) + abs(o[1]) + abs(o[2])
     return dist - rb <= R + _BOUND_MARGIN * scale
 
 
@@ -300,16 +309,17 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     of (element, pulley) pairs whose points were evaluated.
     """
     nel, nq = w.shape
-    D, G, P = np.zeros((4, 7)), np.zeros((3, 7)), np.zeros((16, 3))
+    D, G, P, X = np.zeros((4, 7)), np.zeros((3, 7)), np.zeros((16, 3)), np.zeros((16, 3))
     r, v, a, vr = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
     n, t, vs, ft, pax = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
     pairs = 0
     for e in range(nel):
         sa, sb = _sides(S0, w, e)
+        _control_points(E, e, sa, sb, P)
         for p in range(radii.shape[0]):
             _unit_axis(axes, p, pax)
             R, om = radii[p], omegas[p]
-            if not _may_touch(E, e, sa, sb, centres[p], pax, R, P):
+            if not _may_touch(P, centres[p], pax, R, X):
                 continue
             pairs += 1
             for q in range(nq):

@@ -516,7 +516,7 @@ def test_bounding_test_never_skips_a_pair_in_contact():
                 skipped += 1
                 margin.append(gap[e] / max(a[e], b[e]))
     assert skipped > 0 and min(margin) > 0, (skipped, min(margin))
-    assert min(margin) < 0.1  # some skipped elements graze the pulley
+    assert min(margin) < 0.05  # some skipped elements graze the pulley
     # all pairs at once against the unbounded per-point state
     out = _forces(E, V, S0, w, pul, omegas, prm, want_J=False)
     r, _, Fn, ft, _, _ = _state(E, V, S0, pul, omegas, prm)
