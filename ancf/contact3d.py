@@ -18,7 +18,7 @@ for a pulley of centre o (m), unit axis p, radius R (m), angular velocity omega
                                                 plane (circumferential and axial)
     f_t  = -nu_s v_s                  if nu_s |v_s| <= mu F_n     friction, N/m^2
          = -mu F_n v_s / |v_s|        otherwise
-    f    = F_n n + f_t                          force per unit area on the plate
+    f    = F_n n + f_t                          force per unit area on the plate, N/m^2
 
 The clamp F_n >= 0 and the tri-linear creep-rate law are those of :mod:`ancf.contact`
 (there: why the clamp), the friction now a vector in the tangent plane; the linear
@@ -33,8 +33,9 @@ over each element's reference rectangle:
     T_p += sum_q w_q ((r - o) x (-f_q)) . p = -sum_q w_q |N| t . f_t    N m
 
 Element coordinates are ordered ``k * 3 + d`` (shape function k of ``plate36_S``,
-component d), 36 per element; E, V are (nel, 12, 3).  A point exactly on a pulley
-axis has no normal; the penalty regime (d << R) never reaches it.  With a plane motion about an
+component d), 36 per element; E, V are (nel, 12, 3).  Forces are per unit area of
+the reference rectangle (the weights w).  A point exactly on a pulley axis has no
+normal; the penalty regime (d << R) never reaches it.  With a plane motion about an
 axis along z, the law per unit width is the planar one of :mod:`ancf.contact` with
 k_p, c_p, nu_s divided by the width (tests/test_contact3d.py).
 """

@@ -4,7 +4,8 @@
 The state is a Model 1 belt (Table 4.1: R = 0.1 m, width 0.08 m, k_p, c_p, nu_s, mu)
 of 20 ``plate36`` elements, one across the width, laid on the two-pulley path (spans
 pi R, belt length 4 pi R) 1 mm into the pulleys, its nodes running at 2 m/s along the
-path (node slopes at rest), the pulleys' surfaces 10 % slower, 81 contact points per element (the thesis's number), 2 pulleys.
+path (node slopes at rest), the pulleys' surfaces 10 % slower; 81 contact points per
+element (the thesis's number), 2 pulleys.
 No wall-clock thresholds are asserted; the machine is recorded by conftest.py.
 """
 from __future__ import annotations
@@ -36,7 +37,8 @@ def _path(s):
     if s < span:
         return np.array([span - s, rho, 0.0]), np.array([-1.0, 0.0, 0.0])
     th = np.pi / 2 + (s - span) / R
-    return np.array([rho * np.cos(th), rho * np.sin(th), 0.0]), np.array([-np.sin(th), np.cos(th), 0.0])
+    return (np.array([rho * np.cos(th), rho * np.sin(th), 0.0]),
+            np.array([-np.sin(th), np.cos(th), 0.0]))
 
 
 def contact_case():

@@ -466,8 +466,10 @@ def test_bernstein_control_points_reproduce_the_plate_field():
     rng = np.random.default_rng(5)
     a, b = 0.17, 0.06
     xi, eta = rng.uniform(0, 1, 300), rng.uniform(0, 1, 300)
-    bern = np.stack([comb(3, i) * xi**i * (1 - xi)**(3 - i) * comb(3, j) * eta**j * (1 - eta)**(3 - j)
-                     for i in range(4) for j in range(4)], axis=1)
+    def b3(i, t):
+        return comb(3, i) * t**i * (1 - t) ** (3 - i)
+
+    bern = np.stack([b3(i, xi) * b3(j, eta) for i in range(4) for j in range(4)], axis=1)
     assert np.all(bern >= 0) and np.allclose(bern.sum(axis=1), 1.0, rtol=0, atol=1e-15)
     scale = np.tile([1.0, a, b], 4)
     np.testing.assert_allclose(bern @ (_CONTROLS * scale), plate36_S(xi * a, eta * b, a, b),
