@@ -16,6 +16,7 @@ ROOT = Path(__file__).resolve().parents[1]
 TD, TP = "tests/test_dynamics.py::", "tests/test_published_tables.py::"
 TA = "tests/test_analytic.py::"
 TB = "tests/test_belt_drive.py::"
+T3 = "tests/test_contact3d.py::"
 
 
 def plus_1_percent(before: str, value: str, after: str = "") -> tuple[str, str]:
@@ -70,6 +71,21 @@ MUTATIONS = [
     ("creep slope nu_s halved in the linear branch", "ancf/contact.py",
      ("return rho, d, Fn, vt, -nu * vt, -nu, 0.0", "return rho, d, Fn, vt, -0.5 * nu * vt, -0.5 * nu, 0.0"),
      "tests/test_contact.py::test_rotating_ring_slides_by_the_tri_linear_law"),
+    ("3D creep slope nu_s halved in the linear branch", "ancf/contact3d.py",
+     ("ft[c] = -nu * vs[c]", "ft[c] = -0.5 * nu * vs[c]"),
+     T3 + "test_sliding_strip_follows_the_creep_rate_law"),
+    ("3D pulley surface speed omega rho instead of omega R", "ancf/contact3d.py",
+     ("vs[c] = vr[c] - om * R * t[c] - wn * n[c]", "vs[c] = vr[c] - om * rho * t[c] - wn * n[c]"),
+     T3 + "test_sliding_strip_follows_the_creep_rate_law"),
+    ("3D bounding disc without its radius", "ancf/contact3d.py",
+     ("    return dist - rb <= R + _BOUND_MARGIN * scale", "    return dist <= R + _BOUND_MARGIN * scale"),
+     T3 + "test_bounding_test_never_skips_a_pair_in_contact"),
+    ("3D Jacobian without the turning of n", "ancf/contact3d.py",
+     ("D[i, c] += Fn * t[i] * t[c] / rho", "D[i, c] += 0.0"),
+     T3 + "test_jacobians_match_central_differences"),
+    ("3D Jacobian without the damper's dn/dr", "ancf/contact3d.py",
+     ("gF[c] = -kp * n[c] - cp * tv * t[c] / rho", "gF[c] = -kp * n[c]"),
+     T3 + "test_jacobians_match_central_differences"),
 ]
 
 
