@@ -133,6 +133,37 @@ RESULTS = {
                                     "(after the bounding test), summed over force evaluations"),
         "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
                                             "(0: start = laid)")},
+    "belt3d": {
+        **_DYNAMIC,
+        "omega_driver": series("driver angular velocity (Eq. 3.29), rad/s"),
+        "omega_driven": series("driven pulley angular velocity, rad/s"),
+        "slip_driven": _nullable("1 - mean omega_driven / mean omega_driver over the last "
+                                 "steady_window (null before the driver turns)"),
+        "T_tight_N": _nullable("tight (upper) span: mean tension k eps of strain_measure over its "
+                               "middle third at t_end, along the edge y = 0, N"),
+        "T_slack_N": _nullable("slack (lower) span: the same, N"),
+        "v_tight": _nullable("tight span: mean belt speed along the tangent at t_end, m/s"),
+        "v_slack": _nullable("slack span: the same, m/s"),
+        "tensions": field("object", "span tensions per measure (green, true, almansi: k eps; "
+                          "membrane: the element's own axial force), N", nullable=True,
+                          keys={m: field("object", f"{m}: tight and slack, N",
+                                         keys={"tight": field(NUM, "tight span, N"),
+                                               "slack": field(NUM, "slack span, N")})
+                                for m in ("green", "true", "almansi", "membrane")}),
+        "torque_from_tensions_Nm": _nullable("(T_tight - T_slack) R of strain_measure, N m"),
+        "torques_from_tensions_Nm": field("object", "(T_tight - T_slack) R per measure, N m",
+                                          nullable=True,
+                                          keys={m: field(NUM, f"{m}, N m") for m in
+                                                ("green", "true", "almansi", "membrane")}),
+        "torque_from_friction_Nm": _nullable("moment of the contact (friction) forces on the "
+                                             "driven pulley at t_end, N m"),
+        "penetration_max_m": _nullable("largest penetration of a contact point at t_end, m"),
+        "contact_pairs": field(INT, "element-pulley pairs whose points were evaluated (after the "
+                                    "bounding test), summed over force evaluations"),
+        "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
+                                            "(0: start = laid)"),
+        "belt_length_m": field(NUM, "reference (unstretched) belt length used, m"),
+        "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle")},
     "navier-plate": {"center_deflection_m": _nullable("centre deflection along the pressure, m"),
                      "terms": field(INT, "largest odd series index summed")},
     "timoshenko": {"mid_deflection_m": _nullable("midspan deflection, m")},

@@ -23,7 +23,7 @@ import numpy as np
 from ancf.contact import contact_forces
 from ancf.elements.dufva2d import gradient_tangent
 from ancf.solvers import banded
-from ancf.solvers.belt_forces import gather
+from ancf.solvers.belt_assembly import gather
 
 REPEATS = 300
 

@@ -1,0 +1,232 @@
+"""Three-dimensional belt drive of thin plates (thesis 4.6, Table 4.1, Figs 4.10-4.18).
+
+A closed belt of ``n_elements`` thin ``plate36`` elements (:mod:`ancf.belt3d_drive`)
+on two equal pulleys ``R`` apart by pi R (Table 4.1: l_s = pi R, belt 4 pi R),
+penalty contact with creep-rate friction at ``contact_points`` points per element
+(:mod:`ancf.contact3d`), driver ramp Eq. 3.29 (``t0`` to ``t1``, ``omega_final``),
+opposing torque Eq. 4.47 on the driven pulley (inertia ``inertia``).
+
+``model`` picks Table 4.1's column as the defaults of every other parameter:
+Model 1 (R 0.1 m, 16 plates, E 1e7 Pa, bending on) is pre-tensioned by moving the
+driver by ``u0`` = 2.5 mm (Eq. 4.46) with a belt as long as the path; Model 2 (R
+0.05 m, 20 plates, E 1.6667e6 Pa, bending off) by a belt shorter than the path,
+whose reference length L0 makes the membrane's axial force in a free, uniaxially
+stretched belt equal to ``T_i`` = 50 N: E h w lambda (lambda^2 - 1) / 2 = T_i
+(plane stress with free edges: S_xx = E E_xx), L0 = (P - 2 pi d) / lambda with d the
+penetration under that tension (:func:`belt_length`).  Model 2 starts
+from the belt settled statically on its pulleys (``start``), Model 1 from the laid
+belt (it is unstressed until the driver moves).
+
+Results at ``t_end`` along the belt edge (y = 0; 20 points per element, as the
+thesis samples): the span means of the tension from each strain measure
+(``strain_measure`` picks the one reported as ``T_tight_N`` / ``T_slack_N``; all
+are in ``tensions``) and of the membrane's own axial force, the span speeds, the
+driven slip averaged over the last ``steady_window``, the torque the span tensions
+carry (T_tight - T_slack) R and the moment of the friction forces on the driven
+pulley (the integral of Eq. 4.45's friction).
+"""
+from __future__ import annotations
+
+import math
+import sys
+
+import numpy as np
+
+from ancf.belt3d_drive import Belt3DDrive, Belt3DSpec
+from ancf.belt3d_post import MEASURES, end_state
+from ancf.belt_path import TwoPulleyPath
+from ancf.contact3d import SUPPORTED_RULES
+from ancf.inputs import MAX_STEPS, check_sampling, following, intervals
+from ancf.scenes.base import InputError, Param, Scene, SceneResult
+from ancf.solvers.belt_dynamics import BeltOptions, simulate
+from ancf.solvers.belt_pretension import settle
+
+#: Table 4.1 (n_elements, E, u0, T_i, bending: section 4.6's text)
+MODELS = {
+    1: dict(R=0.10, width=0.08, h=0.01, k_p=1e7, c_p=2000.0, nu_s=1e5, mu=1.2, rho=1036.0,
+            t1=0.6, omega_final=12.0, inertia=0.25, n_elements=16, E=1e7, u0=0.0025, T_i=0.0,
+            bending="on", Ta_max=0.0, start="laid"),
+    2: dict(R=0.05, width=0.04, h=0.003, k_p=8e7, c_p=2000.0, nu_s=2e5, mu=0.6, rho=166.667,
+            t1=1.0, omega_final=500.0, inertia=0.00025, n_elements=20, E=1.6667e6, u0=0.0,
+            T_i=50.0, bending="off", Ta_max=2.0, start="settled"),
+}
+T0 = 0.05            # s, Table 4.1 (both models)
+TA_T1 = 1.0          # s, Eq. 4.47 (see ancf.pulleys)
+PROGRESS_STEPS = 5_000
+
+
+def _model(key: str):
+    return lambda v: MODELS[v["model"]][key]
+
+
+def params() -> tuple:
+    m = _model
+    return (
+        Param("model", 2, int, doc="Table 4.1 column giving the defaults", choices=(1, 2)),
+        Param("n_elements", m("n_elements"), int, doc="plates along the belt (one across)",
+              lo=4, hi=200),
+        Param("contact_points", 81, int, doc="contact points per plate (n x n Gauss rule)",
+              choices=SUPPORTED_RULES),
+        Param("E", m("E"), float, "Pa", "Young's modulus", lo=0, lo_open=True, hi=1e12),
+        Param("nu", 0.3, float, "-", "Poisson's ratio", lo=0, hi=0.5, hi_open=True),
+        Param("rho", m("rho"), float, "kg/m^3", "belt density", lo=0, lo_open=True, hi=1e5),
+        Param("R", m("R"), float, "m", "pulley radius (both)", lo=0, lo_open=True, hi=1.0),
+        Param("centre_distance", lambda v: math.pi * v["R"], float, "m", "distance of the pulley "
+              "centres (Table 4.1: l_s = pi R)", lo=0, lo_open=True, hi=100.0),
+        Param("width", m("width"), float, "m", "belt width w", lo=0, lo_open=True, hi=1.0),
+        Param("h", m("h"), float, "m", "belt thickness", lo=0, lo_open=True, hi=0.1),
+        Param("bending", m("bending"), str, doc="bending energy of Eq. 4.17", choices=("on", "off")),
+        Param("T_i", m("T_i"), float, "N", "initial tension set by a belt shorter than the path "
+              "(0: as long as the path)", lo=0, hi=1e5),
+        Param("belt_length", None, float, "m", "reference (unstretched) belt length; default: "
+              "from T_i (see the scene's description)", lo=0, lo_open=True, hi=1000),
+        Param("u0", m("u0"), float, "m", "driver displacement of Eq. 4.46 (reached at t0)", lo=0,
+              hi=0.1),
+        Param("k_p", m("k_p"), float, "N/m^3", "penalty stiffness per unit area", lo=0,
+              lo_open=True, hi=1e13),
+        Param("c_p", m("c_p"), float, "N s/m^3", "penalty damping per unit area", lo=0, hi=1e9),
+        Param("mu", m("mu"), float, "-", "friction coefficient", lo=0, lo_open=True, hi=10),
+        Param("nu_s", m("nu_s"), float, "kg/(m^2 s)", "friction creep-rate factor", lo=0,
+              lo_open=True, hi=1e10),
+        Param("inertia", m("inertia"), float, "kg m^2", "driven pulley moment of inertia", lo=0,
+              lo_open=True, hi=1e3),
+        Param("omega_final", m("omega_final"), float, "rad/s", "driver's final angular velocity "
+              "(Eq. 3.29)", lo=0, hi=5000),
+        Param("t1", m("t1"), float, "s", "end of the driver ramp (Table 4.1)", lo=T0, lo_open=True,
+              hi=100),
+        Param("Ta_max", m("Ta_max"), float, "N m", "final opposing torque (Eq. 4.47; reached at "
+              f"{TA_T1:g} s)", lo=0, hi=1e4),
+        Param("strain_measure", "green", str, doc="strain measure of the reported span tensions "
+              "(Eqs 4.9-4.11; all are in results.tensions)", choices=MEASURES),
+        Param("start", m("start"), str, doc="'settled': static frictionless pre-tension first; "
+              "'laid': on the wrapped path", choices=("settled", "laid")),
+        Param("integrator", "generalized-alpha", str, doc="time integrator",
+              choices=("generalized-alpha",)),
+        Param("dt", 1e-4, float, "s", "time step", lo=1e-7, hi=1e-2),
+        Param("rho_inf", 0.5, float, "-", "generalized-alpha spectral radius at infinite "
+              "frequency", lo=0, hi=1),
+        Param("newton_tol", 1e-7, float, "-", "Newton tolerance on the position increment "
+              "relative to 1 + |q|", lo=1e-14, hi=1e-3),
+        Param("t_end", 1.2, float, "s", "simulated time", lo=0, lo_open=True, hi=100),
+        Param("output_dt", following(0.005, "t_end"), float, "s", "sampling interval "
+              "(default 0.005 s, at most t_end)", lo=0, lo_open=True, hi=10),
+        Param("steady_window", following(0.1, "t_end"), float, "s", "window before t_end over "
+              "which the driven slip is averaged", lo=0, lo_open=True, hi=100),
+        Param("max_steps", 400_000, int, doc="step budget (beyond it: not converged)", lo=1,
+              hi=MAX_STEPS),
+    )
+
+
+def path_of(p: dict) -> TwoPulleyPath:
+    return TwoPulleyPath((0.0, 0.0), p["R"], (p["centre_distance"], 0.0), p["R"])
+
+
+def stretch_for(T_i: float, k: float) -> float:
+    """lambda with k lambda (lambda^2 - 1) / 2 = T_i (uniaxial membrane force, k = E h w)."""
+    c = 2.0 * T_i / k
+    lam = 1.0 + c / 2.0
+    for _ in range(60):  # Newton on f = lam^3 - lam - c, convex for lam >= 1
+        lam -= (lam**3 - lam - c) / (3 * lam**2 - 1)
+    return lam
+
+
+def belt_length(p: dict) -> float:
+    """Reference length: given, or L0 = (P - 2 pi d) / lambda(T_i), m, with d the
+    penetration of :func:`penetration`, so that the settled belt's spans carry T_i."""
+    if p["belt_length"] is not None:
+        return p["belt_length"]
+    lam = stretch_for(p["T_i"], p["E"] * p["h"] * p["width"])
+    return (path_of(p).length - 2 * math.pi * penetration(p, lam)) / lam
+
+
+def penetration(p: dict, lam: float) -> float:
+    """d = T_i lambda / (R w k_p), m: the penalty's answer to the wrap's normal force
+    T_i / R per unit belt length, i.e. T_i lambda / R per unit reference length, spread
+    over the reference width."""
+    return p["T_i"] * lam / (p["R"] * p["width"] * p["k_p"])
+
+
+def check(p: dict) -> None:
+    check_sampling(p)
+    if 2 * p["R"] >= p["centre_distance"]:
+        raise InputError(f"R = {p['R']:g} m: the pulleys overlap; allowed: 2 R < centre_distance "
+                         f"= {p['centre_distance']:g} m")
+    P = path_of(p).length
+    if p["belt_length"] is not None and not 0.5 * P <= p["belt_length"] <= 2.0 * P:
+        raise InputError(f"belt_length = {p['belt_length']:g} m is out of range for this path "
+                         f"({P:.6g} m); allowed: a number in [{0.5 * P:.6g}, {2 * P:.6g}] m "
+                         "(half to twice the wrapped path)")
+    if p["dt"] > p["output_dt"]:
+        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: a number in [1e-07, "
+                         f"output_dt = {p['output_dt']:g}] s (samples fall on steps)")
+    if p["t_end"] / p["dt"] > MAX_STEPS:
+        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: at least "
+                         f"t_end/{MAX_STEPS} = {p['t_end'] / MAX_STEPS:g} s")
+    lam = stretch_for(p["T_i"], p["E"] * p["h"] * p["width"])
+    if lam > 2.0:
+        raise InputError(f"T_i = {p['T_i']:g} N is out of range: it needs a belt shorter than half "
+                         f"the path (stretch {lam:.3g}); allowed: T_i <= "
+                         f"{3.0 * p['E'] * p['h'] * p['width']:g} N (= 3 E h w)")
+
+
+def spec(p: dict) -> Belt3DSpec:
+    return Belt3DSpec(path_of(p), belt_length(p), p["n_elements"], p["E"], p["nu"], p["rho"],
+                      p["width"], p["h"], p["bending"] == "on", p["k_p"], p["c_p"], p["mu"],
+                      p["nu_s"], p["contact_points"], p["inertia"], p["omega_final"], T0, p["t1"],
+                      p["Ta_max"], TA_T1, p["u0"])
+
+
+def times(p: dict) -> np.ndarray:
+    n = intervals(p["t_end"], p["output_dt"])
+    return np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
+
+
+def _slip(t, wd, wn, window) -> float | None:
+    sel = (t >= t[-1] - window - 1e-12) & (wd > 0)
+    return float(1.0 - np.mean(wn[sel]) / np.mean(wd[sel])) if sel.any() else None
+
+
+END_KEYS = ("T_tight_N", "T_slack_N", "v_tight", "v_slack", "tensions", "torque_from_tensions_Nm",
+            "torques_from_tensions_Nm", "torque_from_friction_Nm", "penetration_max_m")
+
+
+def run(p: dict) -> SceneResult:
+    drive = Belt3DDrive(spec(p))
+    opt = BeltOptions(dt=p["dt"], rho_inf=p["rho_inf"], newton_tol=p["newton_tol"],
+                      max_steps=p["max_steps"])
+    x0, pre_iterations, pre = None, 0, None
+    if p["start"] == "settled":
+        x0, pre = settle(drive)
+        pre_iterations = pre.iterations
+    res = simulate(drive, times(p), opt, x0=x0, progress=_progress(p))
+    if pre is not None and not pre.converged:
+        res.converged, res.message = False, f"pre-tension: {pre.message}"
+    wd = np.asarray(drive.omega_driver(res.t), dtype=float)
+    wn = res.v[:, -1]
+    ok = res.converged
+    results = {"times": [float(t) for t in res.t], "omega_driver": [float(w) for w in wd],
+               "omega_driven": [float(w) for w in wn],
+               "slip_driven": _slip(res.t, wd, wn, p["steady_window"]) if ok else None}
+    if ok:
+        results.update(end_state(drive, res.q[-1], res.v[-1], float(res.t[-1]),
+                                 p["strain_measure"]))
+    else:
+        results.update(dict.fromkeys(END_KEYS))
+    results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
+                   contact_pairs=res.extra["contact_pairs"], pretension_iterations=pre_iterations,
+                   belt_length_m=drive.spec.belt_length, total_dofs=drive.n + 1)
+    return SceneResult(ok, res.message, results, extra={"result": res, "drive": drive})
+
+
+def _progress(p: dict):
+    """Progress lines on stderr for long runs from a terminal."""
+    if not sys.stderr.isatty() or p["t_end"] / p["dt"] < PROGRESS_STEPS:
+        return None
+    return lambda t: print(f"belt3d: t = {t:.4g} / {p['t_end']:g} s", file=sys.stderr, flush=True)
+
+
+SCENE = Scene(
+    "belt3d",
+    "Three-dimensional belt drive of thin ANCF plates on two pulleys, surface penalty contact "
+    "with creep-rate friction, Models 1 and 2 of Table 4.1 (thesis 4.6).",
+    params(), run, check)
