@@ -40,7 +40,8 @@ relative residuals over a sweep's rows, with the scatter of the fit and the seco
 work unit that the weighted model implies.
 
 The belt scenes have no ``element`` knob: their kernel is the Dufva belt element
-(:func:`belt_shape`: 12 coordinates, elastic plus contact points).  belt2d's
+(:func:`belt_shape`: 12 coordinates, elastic plus contact points; the 3D belt's
+plate: :func:`plate_belt_shape`).  belt2d's
 generalised-alpha runs keep the ``alpha`` table: on the 38 runs of its report grid the
 seconds per work unit scatter by 8 % median / 17 % at the 90th percentile (one cold
 first run 1.8x), as good as a refit (NNLS: 8 % / 17 %), so no belt table was added.
@@ -101,12 +102,20 @@ def belt_shape(params) -> tuple[int, int]:
     return 4 * len(DufvaBelt2D.slots), int(_num(params.get("elastic_points")) + contact)
 
 
+def plate_belt_shape(params) -> tuple[int, int]:
+    """(coordinates, points) per plate of the 3D belt (belt3d): 36 coordinates, the
+    4 x 4 elastic rule plus the contact points."""
+    return 36, 16 + int(_num(params.get("contact_points")))
+
+
 def element_shape(params) -> tuple[int, int]:
     """(coordinates per element, quadrature points per element) of the run's element and
     integration scheme (or of the belt element, :func:`belt_shape`); (0, 0) for an element
     family this module does not know."""
     from ancf.elements.catalogue import ELEMENTS
     cls = ELEMENTS.get(str(params.get("element")))
+    if cls is None and _num(params.get("contact_points")):
+        return plate_belt_shape(params)
     if cls is None:
         return belt_shape(params) if _num(params.get("elastic_points")) else (0, 0)
     spec = getattr(cls, "schemes", {}).get(params.get("integration"), params.get("integration"))

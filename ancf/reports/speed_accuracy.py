@@ -120,7 +120,8 @@ def plot(df: pd.DataFrame, scene: str, dynamic: bool, ax, err: str = "error", ti
 QUICK_N = 2
 QUICK_FIXED = {"pendulum": {"t_end": 0.2, "output_dt": 0.01},
                "spinning-beam": {"t_end": 2.0, "mean_window": 1.0},
-               "belt2d": {"t_end": 0.3}}
+               "belt2d": {"t_end": 0.3},
+               "belt3d": {"t_end": 0.05, "output_dt": 0.01, "steady_window": 0.01}}
 
 
 def quick_grids(grids) -> list:
@@ -151,7 +152,7 @@ def scene_sweep(scene: str, workers=None, fresh: bool = True, out=None) -> pd.Da
     return with_work(df[df["scene"] == scene])
 
 
-_CSV_COLS = ("element", "integration", "n_elements", "gauss_points", "elastic_points",
+_CSV_COLS = ("element", "integration", "n_elements", "gauss_points", "contact_points", "elastic_points",
              "integrator", "rtol", "atol", "dt", "newton_tol", "load_steps", "status", "message", "error", "error_self", "work", "cpu_time_s",
              "steps", "iterations") + tuple(f"count_{k}" for k in FEATURES)
 
