@@ -19,13 +19,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from ancf import beam3d
 from ancf.assembly import Assembly, ElementGroup
-from ancf.constraints import Elimination
 from ancf.elements.linear3d import LinearBeam3D
 from ancf.mesh import BeamMesh
 from ancf.quadrature import RectangularSection, gauss01
 from ancf.scenes import SCENES
-from ancf.solvers.static import NewtonOptions, solve_static
 
 E_MOD, NU, RHO, L = 2.07e11, 0.3, 7850.0, 2.0
 SECTION = RectangularSection(0.1, 0.1)
@@ -169,40 +168,13 @@ def test_mass_is_the_exact_integral(scheme):
 
 
 # ------------------------------------------------------- validation against the 2D beam
-def _model(p):
-    """3D mesh, reference and assembly for the (resolved) 2D scene parameters p."""
-    m = BeamMesh(p["L"], p["n_elements"], LinearBeam3D.slots, dim=3)
-    q0 = m.reference()
-    el = LinearBeam3D(m.lengths, q0[m.dofmap], RectangularSection(p["b"], p["h"]), p["E"], p["nu"],
-                      ks=p["ks"], integration=p["integration"])
-    return m, q0, Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)])
-
-
-def _clamp(m):
-    """r, r_y and r_z of the first node."""
-    return [(0, s, k) for s in m.slots for k in range(3)]
-
-
-def _pins(m):
-    """The 2D scene's supports (x, y of the first node, y of the last) in both
-    bending planes, and the twist of the first node (z of its r_y)."""
-    n = m.n_nodes - 1
-    return [(0, "r", 0), (0, "r", 1), (0, "r", 2), (n, "r", 1), (n, "r", 2), (0, "r_y", 2)]
+_clamp, _pins = beam3d.clamp, beam3d.pins
 
 
 def _solve(p, supports, loads):
-    """Static 3D solve with ``supports`` (mesh -> [(node, slot, component)]) fixed at the
-    reference and ``loads`` {(node, slot, component): N}; the scene's Newton options."""
-    m, q0, asm = _model(p)
-    elim = Elimination(m.n_dofs)
-    for node, slot, k in supports(m):
-        d = m.dof(node, slot, k)
-        elim.fix(d, q0[d])
-    Qk = np.zeros(m.n_dofs)
-    for (node, slot, k), f in loads.items():
-        Qk[m.dof(node, slot, k)] += f
-    res = solve_static(asm, elim, Qk, q0, NewtonOptions(n_steps=p["load_steps"], rtol=p["rtol"],
-                                                        max_iter=p["max_iterations"]))
+    """Static 3D solve (ancf.beam3d) with ``supports`` fixed at the reference and
+    ``loads`` {(node, slot, component): N}; nodal displacements (n_nodes, 3, 3)."""
+    res, m, q0, asm = beam3d.solve({**p, "element": "linear3d"}, supports, loads)
     assert res.converged, res.message
     assert res.pattern.compiled(asm) is None  # the generic (non-planar) Newton path
     return (res.q - q0).reshape(m.n_nodes, 3, 3)
@@ -257,11 +229,7 @@ def test_tip_load_at_45_degrees_is_the_sum_of_the_two_planes():
     assert abs(u[tip, 0, 1] - u[tip, 0, 2]) <= 1e-12 * abs(u[tip, 0, 1])  # along 45 deg
 
 
-def _torsion_constant_square(a, terms=50):
-    """St-Venant's J of a square of side a, m^4, from the series (Timoshenko and
-    Goodier): J = a^4/3 (1 - 192/pi^5 sum_{n odd} tanh(n pi/2)/n^5)."""
-    n = np.arange(1, 2 * terms, 2)
-    return a**4 / 3.0 * (1.0 - 192.0 / np.pi**5 * np.sum(np.tanh(n * np.pi / 2.0) / n**5))
+_torsion_constant_square = beam3d.torsion_constant_square
 
 
 def test_torsion_constant_series():

@@ -24,15 +24,12 @@ import math
 
 import numpy as np
 import pytest
-import scipy.sparse.linalg as sla
 
 from analytic import navier_plate, plate_thin, reissner
+from ancf import plate_models
 from ancf.assembly import Assembly, ElementGroup
-from ancf.constraints import Elimination
-from ancf.elements import _generated as shape_gen
 from ancf.elements.plate36 import Plate36
 from ancf.plate_mesh import SLOTS, PlateMesh
-from ancf.quadrature import gauss01
 from ancf.solvers.static import NewtonOptions, solve_static
 
 STEEL = dict(h=0.01, E=2.1e11, nu=0.3)
@@ -151,20 +148,9 @@ def test_navier_double_series_matches_levy_single_series():
 
 
 def _simply_supported_centre(n, a=1.0, p=1e3):
-    """Centre deflection (m) of an n x n mesh of the simply supported square plate:
-    in-plane coordinates fixed (decoupled at the flat reference), w = 0 and the
-    slope along the edge = 0 on the boundary; linear solve at the reference."""
-    m = PlateMesh(a, a, n, n)
-    _, K = Assembly(m.n_dofs, [ElementGroup(_plate(m), m.dofmap)]).gradient_tangent(m.reference())
-    fixed = {m.dof(k, s, c) for k in range(m.n_nodes) for s in SLOTS for c in (0, 1)}
-    for k in range(m.n_nodes):
-        on_x, on_y = m.X[k] in (0.0, a), m.Y[k] in (0.0, a)
-        fixed |= {m.dof(k, "r", 2)} if on_x or on_y else set()
-        fixed |= {m.dof(k, "r_y", 2)} if on_x else set()
-        fixed |= {m.dof(k, "r_x", 2)} if on_y else set()
-    free = np.setdiff1d(np.arange(m.n_dofs), sorted(fixed))
-    u = sla.spsolve(K[free][:, free].tocsc(), m.pressure_load(p)[free])
-    return u[np.searchsorted(free, m.dof(m.node(n // 2, n // 2), "r", 2))]
+    """Centre deflection (m) of an n x n mesh of the simply supported square plate
+    (ancf.plate_models: linear solve at the reference)."""
+    return plate_models.simply_supported_centre(n, a, a, p=p, **STEEL)
 
 
 def test_simply_supported_plate_converges_to_navier():
@@ -189,27 +175,9 @@ def test_bad_input_names_the_field():
 STRIP_TOL = 1e-6  # nu = 0: the cubic beam deflection is in the element space
 
 
-def _edge_load(m: PlateMesh, P: float) -> np.ndarray:
-    """Consistent forces of the end load P (N, along +z) spread uniformly over x = a."""
-    t, w = gauss01(2)
-    a, b = m.lengths[0], m.widths[0]
-    fe = P / m.b * b * (w @ shape_gen.plate36_S(np.full(2, a), t * b, a, b))
-    f = np.zeros(m.n_dofs)
-    np.add.at(f, m.dofmap[m.nx - 1::m.nx, 2::3], np.broadcast_to(fe, (m.ny, 12)))
-    return f
-
-
 def _strip_tip(nx, ny, L=1.0, b=0.05, P=1.0, nu=0.0):
     """Mean tip deflection (m) of a strip L x b clamped at x = 0 (r, r_x, r_y), linear solve."""
-    m = PlateMesh(L, b, nx, ny)
-    el = Plate36(m.lengths, m.widths, **{**STEEL, "nu": nu})
-    _, K = Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]).gradient_tangent(m.reference())
-    fixed = {m.dof(k, s, c) for k in range(m.n_nodes) for s in SLOTS for c in (0, 1)}
-    fixed |= {m.dof(k, s, 2) for k in range(m.n_nodes) if m.X[k] == 0.0 for s in SLOTS}
-    free = np.setdiff1d(np.arange(m.n_dofs), sorted(fixed))
-    u = sla.spsolve(K[free][:, free].tocsc(), _edge_load(m, P)[free])
-    tips = [m.dof(m.node(nx, j), "r", 2) for j in range(ny + 1)]
-    return u[np.searchsorted(free, tips)].mean()
+    return plate_models.strip_linear_tip(nx, ny, L, b, STEEL["h"], STEEL["E"], nu, P)
 
 
 @pytest.mark.parametrize("nx, ny", [(1, 1), (4, 1), (8, 2)])
@@ -225,17 +193,12 @@ REISSNER_STRIP_TOL = 1e-3  # relative tip error of the 8 x 1 strip (large deflec
 def _strip_large(nx, F, L=1.0, b=0.05):
     """Tip (x, z) (m) of an nx x 1 strip L x b, nu = 0, clamped at x = 0, under the dead
     end load F (N, +z) spread over x = L, by Newton (ancf.solvers.static)."""
-    m = PlateMesh(L, b, nx, 1)
-    el = Plate36(m.lengths, m.widths, **{**STEEL, "nu": 0.0})
-    q0 = m.reference()
-    root = [m.dof(k, s, c) for k in range(m.n_nodes) if m.X[k] == 0.0
-            for s in SLOTS for c in range(3)]
-    res = solve_static(Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]),
-                       Elimination(m.n_dofs).fix(root, q0[root]), _edge_load(m, F), q0,
+    m, q0, asm, elim = plate_models.strip_model(nx, 1, L, b, STEEL["h"], STEEL["E"], 0.0)
+    res = solve_static(asm, elim, plate_models.edge_load(m, F), q0,
                        NewtonOptions(n_steps=4, rtol=1e-10))
     assert res.converged, res.message
-    tips = [m.node(nx, j) for j in range(2)]
-    return np.array([res.q[[m.dof(k, "r", c) for k in tips]].mean() for c in (0, 2)])
+    tip = plate_models.tip_mean(m, res.q)
+    return np.array([tip["tip_x"], tip["tip_z"]])
 
 
 def test_cantilever_strip_large_deflection_converges_to_reissner():
