@@ -133,6 +133,18 @@ RESULTS = {
                                     "(after the bounding test), summed over force evaluations"),
         "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
                                             "(0: start = laid)")},
+    "plate-square": {
+        "center_deflection_m": _nullable("centre deflection along the pressure (linear solve), m"),
+        "navier_center_deflection_m": _nullable("Navier's series at the same parameters, m"),
+        "navier_terms": field(INT, "largest odd index of Navier's series summed"),
+        "relative_error": _nullable("center_deflection_m / navier_center_deflection_m - 1"),
+        "tangent_evaluations": field(INT, "tangent-stiffness evaluations (1: a linear solve)"),
+        "factorizations": field(INT, "factorisations of the tangent (1)")},
+    "plate-strip": {**_STATIC, "tip_x": _nullable("mean x of the tip-edge nodes, m"),
+                    "tip_y": _nullable("mean y of the tip-edge nodes (b/2 by symmetry), m"),
+                    "tip_z": _nullable("mean z of the tip-edge nodes (along the load), m")},
+    "beam3d-cantilever": {**_STATIC, "tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
+                          "tip_z": _nullable("tip z, m")},
     "navier-plate": {"center_deflection_m": _nullable("centre deflection along the pressure, m"),
                      "terms": field(INT, "largest odd series index summed")},
     "timoshenko": {"mid_deflection_m": _nullable("midspan deflection, m")},
