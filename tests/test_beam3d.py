@@ -20,6 +20,7 @@ import numpy as np
 import pytest
 
 from ancf import beam3d
+from ancf import elements3d_checks as checks
 from ancf.assembly import Assembly, ElementGroup
 from ancf.elements.linear3d import LinearBeam3D
 from ancf.mesh import BeamMesh
@@ -168,46 +169,24 @@ def test_mass_is_the_exact_integral(scheme):
 
 
 # ------------------------------------------------------- validation against the 2D beam
-_clamp, _pins = beam3d.clamp, beam3d.pins
-
-
-def _solve(p, supports, loads):
-    """Static 3D solve (ancf.beam3d) with ``supports`` fixed at the reference and
-    ``loads`` {(node, slot, component): N}; nodal displacements (n_nodes, 3, 3)."""
-    res, m, q0, asm = beam3d.solve({**p, "element": "linear3d"}, supports, loads)
+def test_3d_solve_takes_the_generic_newton_path():
+    """ancf.beam3d.solve (used by the checks below): converged, not the planar compiled path."""
+    p = SCENES["cantilever"].resolve({"element": "linear", "F": -1000.0})
+    res, _, _, asm = beam3d.solve({**p, "element": "linear3d"}, beam3d.clamp,
+                                  {(p["n_elements"], "r", 2): p["F"]})
     assert res.converged, res.message
-    assert res.pattern.compiled(asm) is None  # the generic (non-planar) Newton path
-    return (res.q - q0).reshape(m.n_nodes, 3, 3)
-
-
-SCENE_CASES = {  # scene, overrides, supports, loaded node (0 = first, -1 = last, None = mid)
-    "cantilever-small": ("cantilever", {"F": -1000.0}, _clamp, -1),
-    "cantilever-model1": ("cantilever", {}, _clamp, -1),  # thesis Table 2.3, large deflection
-    "simply-supported": ("simply-supported", {}, _pins, None),
-}
+    assert res.pattern.compiled(asm) is None
 
 
 @pytest.mark.parametrize("axis", [1, 2], ids=["load-y", "load-z"])
 @pytest.mark.parametrize("scheme", STABLE)
-@pytest.mark.parametrize("case", list(SCENE_CASES))
+@pytest.mark.parametrize("case", list(checks.BEAM_CASES))
 def test_bending_in_a_principal_plane_reproduces_the_2d_scenes(case, scheme, axis):
     """The scene's load along -y (then along -z) on the square section: in-plane nodal
     displacements (r and the slope in the plane) equal the 2D element's to 1e-10 of the
-    largest, and the out-of-plane ones vanish to 1e-10 of it."""
-    name, over, supports, node = SCENE_CASES[case]
-    over = {"element": "linear", "integration": scheme, **over}
-    _, res = SCENES[name].execute(over)
-    assert res.converged, res.message
-    u2 = (res.extra["q"] - res.extra["q0"]).reshape(-1, 2, 2)
-    p = SCENES[name].resolve(over)
-    node = u2.shape[0] // 2 if node is None else node % u2.shape[0]
-    u3 = _solve(p, supports, {(node, "r", axis): p["F"]})
-    inplane = np.ix_(range(u3.shape[0]), [0, axis], [0, axis])
-    scale = np.abs(u2).max()
-    assert np.abs(u3[inplane] - u2).max() <= 1e-10 * scale
-    out = u3.copy()
-    out[inplane] = 0.0
-    assert np.abs(out).max() <= 1e-10 * scale
+    largest, and the out-of-plane ones vanish to 1e-10 of it (ancf.elements3d_checks)."""
+    inplane, outplane = checks.principal_plane(case, scheme, axis)
+    assert inplane <= 1e-10 and outplane <= 1e-10
 
 
 def test_tip_load_at_45_degrees_is_the_sum_of_the_two_planes():
@@ -217,24 +196,14 @@ def test_tip_load_at_45_degrees_is_the_sum_of_the_two_planes():
     (theta_y theta_z ~ (w/L)^2, w the tip deflection), so the tolerance is (w/L)^2 of
     the largest position displacement and w/L of the largest slope change (seen:
     0.53 of either)."""
-    p = SCENES["cantilever"].resolve({"element": "linear", "F": -1000.0})
-    f, tip = p["F"] / np.sqrt(2.0), p["n_elements"]
-    u_y = _solve(p, _clamp, {(tip, "r", 1): f})
-    u_z = _solve(p, _clamp, {(tip, "r", 2): f})
-    u = _solve(p, _clamp, {(tip, "r", 1): f, (tip, "r", 2): f})
-    wl = np.linalg.norm(u[tip, 0]) / p["L"]
-    d = u - u_y - u_z
-    assert np.abs(d[:, 0]).max() <= wl**2 * np.abs(u[:, 0]).max()
-    assert np.abs(d[:, 1:]).max() <= wl * np.abs(u[:, 1:]).max()
-    assert abs(u[tip, 0, 1] - u[tip, 0, 2]) <= 1e-12 * abs(u[tip, 0, 1])  # along 45 deg
-
-
-_torsion_constant_square = beam3d.torsion_constant_square
+    d = checks.superposition_45()
+    assert d["position"] <= 1.0 and d["slope"] <= 1.0
+    assert d["symmetry"] <= 1e-12  # along 45 deg
 
 
 def test_torsion_constant_series():
     """The series gives the tabulated 0.1406 a^4 (to the 4 printed digits)."""
-    assert abs(_torsion_constant_square(1.0) - 0.1406) < 5e-5
+    assert abs(beam3d.torsion_constant_square(1.0) - 0.1406) < 5e-5
 
 
 @pytest.mark.parametrize("ks", [1.0, 5.0 / 6.0])
@@ -247,19 +216,7 @@ def test_torsion_stiffness_is_ks_G_Ip_not_G_J(scheme, ks):
     the twist phi(x) = T x / (ks G I_p), I_p = I_y + I_z, at every node, and the
     St-Venant stiffness G J over the element's is J / (ks I_p) (0.8436 at ks = 1).
     T gives a tip twist of 1e-6 rad, so the geometric nonlinearity is ~1e-12;
-    asserted 1e-8 relative."""
-    p = SCENES["cantilever"].resolve({"element": "linear", "integration": scheme, "ks": ks, "nu": NU})
-    a, tip = p["h"], p["n_elements"]
-    p["b"] = a
-    G = p["E"] / (2.0 * (1.0 + p["nu"]))
-    s = RectangularSection(a, a)
-    Iy, Iz = s.h * s.b**3 / 12.0, s.second_moment
-    Ip = Iy + Iz
-    T = 1e-6 * ks * G * Ip / p["L"]
-    u = _solve(p, _clamp, {(tip, "r_y", 2): T * Iz / Ip, (tip, "r_z", 1): -T * Iy / Ip})
-    phi = np.arctan2(u[:, 1, 2], 1.0 + u[:, 1, 1])
-    x = np.linspace(0.0, p["L"], tip + 1)
-    np.testing.assert_allclose(phi, T * x / (ks * G * Ip), rtol=1e-8, atol=0)
-    stiffness = T * p["L"] / phi[-1]
-    J = _torsion_constant_square(a)
-    np.testing.assert_allclose(G * J / stiffness, J / (ks * Ip), rtol=1e-8)
+    asserted 1e-8 relative (ancf.elements3d_checks.torsion)."""
+    t = checks.torsion(scheme, ks)
+    assert t["twist_error"] <= 1e-8
+    assert t["ratio"] == pytest.approx(t["J_over_ks_Ip"], rel=1e-8)

@@ -14,9 +14,9 @@ with nu = 0 the cubic beam deflection lies in the element space and every mesh
 gives it (1 x 1: 2e-11, 8 x 2: 2e-7 relative, round-off); with nu = 0.3 the plate
 is stiffer than E I (read as the clamp suppressing anticlastic curvature): -6.7 %, -3.9 %,
 -2.0 %, -1.1 % with 1, 2, 4, 8 x 1 elements, -0.70 % with 16 x 2, -0.57 % with 32 x 4.
-Large deflection (nu = 0, F = E I/L^2, tip at 0.30 L; Newton, ancf.solvers.static)
-against the Reissner beam (analytic/reissner.py): largest relative tip-coordinate
-error 6.2e-3, 2.5e-4, 4.6e-5 with 4, 8, 16 x 1 elements.
+Large deflection (nu = 0, F = E I/L^2, tip at 0.30 L; scene plate-strip, Newton)
+against the Reissner beam (analytic/reissner.py, shear switched off: ks = 1e6): largest
+relative tip-coordinate error 6.2e-3, 2.0e-4, 7.3e-6 with 4, 8, 16 x 1 elements.
 """
 from __future__ import annotations
 
@@ -25,12 +25,12 @@ import math
 import numpy as np
 import pytest
 
-from analytic import navier_plate, plate_thin, reissner
+from analytic import navier_plate, plate_thin
+from ancf import elements3d_checks as checks
 from ancf import plate_models
 from ancf.assembly import Assembly, ElementGroup
 from ancf.elements.plate36 import Plate36
 from ancf.plate_mesh import SLOTS, PlateMesh
-from ancf.solvers.static import NewtonOptions, solve_static
 
 STEEL = dict(h=0.01, E=2.1e11, nu=0.3)
 NAVIER_TOL = 0.01  # relative centre-deflection error of the finest mesh
@@ -147,18 +147,13 @@ def test_navier_double_series_matches_levy_single_series():
         assert w == pytest.approx(navier_plate.levy_centre_deflection(a, b, p=1e3, **STEEL), rel=1e-8)
 
 
-def _simply_supported_centre(n, a=1.0, p=1e3):
-    """Centre deflection (m) of an n x n mesh of the simply supported square plate
-    (ancf.plate_models: linear solve at the reference)."""
-    return plate_models.simply_supported_centre(n, a, a, p=p, **STEEL)
-
-
 def test_simply_supported_plate_converges_to_navier():
-    w_ref, _ = navier_plate.centre_deflection(1.0, 1.0, p=1e3, **STEEL)
-    err = np.array([_simply_supported_centre(n) / w_ref - 1 for n in (4, 8, 16)])
+    """Scene plate-square per mesh (ancf.elements3d_checks.plate_convergence)."""
+    rows = checks.plate_convergence((4, 8, 16))
+    err = np.array([r["relative error"] for r in rows])
     assert abs(err[-1]) <= NAVIER_TOL
     assert np.all(np.abs(np.diff(np.abs(err))) > 0) and np.all(np.diff(np.abs(err)) < 0)
-    order = np.log2(np.abs(err[:-1] / err[1:]))
+    order = np.array([r["observed order"] for r in rows[1:]])
     assert np.all(np.abs(order - 2) <= 0.2), order
 
 
@@ -190,24 +185,10 @@ def test_cantilever_strip_matches_euler_bernoulli(nx, ny):
 REISSNER_STRIP_TOL = 1e-3  # relative tip error of the 8 x 1 strip (large deflection)
 
 
-def _strip_large(nx, F, L=1.0, b=0.05):
-    """Tip (x, z) (m) of an nx x 1 strip L x b, nu = 0, clamped at x = 0, under the dead
-    end load F (N, +z) spread over x = L, by Newton (ancf.solvers.static)."""
-    m, q0, asm, elim = plate_models.strip_model(nx, 1, L, b, STEEL["h"], STEEL["E"], 0.0)
-    res = solve_static(asm, elim, plate_models.edge_load(m, F), q0,
-                       NewtonOptions(n_steps=4, rtol=1e-10))
-    assert res.converged, res.message
-    tip = plate_models.tip_mean(m, res.q)
-    return np.array([tip["tip_x"], tip["tip_z"]])
-
-
 def test_cantilever_strip_large_deflection_converges_to_reissner():
-    """F = E I / L^2 bends the strip to a tip deflection of 0.30 L."""
-    L, b, h, E = 1.0, 0.05, STEEL["h"], STEEL["E"]
-    F = E * b * h**3 / 12 / L**2
-    ref = reissner.tip_position(E, 0.0, L, h, b, F)
-    assert ref.converged
-    err = [np.abs(_strip_large(n, F) / [ref.tip_x, ref.tip_y] - 1).max() for n in (4, 8, 16)]
+    """F = E I / L^2 bends the strip to a tip deflection of 0.30 L (scene plate-strip,
+    nu = 0, against the Reissner rod with shear switched off; ancf.elements3d_checks)."""
+    err = [r["relative error"] for r in checks.strip_large((4, 8, 16))]
     assert err[1] <= REISSNER_STRIP_TOL and err[2] < err[1] < err[0], err
 
 
