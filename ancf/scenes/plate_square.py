@@ -12,6 +12,8 @@ D = E h^3 / (12 (1 - nu^2))).
 """
 from __future__ import annotations
 
+import math
+
 from analytic import navier_plate
 from ancf.plate_models import simply_supported_centre
 from ancf.scenes.base import InputError, Param, Scene, SceneResult
@@ -39,6 +41,13 @@ def check(p: dict) -> None:
 
 def run(p: dict) -> SceneResult:
     geo = dict(h=p["h"], E=p["E"], nu=p["nu"], p=p["p"])
+    D = navier_plate.rigidity(p["E"], p["nu"], p["h"])
+    if not (math.isfinite(D) and D > 0):
+        return SceneResult(False, f"No solution: the bending rigidity E h^3/(12 (1 - nu^2)) = "
+                                  f"{D:g} N m is not a positive finite number in double precision",
+                           dict.fromkeys(("center_deflection_m", "navier_center_deflection_m",
+                                          "relative_error")) | {
+                               "navier_terms": 0, "tangent_evaluations": 0, "factorizations": 0})
     w = simply_supported_centre(p["n_elements"], p["a"], p["a"], ng=p["ng"], **geo)
     w_ref, terms = navier_plate.centre_deflection(p["a"], p["a"], **geo)
     rel = (w - w_ref) / w_ref if w_ref else 0.0
