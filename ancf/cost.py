@@ -41,7 +41,10 @@ work unit that the weighted model implies.
 
 The belt scenes have no ``element`` knob: their kernel is the Dufva belt element
 (:func:`belt_shape`: 12 coordinates, elastic plus contact points; the 3D belt's
-plate: :func:`plate_belt_shape`).  belt2d's
+plate: :func:`plate_belt_shape`, 36 coordinates, 16 elastic plus contact points).  The plate scenes
+have none either: 36 coordinates and ``ng`` x ``ng`` points per element, n x n_width
+elements (n x n for the square), 27 coordinates per node; the 3D beams count 9
+coordinates per node.  Their weights are the static table's, not refitted.  belt2d's
 generalised-alpha runs keep the ``alpha`` table: on the 38 runs of its report grid the
 seconds per work unit scatter by 8 % median / 17 % at the 90th percentile (one cold
 first run 1.8x), as good as a refit (NNLS: 8 % / 17 %), so no belt table was added.
@@ -112,10 +115,17 @@ def element_shape(params) -> tuple[int, int]:
     """(coordinates per element, quadrature points per element) of the run's element and
     integration scheme (or of the belt element, :func:`belt_shape`); (0, 0) for an element
     family this module does not know."""
+    from ancf.beam3d import BUILDERS
     from ancf.elements.catalogue import ELEMENTS
     cls = ELEMENTS.get(str(params.get("element")))
     if cls is None and _num(params.get("contact_points")):
         return plate_belt_shape(params)
+    if cls is None and str(params.get("element")) in BUILDERS:  # the 3D beams: 3-vector slots
+        cls = BUILDERS[str(params.get("element"))]({"ks": 1.0, **params})[0]
+        spec = cls.schemes.get(params.get("integration"), params.get("integration"))
+        return 6 * len(cls.slots), quadrature_points(str(spec))
+    if cls is None and _num(params.get("ng")):  # the thin plate: 36 coordinates, ng x ng points
+        return 36, int(_num(params.get("ng"))) ** 2
     if cls is None:
         return belt_shape(params) if _num(params.get("elastic_points")) else (0, 0)
     spec = getattr(cls, "schemes", {}).get(params.get("integration"), params.get("integration"))
@@ -168,6 +178,9 @@ def counts(params, results) -> dict | None:
     d, qp = element_shape(params)
     n = _num(params.get("n_elements")) or 0.0
     size = (n + 1) * d / 2
+    if d == 36:  # a plate mesh: n x n_width elements (n x n for the square), 27 per node
+        ny = _num(params.get("n_width")) or n
+        n, size = n * ny, (n + 1) * (ny + 1) * 27
     stab = size if _stability_checked(results) else 0.0
     return {"kind": kind, "runs": 1.0, "forces": forces, "tangents": tangents, "factorizations": factors,
             "steps": steps, "kernel_points": (forces * d + tangents * d * d) * n * qp,

@@ -48,11 +48,18 @@ def _params(row, names) -> dict:
 
 
 def _belt_parts(p: dict) -> list:
-    """The quadrature knobs of the belt scenes (no element choice)."""
+    """The mesh and quadrature knobs of the scenes without an element choice (the belt
+    scenes: contact and elastic points; the plates: elements across, Gauss points)."""
     parts = [f"n = {p.get('n_elements')}"]
+    if p.get("n_width") is not None:
+        parts.append(f"{p['n_width']} across")
     if p.get("gauss_points") is not None:
         parts.append(f"{p['gauss_points']} contact points")
-    return parts + [f"{p.get('elastic_points')} elastic points"]
+    if p.get("ng") is not None:
+        parts.append(f"{p['ng']} x {p['ng']} Gauss points")
+    if p.get("elastic_points") is not None:
+        parts.append(f"{p['elastic_points']} elastic points")
+    return parts
 
 
 def describe(p: dict, dynamic: bool) -> str:
@@ -65,6 +72,8 @@ def describe(p: dict, dynamic: bool) -> str:
                      else f"{integ}, rtol = {p.get('rtol'):g}")
         if p.get("newton_tol") is not None:
             parts.append(f"Newton tol = {p['newton_tol']:g}")
+    elif p.get("rtol") is None:
+        parts.append("linear solve")
     elif p.get("load_steps") is None:
         parts.append(f"static Newton, rtol = {p.get('rtol'):g}")
     else:

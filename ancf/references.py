@@ -45,6 +45,7 @@ PHYSICS = ("axial", "bending", "shear", "large-rotation", "inertia", "contact", 
 ELEMENT_PHYSICS = {
     "linear": frozenset({"axial", "bending", "shear", "large-rotation", "inertia"}),
     "omar-shabana": frozenset({"axial", "bending", "shear", "large-rotation", "inertia"}),
+    "linear3d": frozenset({"axial", "bending", "shear", "large-rotation", "inertia", "3D"}),
 }
 
 #: Bump when a change of the code would change a cached self-reference.
@@ -547,6 +548,85 @@ def _belt3d_spec() -> SceneSpec:
                      provides=frozenset({"axial", "large-rotation", "inertia", "contact"}),
                      notes="3D belt drive, Model 2 of Table 4.1 (thin plates, bending off), "
                            "against Bechtel's analytic steady belt.")
+PLATE_KNOBS = ("n_elements", "ng")
+PLATE_STRIP_KNOBS = ("n_elements", "n_width", "ng", "load_steps", "rtol", "max_iterations",
+                     "stability_check")
+
+
+def _navier(p):
+    from analytic import navier_plate
+    return {"center_deflection_m": navier_plate.centre_deflection(
+        p["a"], p["a"], p["h"], p["E"], p["nu"], p["p"])[0]}
+
+
+def _plate_square_spec() -> SceneSpec:
+    refs = {"navier": Reference(
+        "navier", "analytic",
+        "Navier's double series of the simply supported Kirchhoff plate (`ancf analytic "
+        "navier-plate`, truncation below 1e-10); error = |w − w_ref| / |w_ref| of the centre "
+        "deflection", _navier, _rel("center_deflection_m"))}
+    grid = ({"n_elements": [2, 4, 8, 16, 32], "ng": [4]},)
+    return SceneSpec("plate-square", PLATE_KNOBS, frozenset({"bending", "3D"}), refs, "navier",
+                     report_grids=grid, recommend_grids=grid, provides=frozenset({"bending", "3D"}),
+                     notes="Simply supported square plate (linear) against Navier's series.")
+
+
+def _strip_tip_error(res, ref, p):
+    """|tip - tip_ref| / |tip_ref - (L, b/2, 0)| over x, y, z."""
+    d = math.dist((ref["tip_x"], ref["tip_y"], ref["tip_z"]), (p["L"], p["b"] / 2, 0.0))
+    return math.dist((res["tip_x"], res["tip_y"], res["tip_z"]),
+                     (ref["tip_x"], ref["tip_y"], ref["tip_z"])) / d
+
+
+def _plate_strip_spec() -> SceneSpec:
+    refs = {"self": self_reference(
+        "plate-strip", {"n_elements": 64, "n_width": 1, "ng": 4, "rtol": 1e-9, "load_steps": 10,
+                        "max_iterations": 25},
+        ("tip_x", "tip_y", "tip_z"), _strip_tip_error,
+        "converged self-reference: 64 x 1 plate elements, Newton rtol 1e-9 (cached); error = "
+        "|tip − tip_ref| / |tip_ref − (L, b/2, 0)|", check={"n_elements": 32},
+        knobs=PLATE_STRIP_KNOBS)}
+    grid = ({"n_elements": [1, 2, 4, 8, 16], "rtol": [1e-8]},)
+    return SceneSpec("plate-strip", PLATE_STRIP_KNOBS,
+                     frozenset({"bending", "large-rotation", "3D"}), refs, "self",
+                     report_grids=grid, recommend_grids=grid,
+                     provides=frozenset({"axial", "bending", "large-rotation", "3D"}),
+                     notes="The Model 1 cantilever as a thin-plate strip against a converged "
+                           "self-reference.")
+
+
+def _reissner_3d(p):
+    """The Reissner rod in the load plane (h = b, or the load along a principal axis)."""
+    a = math.radians(p["load_angle_deg"])
+    c, s = math.cos(a), math.sin(a)
+    if abs(p["h"] - p["b"]) > 1e-12 * p["h"] and min(abs(c), abs(s)) > 1e-12:
+        raise ReferenceFailed("Reissner reference: a load off the principal axes of a "
+                              "non-square section bends the beam out of the load plane")
+    h, b = (p["h"], p["b"]) if abs(c) >= abs(s) else (p["b"], p["h"])
+    ref = _reissner({**p, "h": h, "b": b})
+    return {"tip_x": ref["tip_x"], "tip_y": ref["tip_y"] * c, "tip_z": ref["tip_y"] * s}
+
+
+def _tip3_error(res, ref, p):
+    """|tip - tip_ref| / |tip_ref - (L, 0, 0)|."""
+    d = math.dist((ref["tip_x"], ref["tip_y"], ref["tip_z"]), (p["L"], 0.0, 0.0))
+    return math.dist((res["tip_x"], res["tip_y"], res["tip_z"]),
+                     (ref["tip_x"], ref["tip_y"], ref["tip_z"])) / d
+
+
+def _beam3d_spec() -> SceneSpec:
+    refs = {"reissner": Reference(
+        "reissner", "analytic",
+        "geometrically exact Reissner rod in the load plane (`ancf analytic reissner`; a square "
+        "section or a load along a principal axis); error = |tip − tip_ref| / |tip_ref − (L, 0, "
+        "0)|", _reissner_3d, _tip3_error)}
+    grid = ({"element": ["linear3d"], "integration": ["thesis"], "n_elements": [1, 2, 4, 8, 16],
+             "rtol": [1e-8]},)
+    return SceneSpec("beam3d-cantilever", STATIC_KNOBS,
+                     frozenset({"axial", "bending", "shear", "large-rotation", "3D"}), refs,
+                     "reissner", report_grids=grid, recommend_grids=grid,
+                     notes="Model 1 cantilever with the 3D linear element against the Reissner "
+                           "rod.")
 
 
 #: Scene name -> spec factory.  One entry per scene; dynamic ones activate with their scene.
@@ -559,6 +639,9 @@ SPECS: dict[str, Callable[[], SceneSpec]] = {
     "belt-free-static": _belt_free_static_spec,
     "belt2d": _belt2d_spec,
     "belt3d": _belt3d_spec,
+    "plate-square": _plate_square_spec,
+    "plate-strip": _plate_strip_spec,
+    "beam3d-cantilever": _beam3d_spec,
 }
 
 

@@ -19,13 +19,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from ancf import beam3d
+from ancf import elements3d_checks as checks
 from ancf.assembly import Assembly, ElementGroup
-from ancf.constraints import Elimination
 from ancf.elements.linear3d import LinearBeam3D
 from ancf.mesh import BeamMesh
 from ancf.quadrature import RectangularSection, gauss01
 from ancf.scenes import SCENES
-from ancf.solvers.static import NewtonOptions, solve_static
 
 E_MOD, NU, RHO, L = 2.07e11, 0.3, 7850.0, 2.0
 SECTION = RectangularSection(0.1, 0.1)
@@ -169,73 +169,24 @@ def test_mass_is_the_exact_integral(scheme):
 
 
 # ------------------------------------------------------- validation against the 2D beam
-def _model(p):
-    """3D mesh, reference and assembly for the (resolved) 2D scene parameters p."""
-    m = BeamMesh(p["L"], p["n_elements"], LinearBeam3D.slots, dim=3)
-    q0 = m.reference()
-    el = LinearBeam3D(m.lengths, q0[m.dofmap], RectangularSection(p["b"], p["h"]), p["E"], p["nu"],
-                      ks=p["ks"], integration=p["integration"])
-    return m, q0, Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)])
-
-
-def _clamp(m):
-    """r, r_y and r_z of the first node."""
-    return [(0, s, k) for s in m.slots for k in range(3)]
-
-
-def _pins(m):
-    """The 2D scene's supports (x, y of the first node, y of the last) in both
-    bending planes, and the twist of the first node (z of its r_y)."""
-    n = m.n_nodes - 1
-    return [(0, "r", 0), (0, "r", 1), (0, "r", 2), (n, "r", 1), (n, "r", 2), (0, "r_y", 2)]
-
-
-def _solve(p, supports, loads):
-    """Static 3D solve with ``supports`` (mesh -> [(node, slot, component)]) fixed at the
-    reference and ``loads`` {(node, slot, component): N}; the scene's Newton options."""
-    m, q0, asm = _model(p)
-    elim = Elimination(m.n_dofs)
-    for node, slot, k in supports(m):
-        d = m.dof(node, slot, k)
-        elim.fix(d, q0[d])
-    Qk = np.zeros(m.n_dofs)
-    for (node, slot, k), f in loads.items():
-        Qk[m.dof(node, slot, k)] += f
-    res = solve_static(asm, elim, Qk, q0, NewtonOptions(n_steps=p["load_steps"], rtol=p["rtol"],
-                                                        max_iter=p["max_iterations"]))
+def test_3d_solve_takes_the_generic_newton_path():
+    """ancf.beam3d.solve (used by the checks below): converged, not the planar compiled path."""
+    p = SCENES["cantilever"].resolve({"element": "linear", "F": -1000.0})
+    res, _, _, asm = beam3d.solve({**p, "element": "linear3d"}, beam3d.clamp,
+                                  {(p["n_elements"], "r", 2): p["F"]})
     assert res.converged, res.message
-    assert res.pattern.compiled(asm) is None  # the generic (non-planar) Newton path
-    return (res.q - q0).reshape(m.n_nodes, 3, 3)
-
-
-SCENE_CASES = {  # scene, overrides, supports, loaded node (0 = first, -1 = last, None = mid)
-    "cantilever-small": ("cantilever", {"F": -1000.0}, _clamp, -1),
-    "cantilever-model1": ("cantilever", {}, _clamp, -1),  # thesis Table 2.3, large deflection
-    "simply-supported": ("simply-supported", {}, _pins, None),
-}
+    assert res.pattern.compiled(asm) is None
 
 
 @pytest.mark.parametrize("axis", [1, 2], ids=["load-y", "load-z"])
 @pytest.mark.parametrize("scheme", STABLE)
-@pytest.mark.parametrize("case", list(SCENE_CASES))
+@pytest.mark.parametrize("case", list(checks.BEAM_CASES))
 def test_bending_in_a_principal_plane_reproduces_the_2d_scenes(case, scheme, axis):
     """The scene's load along -y (then along -z) on the square section: in-plane nodal
     displacements (r and the slope in the plane) equal the 2D element's to 1e-10 of the
-    largest, and the out-of-plane ones vanish to 1e-10 of it."""
-    name, over, supports, node = SCENE_CASES[case]
-    over = {"element": "linear", "integration": scheme, **over}
-    _, res = SCENES[name].execute(over)
-    assert res.converged, res.message
-    u2 = (res.extra["q"] - res.extra["q0"]).reshape(-1, 2, 2)
-    p = SCENES[name].resolve(over)
-    node = u2.shape[0] // 2 if node is None else node % u2.shape[0]
-    u3 = _solve(p, supports, {(node, "r", axis): p["F"]})
-    inplane = np.ix_(range(u3.shape[0]), [0, axis], [0, axis])
-    scale = np.abs(u2).max()
-    assert np.abs(u3[inplane] - u2).max() <= 1e-10 * scale
-    out = u3.copy()
-    out[inplane] = 0.0
-    assert np.abs(out).max() <= 1e-10 * scale
+    largest, and the out-of-plane ones vanish to 1e-10 of it (ancf.elements3d_checks)."""
+    inplane, outplane = checks.principal_plane(case, scheme, axis)
+    assert inplane <= 1e-10 and outplane <= 1e-10
 
 
 def test_tip_load_at_45_degrees_is_the_sum_of_the_two_planes():
@@ -245,28 +196,14 @@ def test_tip_load_at_45_degrees_is_the_sum_of_the_two_planes():
     (theta_y theta_z ~ (w/L)^2, w the tip deflection), so the tolerance is (w/L)^2 of
     the largest position displacement and w/L of the largest slope change (seen:
     0.53 of either)."""
-    p = SCENES["cantilever"].resolve({"element": "linear", "F": -1000.0})
-    f, tip = p["F"] / np.sqrt(2.0), p["n_elements"]
-    u_y = _solve(p, _clamp, {(tip, "r", 1): f})
-    u_z = _solve(p, _clamp, {(tip, "r", 2): f})
-    u = _solve(p, _clamp, {(tip, "r", 1): f, (tip, "r", 2): f})
-    wl = np.linalg.norm(u[tip, 0]) / p["L"]
-    d = u - u_y - u_z
-    assert np.abs(d[:, 0]).max() <= wl**2 * np.abs(u[:, 0]).max()
-    assert np.abs(d[:, 1:]).max() <= wl * np.abs(u[:, 1:]).max()
-    assert abs(u[tip, 0, 1] - u[tip, 0, 2]) <= 1e-12 * abs(u[tip, 0, 1])  # along 45 deg
-
-
-def _torsion_constant_square(a, terms=50):
-    """St-Venant's J of a square of side a, m^4, from the series (Timoshenko and
-    Goodier): J = a^4/3 (1 - 192/pi^5 sum_{n odd} tanh(n pi/2)/n^5)."""
-    n = np.arange(1, 2 * terms, 2)
-    return a**4 / 3.0 * (1.0 - 192.0 / np.pi**5 * np.sum(np.tanh(n * np.pi / 2.0) / n**5))
+    d = checks.superposition_45()
+    assert d["position"] <= 1.0 and d["slope"] <= 1.0
+    assert d["symmetry"] <= 1e-12  # along 45 deg
 
 
 def test_torsion_constant_series():
     """The series gives the tabulated 0.1406 a^4 (to the 4 printed digits)."""
-    assert abs(_torsion_constant_square(1.0) - 0.1406) < 5e-5
+    assert abs(beam3d.torsion_constant_square(1.0) - 0.1406) < 5e-5
 
 
 @pytest.mark.parametrize("ks", [1.0, 5.0 / 6.0])
@@ -279,19 +216,7 @@ def test_torsion_stiffness_is_ks_G_Ip_not_G_J(scheme, ks):
     the twist phi(x) = T x / (ks G I_p), I_p = I_y + I_z, at every node, and the
     St-Venant stiffness G J over the element's is J / (ks I_p) (0.8436 at ks = 1).
     T gives a tip twist of 1e-6 rad, so the geometric nonlinearity is ~1e-12;
-    asserted 1e-8 relative."""
-    p = SCENES["cantilever"].resolve({"element": "linear", "integration": scheme, "ks": ks, "nu": NU})
-    a, tip = p["h"], p["n_elements"]
-    p["b"] = a
-    G = p["E"] / (2.0 * (1.0 + p["nu"]))
-    s = RectangularSection(a, a)
-    Iy, Iz = s.h * s.b**3 / 12.0, s.second_moment
-    Ip = Iy + Iz
-    T = 1e-6 * ks * G * Ip / p["L"]
-    u = _solve(p, _clamp, {(tip, "r_y", 2): T * Iz / Ip, (tip, "r_z", 1): -T * Iy / Ip})
-    phi = np.arctan2(u[:, 1, 2], 1.0 + u[:, 1, 1])
-    x = np.linspace(0.0, p["L"], tip + 1)
-    np.testing.assert_allclose(phi, T * x / (ks * G * Ip), rtol=1e-8, atol=0)
-    stiffness = T * p["L"] / phi[-1]
-    J = _torsion_constant_square(a)
-    np.testing.assert_allclose(G * J / stiffness, J / (ks * Ip), rtol=1e-8)
+    asserted 1e-8 relative (ancf.elements3d_checks.torsion)."""
+    t = checks.torsion(scheme, ks)
+    assert t["twist_error"] <= 1e-8
+    assert t["ratio"] == pytest.approx(t["J_over_ks_Ip"], rel=1e-8)

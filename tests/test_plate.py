@@ -14,9 +14,9 @@ with nu = 0 the cubic beam deflection lies in the element space and every mesh
 gives it (1 x 1: 2e-11, 8 x 2: 2e-7 relative, round-off); with nu = 0.3 the plate
 is stiffer than E I (read as the clamp suppressing anticlastic curvature): -6.7 %, -3.9 %,
 -2.0 %, -1.1 % with 1, 2, 4, 8 x 1 elements, -0.70 % with 16 x 2, -0.57 % with 32 x 4.
-Large deflection (nu = 0, F = E I/L^2, tip at 0.30 L; Newton, ancf.solvers.static)
-against the Reissner beam (analytic/reissner.py): largest relative tip-coordinate
-error 6.2e-3, 2.5e-4, 4.6e-5 with 4, 8, 16 x 1 elements.
+Large deflection (nu = 0, F = E I/L^2, tip at 0.30 L; scene plate-strip, Newton)
+against the Reissner beam (analytic/reissner.py, shear switched off: ks = 1e6): largest
+relative tip-coordinate error 6.2e-3, 2.0e-4, 7.3e-6 with 4, 8, 16 x 1 elements.
 """
 from __future__ import annotations
 
@@ -24,16 +24,13 @@ import math
 
 import numpy as np
 import pytest
-import scipy.sparse.linalg as sla
 
-from analytic import navier_plate, plate_thin, reissner
+from analytic import navier_plate, plate_thin
+from ancf import elements3d_checks as checks
+from ancf import plate_models
 from ancf.assembly import Assembly, ElementGroup
-from ancf.constraints import Elimination
-from ancf.elements import _generated as shape_gen
 from ancf.elements.plate36 import Plate36
 from ancf.plate_mesh import SLOTS, PlateMesh
-from ancf.quadrature import gauss01
-from ancf.solvers.static import NewtonOptions, solve_static
 
 STEEL = dict(h=0.01, E=2.1e11, nu=0.3)
 NAVIER_TOL = 0.01  # relative centre-deflection error of the finest mesh
@@ -150,29 +147,13 @@ def test_navier_double_series_matches_levy_single_series():
         assert w == pytest.approx(navier_plate.levy_centre_deflection(a, b, p=1e3, **STEEL), rel=1e-8)
 
 
-def _simply_supported_centre(n, a=1.0, p=1e3):
-    """Centre deflection (m) of an n x n mesh of the simply supported square plate:
-    in-plane coordinates fixed (decoupled at the flat reference), w = 0 and the
-    slope along the edge = 0 on the boundary; linear solve at the reference."""
-    m = PlateMesh(a, a, n, n)
-    _, K = Assembly(m.n_dofs, [ElementGroup(_plate(m), m.dofmap)]).gradient_tangent(m.reference())
-    fixed = {m.dof(k, s, c) for k in range(m.n_nodes) for s in SLOTS for c in (0, 1)}
-    for k in range(m.n_nodes):
-        on_x, on_y = m.X[k] in (0.0, a), m.Y[k] in (0.0, a)
-        fixed |= {m.dof(k, "r", 2)} if on_x or on_y else set()
-        fixed |= {m.dof(k, "r_y", 2)} if on_x else set()
-        fixed |= {m.dof(k, "r_x", 2)} if on_y else set()
-    free = np.setdiff1d(np.arange(m.n_dofs), sorted(fixed))
-    u = sla.spsolve(K[free][:, free].tocsc(), m.pressure_load(p)[free])
-    return u[np.searchsorted(free, m.dof(m.node(n // 2, n // 2), "r", 2))]
-
-
 def test_simply_supported_plate_converges_to_navier():
-    w_ref, _ = navier_plate.centre_deflection(1.0, 1.0, p=1e3, **STEEL)
-    err = np.array([_simply_supported_centre(n) / w_ref - 1 for n in (4, 8, 16)])
+    """Scene plate-square per mesh (ancf.elements3d_checks.plate_convergence)."""
+    rows = checks.plate_convergence((4, 8, 16))
+    err = np.array([r["relative error"] for r in rows])
     assert abs(err[-1]) <= NAVIER_TOL
     assert np.all(np.abs(np.diff(np.abs(err))) > 0) and np.all(np.diff(np.abs(err)) < 0)
-    order = np.log2(np.abs(err[:-1] / err[1:]))
+    order = np.array([r["observed order"] for r in rows[1:]])
     assert np.all(np.abs(order - 2) <= 0.2), order
 
 
@@ -189,27 +170,9 @@ def test_bad_input_names_the_field():
 STRIP_TOL = 1e-6  # nu = 0: the cubic beam deflection is in the element space
 
 
-def _edge_load(m: PlateMesh, P: float) -> np.ndarray:
-    """Consistent forces of the end load P (N, along +z) spread uniformly over x = a."""
-    t, w = gauss01(2)
-    a, b = m.lengths[0], m.widths[0]
-    fe = P / m.b * b * (w @ shape_gen.plate36_S(np.full(2, a), t * b, a, b))
-    f = np.zeros(m.n_dofs)
-    np.add.at(f, m.dofmap[m.nx - 1::m.nx, 2::3], np.broadcast_to(fe, (m.ny, 12)))
-    return f
-
-
 def _strip_tip(nx, ny, L=1.0, b=0.05, P=1.0, nu=0.0):
     """Mean tip deflection (m) of a strip L x b clamped at x = 0 (r, r_x, r_y), linear solve."""
-    m = PlateMesh(L, b, nx, ny)
-    el = Plate36(m.lengths, m.widths, **{**STEEL, "nu": nu})
-    _, K = Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]).gradient_tangent(m.reference())
-    fixed = {m.dof(k, s, c) for k in range(m.n_nodes) for s in SLOTS for c in (0, 1)}
-    fixed |= {m.dof(k, s, 2) for k in range(m.n_nodes) if m.X[k] == 0.0 for s in SLOTS}
-    free = np.setdiff1d(np.arange(m.n_dofs), sorted(fixed))
-    u = sla.spsolve(K[free][:, free].tocsc(), _edge_load(m, P)[free])
-    tips = [m.dof(m.node(nx, j), "r", 2) for j in range(ny + 1)]
-    return u[np.searchsorted(free, tips)].mean()
+    return plate_models.strip_linear_tip(nx, ny, L, b, STEEL["h"], STEEL["E"], nu, P)
 
 
 @pytest.mark.parametrize("nx, ny", [(1, 1), (4, 1), (8, 2)])
@@ -222,29 +185,10 @@ def test_cantilever_strip_matches_euler_bernoulli(nx, ny):
 REISSNER_STRIP_TOL = 1e-3  # relative tip error of the 8 x 1 strip (large deflection)
 
 
-def _strip_large(nx, F, L=1.0, b=0.05):
-    """Tip (x, z) (m) of an nx x 1 strip L x b, nu = 0, clamped at x = 0, under the dead
-    end load F (N, +z) spread over x = L, by Newton (ancf.solvers.static)."""
-    m = PlateMesh(L, b, nx, 1)
-    el = Plate36(m.lengths, m.widths, **{**STEEL, "nu": 0.0})
-    q0 = m.reference()
-    root = [m.dof(k, s, c) for k in range(m.n_nodes) if m.X[k] == 0.0
-            for s in SLOTS for c in range(3)]
-    res = solve_static(Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]),
-                       Elimination(m.n_dofs).fix(root, q0[root]), _edge_load(m, F), q0,
-                       NewtonOptions(n_steps=4, rtol=1e-10))
-    assert res.converged, res.message
-    tips = [m.node(nx, j) for j in range(2)]
-    return np.array([res.q[[m.dof(k, "r", c) for k in tips]].mean() for c in (0, 2)])
-
-
 def test_cantilever_strip_large_deflection_converges_to_reissner():
-    """F = E I / L^2 bends the strip to a tip deflection of 0.30 L."""
-    L, b, h, E = 1.0, 0.05, STEEL["h"], STEEL["E"]
-    F = E * b * h**3 / 12 / L**2
-    ref = reissner.tip_position(E, 0.0, L, h, b, F)
-    assert ref.converged
-    err = [np.abs(_strip_large(n, F) / [ref.tip_x, ref.tip_y] - 1).max() for n in (4, 8, 16)]
+    """F = E I / L^2 bends the strip to a tip deflection of 0.30 L (scene plate-strip,
+    nu = 0, against the Reissner rod with shear switched off; ancf.elements3d_checks)."""
+    err = [r["relative error"] for r in checks.strip_large((4, 8, 16))]
     assert err[1] <= REISSNER_STRIP_TOL and err[2] < err[1] < err[0], err
 
 

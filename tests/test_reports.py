@@ -85,6 +85,30 @@ AGREES = {
         ("test_bechtel", "test_distributions_integrate_to_the_torque"), "PASS"),
     "Belt element, α1 = α2 = 1: Model 1 tip within 4e-4 m of the Reissner rod": (
         ("test_belt_element", "test_model1_cantilever_converges_to_reissner"), "PASS"),
+    **{name: (("test_elements3d", test), "PASS") for name, test in (
+        ("Plate square 16 × 16: centre deflection within 1 % of Navier",
+         "test_plate_square_within_1_percent_of_navier"),
+        ("Plate square: observed order 2 ± 0.2 (4 → 8 → 16 per side)",
+         "test_plate_square_observed_order_two"),
+        ("Plate strip ν = 0 (linear): tip = P L³/(3EI) on every mesh",
+         "test_plate_strip_linear_is_euler_bernoulli"),
+        ("Plate strip large deflection (ν = 0, F = EI/L²), 8 × 1: tip within 1e-3 of Reissner",
+         "test_plate_strip_large_deflection_near_reissner"),
+        ("3D beam, principal-plane bending: nodal displacements = planar scenes",
+         "test_beam3d_principal_planes_reproduce_the_planar_scenes"),
+        ("beam3d-cantilever 0°: tip = cantilever scene (Model 1)",
+         "test_beam3d_scene_at_0_and_90_degrees"),
+        ("beam3d-cantilever 90°: the load and the tip turn to −z",
+         "test_beam3d_scene_at_0_and_90_degrees"),
+        ("3D beam 45°: superposition error within its second-order bound",
+         "test_beam3d_superposition_at_45_degrees"),
+        ("3D beam torsion: twist = T x/(k_s G I_p) (no warping)",
+         "test_beam3d_torsion_is_ks_G_Ip_and_J_is_the_series"),
+        ("Torsion constant of the square: J = 0.1406 a⁴ (series)",
+         "test_beam3d_torsion_is_ks_G_Ip_and_J_is_the_series"),
+        ("Rigid rotation: zero strain energy, 3D beam", "test_rigid_rotation_has_no_strain"),
+        ("Rigid rotation: zero elastic force, 3D beam", "test_rigid_rotation_has_no_strain"),
+        ("Rigid rotation: zero strain energy, plate", "test_rigid_rotation_has_no_strain"))},
 }
 #: rows a quick report does not compute (their test still runs)
 QUICK_ONLY_SKIPPED = (GAUSS_CHECK,)

@@ -17,6 +17,7 @@ from ancf.reports.bechtel import bechtel_chapter
 from ancf.reports.extremes import extremes_chapter
 from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
+from ancf.reports.elements3d import elements3d_chapter
 from ancf.reports import studies, tables
 from ancf.reports.output import configure, markdown_table, progress, run
 from ancf.reports.speed_accuracy import speed_accuracy_chapter
@@ -188,7 +189,7 @@ def static_chapter() -> tuple[str, dict]:
 
 
 CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md", "belt2d.md",
-            "bechtel.md")
+            "bechtel.md", "elements3d.md")
 
 _INDEX = [
     "| report | contents |", "|---|---|",
@@ -206,6 +207,10 @@ _INDEX = [
     "| [bechtel.md](bechtel.md) | Bechtel's analytic steady belt (thesis 4.1, Model 2): tensions, "
     "speeds, slip arcs, driven slip and largest torque, full and capstan, distributions along "
     "the belt; the thesis's 14.6 % slip |",
+    "| [elements3d.md](elements3d.md) | Thin plate and 3D beam: simply supported plate vs "
+    "Navier (convergence, order), cantilever strip vs Euler–Bernoulli and the Reissner rod, 3D "
+    "beam vs the planar scenes, 45° superposition, torsion vs St-Venant, rigid motion; "
+    "acceptance checks |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
@@ -224,7 +229,8 @@ def write_chapters(root: Path) -> dict:
                           ("speed_accuracy.md", speed_accuracy_chapter),
                           ("extremes.md", extremes_chapter),
                           ("belt2d.md", belt2d_chapter),
-                          ("bechtel.md", bechtel_chapter)):
+                          ("bechtel.md", bechtel_chapter),
+                          ("elements3d.md", elements3d_chapter)):
         text, st = chapter()
         (root / name).write_text(text)
         status.update(st)

@@ -48,8 +48,10 @@ def _model(row, dynamic: bool) -> str:
         s = f"{row['element']} / {row['integration']}"
     elif "gauss_points" in row:
         s = f"{int(row['gauss_points'])} contact points"
-    else:
+    elif "elastic_points" in row:
         s = f"{int(row['elastic_points'])} elastic points"
+    else:  # the plates
+        s = f"{int(row['ng'])} × {int(row['ng'])} Gauss points"
     if dynamic:
         integ = row.get("integrator")
         s += f" / {integ}"
@@ -62,7 +64,7 @@ def _solver(row, dynamic: bool) -> str:
             tol = f", Newton tol = {row['newton_tol']:g}" if "newton_tol" in row else ""
             return f"dt = {row['dt']:g}{tol}"
         return f"rtol = {row['rtol']:g}"
-    return f"Newton rtol = {row['rtol']:g}"
+    return f"Newton rtol = {row['rtol']:g}" if "rtol" in row else "linear solve"
 
 
 def _knob_defaults(name: str, s) -> dict:

@@ -9,10 +9,12 @@ from __future__ import annotations
 def __getattr__(name):
     if name != "SCENES":
         raise AttributeError(name)
-    from ancf.scenes import (axial_bar, belt2d, belt3d, belt_free_static, cantilever, pendulum,
-                             simply_supported, spinning_beam)
+    from ancf.scenes import (axial_bar, beam3d_cantilever, belt2d, belt3d, belt_free_static,
+                             cantilever, pendulum, plate_square, plate_strip, simply_supported,
+                             spinning_beam)
     scenes = {s.name: s for s in (simply_supported.SCENE, cantilever.SCENE, axial_bar.SCENE,
                                   pendulum.SCENE, spinning_beam.SCENE, belt_free_static.SCENE,
-                                  belt2d.SCENE, belt3d.SCENE)}
+                                  belt2d.SCENE, plate_square.SCENE, plate_strip.SCENE,
+                                  beam3d_cantilever.SCENE, belt3d.SCENE)}
     globals()["SCENES"] = scenes
     return scenes

@@ -1,0 +1,63 @@
+"""The cantilever (scene ``cantilever``) with a spatial beam element (issue 13 item 4).
+
+The 2D cantilever's parameters (``L``, ``h`` along y, ``b`` along z, ``E``, ``nu``, ``ks``,
+``F``, ``n_elements``, the Newton knobs) and ``load_angle_deg``: the tip force's angle in
+the cross-section plane, from -y towards -z for a negative ``F`` (force F (0, cos a,
+sin a) on the tip position).  0 is the 2D case: the beam stays in the x-y plane and
+reproduces the 2D scene (element ``linear``) to round-off; 90 bends it about y.
+Clamp: every slot of the first node but r_x (position and section orientation), all
+three components.  ``element``: the 3D elements of :data:`ancf.beam3d.BUILDERS`.
+Results ``tip_x``, ``tip_y``, ``tip_z``: the tip node's position.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ancf import accuracy, beam3d
+from ancf.scenes import beam_static as bs
+from ancf.scenes.base import InputError, Param, Scene
+from ancf.scenes.cantilever import cantilever_params
+
+
+def params() -> tuple:
+    out = []
+    for q in cantilever_params():
+        if q.name == "element":
+            q = Param("element", "linear3d", str, doc="3D element type",
+                      choices=tuple(beam3d.BUILDERS))
+        elif q.name == "integration":
+            q = Param("integration", "thesis", str,
+                      doc="integration scheme (linear3d: thesis, exact, report-selective, "
+                          "report-fix) or a spec like 'normal=2x2,shear=1x1'")
+        elif q.name == "clamp_x_slope":
+            continue
+        out.append(q)
+    return tuple(out) + (
+        Param("load_angle_deg", 0.0, float, "deg",
+              "angle of the tip force in the section plane, from -y towards -z "
+              "(0 = the 2D cantilever)", lo=-360, hi=360),)
+
+
+def check(p: dict) -> None:
+    cls = beam3d.BUILDERS[p["element"]](p)[0]
+    try:
+        cls.scheme_terms(p["integration"], np.eye(3), np.eye(3))
+    except (ValueError, AttributeError) as exc:
+        raise InputError(f"integration = {p['integration']!r} is not valid for element "
+                         f"{p['element']} ({exc}); allowed: {', '.join(cls.schemes)} "
+                         "or a spec 'normal=NXxNY,shear=NXxNY'") from None
+
+
+def run(p):
+    m, q0, asm = beam3d.model(p)
+    elim = beam3d.elimination(m, q0, beam3d.clamp(m))
+    n = p["n_elements"]
+    dofs = [m.dof(n, "r", c) for c in range(3)]
+    return bs.solve(p, m, q0, asm, elim, beam3d.load_vector(m, beam3d.tip_load(p)),
+                    lambda q: {f"tip_{c}": float(q[d]) for c, d in zip("xyz", dofs)})
+
+
+SCENE = Scene(
+    "beam3d-cantilever",
+    "The cantilever with a 3D beam element, tip force at an angle in the section plane.",
+    params(), run, check, warn=accuracy.static)

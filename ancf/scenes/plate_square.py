@@ -1,0 +1,63 @@
+"""Simply supported square plate under uniform pressure (issue 13 item 4; the thin
+plate of thesis 4.3 against Navier's series).
+
+``n_elements`` x ``n_elements`` ``plate36`` elements (bending on, ``ng`` x ``ng`` Gauss
+points) over a x a; simply supported: w = 0 and the slope along the edge vanish on the
+boundary, the in-plane coordinates are fixed.  Linear (small-deflection) static solve
+at the flat reference with a sparse direct solver (``ancf.plate_models``): valid while
+the centre deflection is small against the thickness (h/47 at the defaults).
+``center_deflection_m`` is signed, positive along the pressure; it is held against
+Navier's double series (``ancf analytic navier-plate``, Kirchhoff's rigidity
+D = E h^3 / (12 (1 - nu^2))).
+"""
+from __future__ import annotations
+
+import math
+
+from analytic import navier_plate
+from ancf.plate_models import simply_supported_centre
+from ancf.scenes.base import InputError, Param, Scene, SceneResult
+
+
+def params() -> tuple:
+    return (
+        Param("a", 1.0, float, "m", "side of the square", lo=0, lo_open=True),
+        Param("h", 0.01, float, "m", "thickness", lo=0, lo_open=True),
+        Param("E", 2.1e11, float, "Pa", "Young's modulus", lo=0, lo_open=True),
+        Param("nu", 0.3, float, "-", "Poisson's ratio", lo=0, hi=0.5, hi_open=True),
+        Param("p", 1e3, float, "Pa", "uniform pressure along +z"),
+        Param("n_elements", 8, int, doc="elements per side (even: a node at the centre)",
+              lo=2, hi=128),
+        Param("ng", 4, int, doc="Gauss points per direction (4 integrates the linearised "
+                                "stiffness exactly)", lo=1, hi=8),
+    )
+
+
+def check(p: dict) -> None:
+    if p["n_elements"] % 2:
+        raise InputError(f"n_elements = {p['n_elements']} is out of range; allowed: an even "
+                         "integer in [2, 128] (the centre must be a node)")
+
+
+def run(p: dict) -> SceneResult:
+    geo = dict(h=p["h"], E=p["E"], nu=p["nu"], p=p["p"])
+    D = navier_plate.rigidity(p["E"], p["nu"], p["h"])
+    if not (math.isfinite(D) and D > 0):
+        return SceneResult(False, f"No solution: the bending rigidity E h^3/(12 (1 - nu^2)) = "
+                                  f"{D:g} N m is not a positive finite number in double precision",
+                           dict.fromkeys(("center_deflection_m", "navier_center_deflection_m",
+                                          "relative_error")) | {
+                               "navier_terms": 0, "tangent_evaluations": 0, "factorizations": 0})
+    w = simply_supported_centre(p["n_elements"], p["a"], p["a"], ng=p["ng"], **geo)
+    w_ref, terms = navier_plate.centre_deflection(p["a"], p["a"], **geo)
+    rel = (w - w_ref) / w_ref if w_ref else 0.0
+    return SceneResult(True, "linear static solve", {
+        "center_deflection_m": w, "navier_center_deflection_m": w_ref, "navier_terms": terms,
+        "relative_error": rel,
+        "tangent_evaluations": 1, "factorizations": 1})
+
+
+SCENE = Scene(
+    "plate-square",
+    "Simply supported square thin plate under uniform pressure, linear, against Navier.",
+    params(), run, check)

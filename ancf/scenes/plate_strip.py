@@ -1,0 +1,56 @@
+"""The planar cantilever (scene ``cantilever``) as a thin-plate strip (issue 13 item 4).
+
+The plate lies in the x-y plane: length ``L`` along x, width ``b`` along y, thickness
+``h`` along z (the 2D beam's height ``h`` becomes the plate's thickness, its width
+``b`` the strip's width), ``n_elements`` x ``n_width`` ``plate36`` elements.  The 2D
+cantilever's vertical direction is mapped onto the plate's normal: the tip force ``F``
+(signed, negative = along -z, default -5e8 h^3 N as the 2D scene) is spread uniformly
+over the free edge x = L (consistent nodal forces), a dead load.  Clamp: r, r_x and r_y
+(all three components) of every node at x = 0.  Nonlinear static solve: Newton with
+adaptive load steps (``ancf.solvers.static``), then the stability check of the 2D
+scenes.  Results ``tip_x``, ``tip_y``, ``tip_z``: the mean position of the tip-edge
+nodes (tip_y = b/2 by symmetry).
+
+The plate is a Kirchhoff plate (no transverse shear) with the plane-stress rigidity
+E h^3 / (12 (1 - nu^2)) per unit width, so against the 2D (shear-deformable, E I)
+cantilever it is stiffer by the shear flexibility and, for nu > 0, by the clamp's
+restraint of the anticlastic curvature; with nu = 0 and a slender strip it converges
+to the Euler-Bernoulli / Reissner rod (reports/elements3d.md).
+"""
+from __future__ import annotations
+
+from ancf import accuracy
+from ancf.plate_models import edge_load, strip_model, tip_mean
+from ancf.scenes import beam_static as bs
+from ancf.scenes.base import Param, Scene
+
+
+def params() -> tuple:
+    base = {q.name: q for q in bs.element_params(nu=0.3, h=0.1, n_elements=8)}
+    keep = ("n_elements", "E", "nu", "L", "h", "b", "rtol", "max_iterations",
+            "stability_check")
+    out = [base[k] for k in keep]
+    out[0] = Param("n_elements", 8, int, doc="elements along the length", lo=1, hi=1024)
+    out[4] = Param("h", 0.1, float, "m", "plate thickness (z; the 2D beam's height)", lo=0,
+                   lo_open=True)
+    out[5] = Param("b", 0.1, float, "m", "strip width (y)", lo=0, lo_open=True)
+    return tuple(out) + (
+        Param("n_width", 1, int, doc="elements across the width", lo=1, hi=64),
+        Param("ng", 4, int, doc="Gauss points per direction", lo=1, hi=8),
+        Param("F", lambda v: -5e8 * v["h"] ** 3, float, "N",
+              "tip force along z spread over the free edge (default -5e8 h^3, negative = -z)"),
+        Param("load_steps", 10, int, doc="initial number of load steps (adaptive)", lo=1,
+              hi=10000),
+    )
+
+
+def run(p):
+    m, q0, asm, elim = strip_model(p["n_elements"], p["n_width"], p["L"], p["b"], p["h"],
+                                   p["E"], p["nu"], p["ng"])
+    return bs.solve(p, m, q0, asm, elim, edge_load(m, p["F"]), lambda q: tip_mean(m, q))
+
+
+SCENE = Scene(
+    "plate-strip",
+    "The cantilever as a clamped thin-plate strip, out-of-plane tip load, large deflection.",
+    params(), run, warn=accuracy.static)
