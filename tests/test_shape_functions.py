@@ -102,13 +102,14 @@ def test_cubic2d_matches_eq_2_9(derived):
 # ----------------------------------------------------------------- interpolation
 # Nodal coordinates written out independently from the thesis:
 # linear2d Eq. 2.11 (r, r_y); cubic2d Eq. 2.3 (r, r_x, r_y); linear3d Eq. 4.21
-# (r, r_y, r_z); plate36 Eqs 4.14-4.15 (r, r_x, r_y at corners A, B, C, D).
+# (r, r_y, r_z); cubic3d Eq. 4.25 (r, r_x, r_y, r_z); plate36 Eqs 4.14-4.15 (r, r_x, r_y at corners A, B, C, D).
 NODAL_FUNCTIONALS = {
     "linear2d": [((0, 0), ()), ((0, 0), (y,)), ((l, 0), ()), ((l, 0), (y,))],
     "cubic2d": [((0, 0), ()), ((0, 0), (x,)), ((0, 0), (y,)),
                 ((l, 0), ()), ((l, 0), (x,)), ((l, 0), (y,))],
     "linear3d": [((0, 0, 0), ()), ((0, 0, 0), (y,)), ((0, 0, 0), (z,)),
                  ((l, 0, 0), ()), ((l, 0, 0), (y,)), ((l, 0, 0), (z,))],
+    "cubic3d": [(node, d) for node in ((0, 0, 0), (l, 0, 0)) for d in ((), (x,), (y,), (z,))],
     "plate36": [(node, d) for node in ((0, 0), (a, 0), (a, b), (0, b))
                 for d in ((), (x,), (y,))],
 }
@@ -150,6 +151,7 @@ RIGID_CASES = {
     "linear2d": (2, {"l": 1.7}),
     "cubic2d": (2, {"l": 1.7}),
     "linear3d": (3, {"l": 1.7}),
+    "cubic3d": (3, {"l": 1.7}),
     "plate36": (3, {"a": 1.3, "b": 0.8}),
 }
 
