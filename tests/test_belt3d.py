@@ -301,3 +301,17 @@ def test_bad_lengths_section_and_reference_raise():
         DufvaBelt3D(m.lengths, e0[:, :12], SECTION1, E=2e11, nu=0.3)
     with pytest.raises(ValueError, match=r"^section\.b must be"):
         DufvaBelt3D(m.lengths, e0, RectangularSection(0.0, 0.1), E=2e11, nu=0.3)
+
+
+def test_axial_force_under_axial_load():
+    """Axial tip load F = 1e5 N, alpha1 = 0.5: axial_force gives N = E A alpha1 eps_l =
+    F/lambda along the beam (to 1e-5 N, round-off as in the planar test)."""
+    F = 1e5
+    m, q0, asm, elim = cantilever(3, alpha1=0.5)
+    Qk = np.zeros(m.n_dofs)
+    Qk[m.dof(3, "r", 0)] = F
+    res = solve_static(asm, elim, Qk, q0, NewtonOptions(n_steps=1, rtol=1e-10))
+    assert res.converged, res.message
+    lam = np.max(np.roots([1.0, 0.0, -1.0, -2 * F / (MODEL1["E"] * SECTION1.area * 0.5)]).real)
+    N = asm.groups[0].element.axial_force(res.q[m.dofmap], np.linspace(0, 1, 5))
+    np.testing.assert_allclose(N, F / lam, rtol=0, atol=1e-5)
