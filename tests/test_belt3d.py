@@ -225,14 +225,18 @@ def test_bending_in_either_principal_plane_is_the_planar_element(n):
     assert abs(ty[2]) < 1e-12 and abs(tz[1]) < 1e-12
 
 
-def test_large_deflection_in_plane_is_the_planar_element():
-    """Model 1 load F = -5e5 N on 4 elements (tip deflection ~0.8 m): the 3D tip in the
-    x-y plane equals the planar element's to 1e-9 of the deflection."""
-    F = MODEL1["F"]
-    ref = planar.tip_under(4, (0.0, F))
-    t3 = tip_under(4, (0.0, F, 0.0), n_steps=4)
-    print("large deflection, 3D - 2D:", t3[:2] - ref)
-    assert np.abs(t3[:2] - ref).max() <= 1e-9 * abs(ref[1])
+@pytest.mark.parametrize("plane", [1, 2])
+def test_large_deflection_in_plane_is_the_planar_element(plane):
+    """Model 1 load F = -5e5 N on 4 elements (tip deflection ~0.8 m) along y, and along
+    z (square section): the 3D tip in that plane equals the planar element's to 1e-9
+    of the deflection, and stays in the plane."""
+    F = np.zeros(3)
+    F[plane] = MODEL1["F"]
+    ref = planar.tip_under(4, (0.0, MODEL1["F"]))
+    t3 = tip_under(4, F, n_steps=4)
+    print(f"large deflection, plane {plane}, 3D - 2D:", t3[[0, plane]] - ref)
+    assert np.abs(t3[[0, plane]] - ref).max() <= 1e-9 * abs(ref[1])
+    assert abs(t3[3 - plane]) <= 1e-12
 
 
 # ------------------------------------------------------------------ alpha factors
