@@ -319,3 +319,23 @@ def test_axial_force_under_axial_load():
     lam = np.max(np.roots([1.0, 0.0, -1.0, -2 * F / (MODEL1["E"] * SECTION1.area * 0.5)]).real)
     N = asm.groups[0].element.axial_force(res.q[m.dofmap], np.linspace(0, 1, 5))
     np.testing.assert_allclose(N, F / lam, rtol=0, atol=1e-5)
+
+
+def test_uniform_twist_energy_is_the_shear_torsional_stiffness():
+    """Nodal sections r_y, r_z turned about the straight axis by phi x/L (phi = 1e-4
+    rad, positions and r_x untouched), b != h, alpha2 = 0.5: the energy is
+    ks G alpha2 (I_y + I_z) phi^2/(2 L) (the module docstring's torsional stiffness)
+    up to O(phi^2) and the O((phi/n)^2) chord of the linearly interpolated slopes;
+    tolerance 1e-6 relative."""
+    phi, L, ks, nu, a2 = 1e-4, MODEL1["L"], 5.0 / 6.0, MODEL1["nu"], 0.5
+    m, q0, asm, _ = cantilever(4, section=FLAT, alpha2=a2, ks=ks)
+    Q = q0.reshape(m.n_nodes, 4, 3).copy()
+    for node, x in enumerate(m.X):
+        R = _rotation([1, 0, 0], phi * x / L)
+        Q[node, 2:] = Q[node, 2:] @ R.T
+    U = asm.strain_energy(Q.ravel())
+    G = MODEL1["E"] / (2 * (1 + nu))
+    Iy, Iz = FLAT.b * FLAT.h**3 / 12, FLAT.h * FLAT.b**3 / 12
+    ref = ks * G * a2 * (Iy + Iz) * phi**2 / (2 * L)
+    print(f"uniform twist: U/ref - 1 = {U / ref - 1:.1e}")
+    assert U == pytest.approx(ref, rel=1e-6)
