@@ -12,6 +12,7 @@ Families (thesis equation numbers):
 * ``linear2d``     Eqs 2.10-2.12 (Kerkkänen linear beam, 8 DOF)
 * ``cubic2d``      Eqs 2.2-2.3 (Omar-Shabana, 12 DOF) = Eq. 3.11 (Dufva belt element)
 * ``linear3d``     Eq. 4.22 (3D linear beam, 18 DOF)
+* ``cubic3d``      Eq. 4.25 (Dufva 3D belt element, 24 DOF: cubic in x, linear in y, z)
 * ``plate36``      Eqs 4.14-4.15 (thin plate, 36 DOF, incomplete cubic of Dmitrochenko)
 
 The numeric code used at run time is generated from these derivations into
@@ -63,6 +64,10 @@ FAMILIES = {
     "linear3d": Family(
         "linear3d", 3, (x, y, z), (1, x, y, z, x * y, x * z),
         nodes=((0, 0, 0), (l, 0, 0)), node_dofs=((), (y,), (z,)),
+        axial=((x, 0, l),), section=(y, z)),
+    "cubic3d": Family(
+        "cubic3d", 3, (x, y, z), (1, x, x**2, x**3, y, x * y, z, x * z),
+        nodes=((0, 0, 0), (l, 0, 0)), node_dofs=((), (x,), (y,), (z,)),
         axial=((x, 0, l),), section=(y, z)),
     "plate36": Family(
         "plate36", 3, (x, y),
@@ -123,6 +128,7 @@ def mass_scalar(family: Family) -> sp.Matrix:
 
 # ----------------------------------------------------------------- code generation
 _DERIVS = {2: ("", "x", "y", "xx", "xy", "yy"), 3: ("", "x", "y", "z")}
+_EXTRA = {"cubic3d": ("xx",)}  # the belt element's centre-line curvature r_c,xx
 
 
 def _lengths(family: Family) -> tuple:
@@ -133,7 +139,7 @@ def _emit_family(family: Family) -> list:
     S = derive(family)
     coords = family.coords
     args = ", ".join(str(c) for c in coords + _lengths(family))
-    names = _DERIVS[len(coords)]
+    names = _DERIVS[len(coords)] + _EXTRA.get(family.name, ())
     out = []
     for d in names:
         dvars = [dict(x=x, y=y, z=z)[c] for c in d]

@@ -1,7 +1,8 @@
 """Planar ANCF elements: derivatives, symmetry, zero-energy modes, input checks.
 
 The contract tests run over ``CONTRACT_ELEMENTS`` (the beam catalogue and the belt
-element).  Finite-difference tolerance: the continuum beams' strain energy is a
+elements; a 3D element, ``dim = 3``, gets a 3D mesh, perturbation and rotation about
+(1, 2, 3)).  Finite-difference tolerance: the continuum beams' strain energy is a
 polynomial of degree 4 in the nodal coordinates (Green strains are quadratic), so
 the central difference (f(e + h) - f(e - h)) / 2h has the exact error h^2/6 f'''
 (no higher terms), and round-off adds ~ eps_machine |f| / h.  With h = 1e-6 (m for
@@ -37,7 +38,7 @@ IDS = list(CONTRACT_ELEMENTS)
 def _build(cls, kw, n_el=3, nu=0.3, section=SECTION):
     """Mesh, reference and element ``cls(..., **kw)``; kw a dict or an integration scheme."""
     kw = kw if isinstance(kw, dict) else {"integration": kw}
-    m = BeamMesh(L, n_el, cls.slots)
+    m = BeamMesh(L, n_el, cls.slots, dim=getattr(cls, "dim", 2))
     q0 = m.reference()
     el = cls(m.lengths, q0[m.dofmap], section, E=E_MOD, nu=nu, rho=RHO, **kw)
     return m, q0, el
@@ -48,7 +49,7 @@ def _perturbed(m, q0, seed=0, size=1e-2):
     size * element length, slopes by size."""
     rng = np.random.default_rng(seed)
     scale = np.array([m.lengths[0] if s == "r" else 1.0 for s in m.slots])
-    d = rng.standard_normal((m.n_nodes, len(m.slots), 2)) * scale[None, :, None]
+    d = rng.standard_normal((m.n_nodes, len(m.slots), m.dim)) * scale[None, :, None]
     return q0 + size * d.ravel()
 
 
@@ -103,10 +104,15 @@ def test_tangent_symmetric(cls, kw):
 
 
 def _rotate(m, v, angle, shift=(0.0, 0.0)):
-    """r -> R r + shift on positions, R on slopes, of a global vector."""
+    """r -> R r + shift on positions, R on slopes, of a global vector; in 3D the
+    rotation is about the axis (1, 2, 3) and the shift gains z = 0.3."""
     c, s = np.cos(angle), np.sin(angle)
     R = np.array([[c, -s], [s, c]])
-    V = v.reshape(m.n_nodes, len(m.slots), 2) @ R.T
+    if m.dim == 3:
+        k = np.array([1.0, 2.0, 3.0]) / np.sqrt(14.0)
+        Kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+        R, shift = np.eye(3) + s * Kx + (1 - c) * Kx @ Kx, (*shift, 0.3)
+    V = v.reshape(m.n_nodes, len(m.slots), m.dim) @ R.T
     V[:, [k for k, sl in enumerate(m.slots) if sl == "r"], :] += np.asarray(shift)
     return V.ravel()
 
@@ -191,6 +197,17 @@ def test_only_rigid_body_zero_energy_modes(name, n_el):
     ZERO_MODES[(name, n_el)] = n
     print(f"{name} {n_el} element(s): {n} zero-energy modes")
     assert n == 3
+
+
+@pytest.mark.parametrize("n_el", [1, 4])
+@pytest.mark.parametrize("name", ["DufvaBelt3D", "DufvaBelt3D-alpha"])
+def test_spatial_belt_has_only_rigid_body_zero_energy_modes(name, n_el):
+    """Free-free 3D belt mesh at the reference: 3 translations + 3 rotations.  Twist
+    is not free: a twist rate phi' gives r_x.r_s^y = -z phi', r_x.r_s^z = y phi', i.e.
+    the torsional stiffness ks G alpha2 (I_y + I_z) of the shear terms."""
+    n = _zero_modes(*CONTRACT_ELEMENTS[name], n_el)
+    print(f"{name} {n_el} element(s): {n} zero-energy modes")
+    assert n == 6
 
 
 @pytest.mark.parametrize("n_el", [1, 4])

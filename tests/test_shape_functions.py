@@ -102,13 +102,14 @@ def test_cubic2d_matches_eq_2_9(derived):
 # ----------------------------------------------------------------- interpolation
 # Nodal coordinates written out independently from the thesis:
 # linear2d Eq. 2.11 (r, r_y); cubic2d Eq. 2.3 (r, r_x, r_y); linear3d Eq. 4.21
-# (r, r_y, r_z); plate36 Eqs 4.14-4.15 (r, r_x, r_y at corners A, B, C, D).
+# (r, r_y, r_z); cubic3d Eq. 4.25 (r, r_x, r_y, r_z); plate36 Eqs 4.14-4.15 (r, r_x, r_y at corners A, B, C, D).
 NODAL_FUNCTIONALS = {
     "linear2d": [((0, 0), ()), ((0, 0), (y,)), ((l, 0), ()), ((l, 0), (y,))],
     "cubic2d": [((0, 0), ()), ((0, 0), (x,)), ((0, 0), (y,)),
                 ((l, 0), ()), ((l, 0), (x,)), ((l, 0), (y,))],
     "linear3d": [((0, 0, 0), ()), ((0, 0, 0), (y,)), ((0, 0, 0), (z,)),
                  ((l, 0, 0), ()), ((l, 0, 0), (y,)), ((l, 0, 0), (z,))],
+    "cubic3d": [(node, d) for node in ((0, 0, 0), (l, 0, 0)) for d in ((), (x,), (y,), (z,))],
     "plate36": [(node, d) for node in ((0, 0), (a, 0), (a, b), (0, b))
                 for d in ((), (x,), (y,))],
 }
@@ -150,6 +151,7 @@ RIGID_CASES = {
     "linear2d": (2, {"l": 1.7}),
     "cubic2d": (2, {"l": 1.7}),
     "linear3d": (3, {"l": 1.7}),
+    "cubic3d": (3, {"l": 1.7}),
     "plate36": (3, {"a": 1.3, "b": 0.8}),
 }
 
@@ -197,7 +199,7 @@ CLASSES = list(dict.fromkeys(cls for cls, _ in CONTRACT_ELEMENTS.values()))  # e
 
 def _rigid(mesh: BeamMesh, q, R, c):
     """Apply r -> R r + c to the positions and R to the slopes of a global vector."""
-    Q = q.reshape(mesh.n_nodes, len(mesh.slots), 2).copy()
+    Q = q.reshape(mesh.n_nodes, len(mesh.slots), mesh.dim).copy()
     for s, slot in enumerate(mesh.slots):
         Q[:, s, :] = Q[:, s, :] @ R.T + (c if slot == "r" else 0.0)
     return Q.ravel()
@@ -206,10 +208,10 @@ def _rigid(mesh: BeamMesh, q, R, c):
 @pytest.mark.parametrize("cls,kw", CONTRACT_ELEMENTS.values(), ids=list(CONTRACT_ELEMENTS))
 def test_rigid_body_motion_has_no_strain_energy(cls, kw):
     L = 2.0
-    m = BeamMesh(L, 3, cls.slots)
+    m = BeamMesh(L, 3, cls.slots, dim=getattr(cls, "dim", 2))
     q0 = m.reference()
     el = cls(m.lengths, q0[m.dofmap], SECTION, E=E_MOD, nu=NU, rho=RHO, **kw)
-    q = _rigid(m, q0, _rotation2d(), C2)
+    q = _rigid(m, q0, *((_rotation3d(), C3) if getattr(cls, "dim", 2) == 3 else (_rotation2d(), C2)))
     U = el.energy(q[m.dofmap])
     scale = E_MOD * SECTION.area * L
     # brief asked for 1e-6 E A L; the exact value is zero and round-off gives ~1e-30
@@ -231,31 +233,40 @@ def _gauss(n, lo, hi):
     return lo + (t + 1) * (hi - lo) / 2, w * (hi - lo) / 2
 
 
-def _straight_e0(lengths, slots):
+def _straight_e0(lengths, slots, dim=2):
     X = np.concatenate([[0.0], np.cumsum(lengths)])
-    ref = {"r_x": [1.0, 0.0], "r_y": [0.0, 1.0]}
-    nodes = np.array([[[Xi, 0.0] if s == "r" else ref[s] for s in slots] for Xi in X])
+    ref = {"r_x": [1.0, 0.0, 0.0], "r_y": [0.0, 1.0, 0.0], "r_z": [0.0, 0.0, 1.0]}
+    nodes = np.array([[([Xi, 0.0, 0.0] if s == "r" else ref[s])[:dim] for s in slots] for Xi in X])
     return np.stack([np.concatenate([nodes[i].ravel(), nodes[i + 1].ravel()])
                      for i in range(len(lengths))])
 
 
 @pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
 def test_mass_equals_gauss_integration(cls):
+    """Consistent mass against 6 x 6 Gauss points over (x, y) times the width b (2D),
+    or 6 x 6 x 6 over (x, y, z) (3D elements)."""
+    dim = getattr(cls, "dim", 2)
     lengths = np.array([0.7, 1.3])
-    el = cls(lengths, _straight_e0(lengths, cls.slots), SECTION, E=E_MOD, nu=NU, rho=RHO)
+    el = cls(lengths, _straight_e0(lengths, cls.slots, dim), SECTION, E=E_MOD, nu=NU, rho=RHO)
     M = el.mass()
     Sfun = getattr(gen, f"{cls.family}_S")
     h, bw = SECTION.h, SECTION.b
     for e, le in enumerate(lengths):
         xs, wx = _gauss(6, 0.0, le)
         ys, wy = _gauss(6, -h / 2, h / 2)
-        XX, YY = np.meshgrid(xs, ys, indexing="ij")
-        W = np.outer(wx, wy) * bw  # section integrated over z: width b
-        S = Sfun(XX, YY, le)  # (6, 6, nshape)
+        if dim == 3:
+            zs, wz = _gauss(6, -bw / 2, bw / 2)
+            XX, YY, ZZ = (g.reshape(6, -1) for g in np.meshgrid(xs, ys, zs, indexing="ij"))
+            W = np.einsum("p,q,r->pqr", wx, wy, wz).reshape(6, -1)
+            S = Sfun(XX, YY, ZZ, le)
+        else:
+            XX, YY = np.meshgrid(xs, ys, indexing="ij")
+            W = np.outer(wx, wy) * bw  # section integrated over z: width b
+            S = Sfun(XX, YY, le)  # (6, 6, nshape)
         ns = S.shape[-1]
-        Sfull = np.zeros(S.shape[:2] + (2, 2 * ns))
-        for d in range(2):
-            Sfull[..., d, d::2] = S
+        Sfull = np.zeros(S.shape[:2] + (dim, dim * ns))
+        for d in range(dim):
+            Sfull[..., d, d::dim] = S
         Mnum = RHO * np.einsum("pq,pqdi,pqdj->ij", W, Sfull, Sfull)
         np.testing.assert_allclose(M[e], Mnum, rtol=0, atol=1e-12 * np.abs(Mnum).max())
         np.testing.assert_allclose(M[e], M[e].T, rtol=0, atol=0)
@@ -302,12 +313,13 @@ def test_generated_mass_offset_sections():
 @pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
 def test_total_mass_of_rigid_translation(cls):
     L = 2.0
-    m = BeamMesh(L, 4, cls.slots)
+    dim = getattr(cls, "dim", 2)
+    m = BeamMesh(L, 4, cls.slots, dim=dim)
     q0 = m.reference()
     el = cls(m.lengths, q0[m.dofmap], SECTION, E=E_MOD, nu=NU, rho=RHO)
     M = Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]).mass().toarray()
     total = RHO * SECTION.area * L
-    for comp in (0, 1):
+    for comp in range(dim):
         u = np.zeros(m.n_dofs)
         for node in range(m.n_nodes):
             u[m.dof(node, "r", comp)] = 1.0
@@ -320,6 +332,8 @@ def test_total_mass_of_rigid_translation(cls):
         assert mm[np.ix_(positions, positions)].sum() == pytest.approx(0.02 * 1.7, rel=1e-12)
     mm = gen.linear3d_mass(Q0_0=0.02, Q0_1=0.0, Q0_2=1e-5, Q1_0=0.0, Q1_1=0.0, Q2_0=2e-5, l=1.7)
     assert mm[np.ix_([0, 3], [0, 3])].sum() == pytest.approx(0.02 * 1.7, rel=1e-12)
+    mm = gen.cubic3d_mass(Q0_0=0.02, Q0_1=0.0, Q0_2=1e-5, Q1_0=0.0, Q1_1=0.0, Q2_0=2e-5, l=1.7)
+    assert mm[np.ix_([0, 4], [0, 4])].sum() == pytest.approx(0.02 * 1.7, rel=1e-12)
     mm = gen.plate36_mass(1.3, 0.8)
     pos = [0, 3, 6, 9]
     assert mm[np.ix_(pos, pos)].sum() == pytest.approx(1.3 * 0.8, rel=1e-12)

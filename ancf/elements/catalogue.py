@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ancf.elements.belt3d import DufvaBelt3D
 from ancf.elements.dufva2d import DufvaBelt2D
 from ancf.elements.linear2d import LinearBeam2D
 from ancf.elements.omar_shabana import OmarShabana2D
@@ -30,13 +31,15 @@ CATALOGUE = {e.name: e for e in (
 ELEMENTS = {name: e.cls for name, e in CATALOGUE.items()}
 #: Every element that satisfies ancf.elements.contract, each with the constructor
 #: variants its contract tests run (name -> (class, keyword arguments)): the beam
-#: catalogue with one variant per integration scheme, and Dufva's belt element
-#: (thesis 3.1), kept out of CATALOGUE so that the beam scenes, studies and
-#: references do not pick it up.
+#: catalogue with one variant per integration scheme, and Dufva's belt elements
+#: (thesis 3.1 planar, 4.4 spatial), kept out of CATALOGUE so that the beam scenes,
+#: studies and references do not pick them up.
 CONTRACT_ELEMENTS = {
     **{f"{c.__name__}-{s}": (c, {"integration": s}) for c in ELEMENTS.values() for s in c.schemes},
     "DufvaBelt2D": (DufvaBelt2D, {}),
     "DufvaBelt2D-alpha": (DufvaBelt2D, {"alpha1": 0.6, "alpha2": 0.05, "nx": 3}),
+    "DufvaBelt3D": (DufvaBelt3D, {}),
+    "DufvaBelt3D-alpha": (DufvaBelt3D, {"alpha1": 0.6, "alpha2": 0.05, "nx": 3}),
 }
 SCHEMES = tuple(dict.fromkeys(s for e in CATALOGUE.values() for s in e.cls.schemes))
 
