@@ -12,6 +12,7 @@ import numpy as np
 
 from ancf.assembly import Assembly, ElementGroup
 from ancf.constraints import Elimination
+from ancf.elements.belt3d import DufvaBelt3D
 from ancf.elements.linear3d import LinearBeam3D
 from ancf.mesh import BeamMesh
 from ancf.quadrature import RectangularSection
@@ -22,8 +23,13 @@ def _linear3d(p: dict):
     return LinearBeam3D, {"ks": p["ks"], "integration": p["integration"]}
 
 
+def _belt3d(p: dict):
+    return DufvaBelt3D, {"ks": p["ks"], "alpha1": p.get("alpha1", 1.0),
+                         "alpha2": p.get("alpha2", 1.0), "nx": p.get("elastic_points", 5)}
+
+
 #: element name -> (p -> (element class, extra keyword arguments))
-BUILDERS = {"linear3d": _linear3d}
+BUILDERS = {"linear3d": _linear3d, "belt3d": _belt3d}
 
 
 def model(p: dict):

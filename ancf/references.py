@@ -46,6 +46,7 @@ ELEMENT_PHYSICS = {
     "linear": frozenset({"axial", "bending", "shear", "large-rotation", "inertia"}),
     "omar-shabana": frozenset({"axial", "bending", "shear", "large-rotation", "inertia"}),
     "linear3d": frozenset({"axial", "bending", "shear", "large-rotation", "inertia", "3D"}),
+    "belt3d": frozenset({"axial", "bending", "shear", "large-rotation", "inertia", "3D"}),
 }
 
 #: Bump when a change of the code would change a cached self-reference.
@@ -621,12 +622,13 @@ def _beam3d_spec() -> SceneSpec:
         "section or a load along a principal axis); error = |tip − tip_ref| / |tip_ref − (L, 0, "
         "0)|", _reissner_3d, _tip3_error)}
     grid = ({"element": ["linear3d"], "integration": ["thesis"], "n_elements": [1, 2, 4, 8, 16],
-             "rtol": [1e-8]},)
+             "rtol": [1e-8]},
+            {"element": ["belt3d"], "n_elements": [1, 2, 4, 8, 16], "rtol": [1e-8]})
     return SceneSpec("beam3d-cantilever", STATIC_KNOBS,
                      frozenset({"axial", "bending", "shear", "large-rotation", "3D"}), refs,
                      "reissner", report_grids=grid, recommend_grids=grid,
-                     notes="Model 1 cantilever with the 3D linear element against the Reissner "
-                           "rod.")
+                     notes="Model 1 cantilever with the 3D linear element and the 3D belt "
+                           "element (alpha1 = alpha2 = 1) against the Reissner rod.")
 
 
 #: Scene name -> spec factory.  One entry per scene; dynamic ones activate with their scene.

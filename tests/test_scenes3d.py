@@ -40,13 +40,24 @@ def test_beam3d_at_zero_degrees_reproduces_the_2d_cantilever(common):
     assert abs(r3["tip_z"]) <= 1e-10 * abs(r2["tip_y"])
 
 
-def test_beam3d_at_90_degrees_rotates_the_load_onto_minus_z():
-    common = {"n_elements": 4, "F": -1e5}
+@pytest.mark.parametrize("element", ["linear3d", "belt3d"])
+def test_beam3d_at_90_degrees_rotates_the_load_onto_minus_z(element):
+    common = {"n_elements": 4, "F": -1e5, "element": element}
     r0 = SCENES["beam3d-cantilever"].execute(common)[0]["results"]
     r9 = SCENES["beam3d-cantilever"].execute({**common, "load_angle_deg": 90})[0]["results"]
     assert r9["tip_x"] == pytest.approx(r0["tip_x"], rel=1e-10)
     assert r9["tip_z"] == pytest.approx(r0["tip_y"], rel=1e-10)  # square section
     assert abs(r9["tip_y"]) <= 1e-10 * abs(r0["tip_y"])
+
+
+def test_belt3d_cantilever_halving_alpha2_doubles_a_small_deflection():
+    """The belt element's alpha2 scales bending and shear (Eqs 4.40-4.42): in the linear
+    range the tip deflection doubles (tolerance 1e-6: the load is small, not zero)."""
+    common = {"element": "belt3d", "n_elements": 4, "F": -0.25, "load_angle_deg": 30}
+    r1 = SCENES["beam3d-cantilever"].execute(common)[0]["results"]
+    r2 = SCENES["beam3d-cantilever"].execute({**common, "alpha2": 0.5})[0]["results"]
+    for k in ("tip_y", "tip_z"):
+        assert r2[k] / r1[k] == pytest.approx(2.0, rel=1e-6)
 
 
 BAD = [("plate-square", "a", "0"), ("plate-square", "n_elements", "0"),

@@ -28,18 +28,27 @@ def params() -> tuple:
         elif q.name == "integration":
             q = Param("integration", "thesis", str,
                       doc="integration scheme (linear3d: thesis, exact, report-selective, "
-                          "report-fix) or a spec like 'normal=2x2,shear=1x1'")
+                          "report-fix) or a spec like 'normal=2x2,shear=1x1'; belt3d has one "
+                          "rule (elastic_points along the axis, the section in closed form) "
+                          "and ignores it")
         elif q.name == "clamp_x_slope":
             continue
         out.append(q)
     return tuple(out) + (
         Param("load_angle_deg", 0.0, float, "deg",
               "angle of the tip force in the section plane, from -y towards -z "
-              "(0 = the 2D cantilever)", lo=-360, hi=360),)
+              "(0 = the 2D cantilever)", lo=-360, hi=360),
+        Param("alpha1", 1.0, float, "-", "belt3d: axial stiffness parameter (Eq. 4.40)", lo=0,
+              lo_open=True, hi=10),
+        Param("alpha2", 1.0, float, "-", "belt3d: bending and shear stiffness parameter "
+              "(Eqs 4.40-4.42)", lo=0, lo_open=True, hi=10),
+        Param("elastic_points", 5, int, doc="belt3d: Gauss points along the axis", lo=1, hi=12),)
 
 
 def check(p: dict) -> None:
     cls = beam3d.BUILDERS[p["element"]](p)[0]
+    if not cls.schemes:  # one rule (belt3d)
+        return
     try:
         cls.scheme_terms(p["integration"], np.eye(3), np.eye(3))
     except (ValueError, AttributeError) as exc:
