@@ -51,15 +51,17 @@ def _belt_parts(p: dict) -> list:
     """The mesh and quadrature knobs of the scenes without an element choice (the belt
     scenes: contact and elastic points; the plates: elements across, Gauss points)."""
     parts = [f"n = {p.get('n_elements')}"]
-    if p.get("n_width") is not None:
-        parts.append(f"{p['n_width']} across")
-    if p.get("gauss_points") is not None:
-        parts.append(f"{p['gauss_points']} contact points")
-    if p.get("ng") is not None:
-        parts.append(f"{p['ng']} x {p['ng']} Gauss points")
-    if p.get("elastic_points") is not None:
-        parts.append(f"{p['elastic_points']} elastic points")
+    for key, text in (("n_width", "{} across"), ("gauss_points", "{} contact points"),
+                      ("contact_points", "{} contact points per plate"),
+                      ("ng", "{0} x {0} Gauss points"), ("elastic_points", "{} elastic points")):
+        if _given(p.get(key)):
+            parts.append(text.format(p[key]))
     return parts
+
+
+def _given(v) -> bool:
+    """A knob value that is set (not None, NaN or the text 'None' of a table cell)."""
+    return v is not None and str(v) not in ("None", "nan")
 
 
 def describe(p: dict, dynamic: bool) -> str:

@@ -14,6 +14,7 @@ import pandas as pd  # noqa: E402
 from analytic import timoshenko
 from ancf.reports.belt2d import belt2d_chapter
 from ancf.reports.bechtel import bechtel_chapter
+from ancf.reports.belt3d import belt3d_chapter
 from ancf.reports.extremes import extremes_chapter
 from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
@@ -189,7 +190,7 @@ def static_chapter() -> tuple[str, dict]:
 
 
 CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md", "belt2d.md",
-            "bechtel.md", "elements3d.md")
+            "bechtel.md", "elements3d.md", "belt3d.md")
 
 _INDEX = [
     "| report | contents |", "|---|---|",
@@ -211,6 +212,10 @@ _INDEX = [
     "Navier (convergence, order), cantilever strip vs Euler–Bernoulli and the Reissner rod, 3D "
     "beam vs the planar scenes, 45° superposition, torsion vs St-Venant, rigid motion; "
     "acceptance checks |",
+    "| [belt3d.md](belt3d.md) | 3D belt drive of thin plates (thesis 4.6): Model 2 vs Bechtel "
+    "(full and capstan), torque balance per strain measure, tension / det F / speed / contact "
+    "forces along the belt (Figs 4.11-4.18), pulley speeds of Models 1 and 2 (Figs 4.10, "
+    "4.16), contact points and element count; acceptance checks |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
@@ -230,7 +235,8 @@ def write_chapters(root: Path) -> dict:
                           ("extremes.md", extremes_chapter),
                           ("belt2d.md", belt2d_chapter),
                           ("bechtel.md", bechtel_chapter),
-                          ("elements3d.md", elements3d_chapter)):
+                          ("elements3d.md", elements3d_chapter),
+                          ("belt3d.md", belt3d_chapter)):
         text, st = chapter()
         (root / name).write_text(text)
         status.update(st)

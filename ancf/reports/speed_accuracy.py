@@ -48,6 +48,8 @@ def _model(row, dynamic: bool) -> str:
         s = f"{row['element']} / {row['integration']}"
     elif "gauss_points" in row:
         s = f"{int(row['gauss_points'])} contact points"
+    elif "contact_points" in row:
+        s = f"{int(row['contact_points'])} contact points per plate"
     elif "elastic_points" in row:
         s = f"{int(row['elastic_points'])} elastic points"
     else:  # the plates
