@@ -216,6 +216,6 @@ def test_a_scene_at_the_floating_point_limit_reports_one_line(capsys):
 def test_package_metadata_describes_what_exists():
     meta = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
     assert meta["license"] == "MIT"
-    assert "planned" in meta["description"] and "3D belt drive" in meta["description"]
+    assert "planned" not in meta["description"] and "belt drives (2D and 3D)" in meta["description"]
     readme = (ROOT / "README.md").read_text()
-    assert "planar\nbeams and the 2D belt drive today" in readme and "3D belt drive is planned" in readme
+    assert "the 3D\nbelt drive of thin plates" in readme and "planned" not in readme.split("##")[0]
