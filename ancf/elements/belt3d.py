@@ -71,8 +71,8 @@ from numba import njit
 
 from ancf.elements import _belt3d_generated as gen
 from ancf.elements import _generated as shape_gen
-from ancf.elements.basis import consistent_mass, family_shapes
-from ancf.elements.compiled_element import CompiledElement, check, check_material
+from ancf.elements.basis import consistent_mass
+from ancf.elements.compiled_element import BeltElement
 from ancf.quadrature import RectangularSection, gauss01
 
 _NV = 25    # point variables of the density
@@ -386,7 +386,7 @@ def section_coefficients(section: RectangularSection) -> np.ndarray:
                      (h**3 / 12.0) * (b**3 / 12.0)])
 
 
-class DufvaBelt3D(CompiledElement):
+class DufvaBelt3D(BeltElement):
     """3D belt elements of lengths ``lengths`` (nel,) m, reference coordinates ``e0``
     (nel, 24) (checked for shape only: the reference is straight), cross-section
     ``section`` (b along z, h along y, m), Young's modulus ``E`` Pa, Poisson's ratio
@@ -403,20 +403,7 @@ class DufvaBelt3D(CompiledElement):
 
     def __init__(self, lengths, e0, section: RectangularSection, E, nu, rho=0.0,
                  alpha1=1.0, alpha2=1.0, ks=5.0 / 6.0, nx=5):
-        check_material(nu, rho, E=E, alpha1=alpha1, alpha2=alpha2, ks=ks,
-                       **{"section.b": section.b, "section.h": section.h})
-        check("nx", nx, lambda v: isinstance(v, (int, np.integer)) and v >= 1, "an integer >= 1")
-        self.lengths = np.asarray(lengths, dtype=float).ravel()
-        check("lengths", lengths, lambda v: self.lengths.size > 0 and np.all(
-            np.isfinite(self.lengths) & (self.lengths > 0)), "a non-empty array of finite values > 0")
-        self.shapes = family_shapes(self.family)
-        self.nel, self.nshape = self.lengths.size, self.shapes["n"]
-        self.ndof = self.dim * self.nshape
-        check("e0 size", np.size(e0), lambda v: v == self.nel * self.ndof,
-              f"nel * 24 = {self.nel * self.ndof}")
-        self.section, self.rho, self.nx = section, float(rho), int(nx)
-        self.E_mod, self.alpha1 = float(E), float(alpha1)
-        G = E / (2.0 * (1.0 + nu))
+        G = self._setup(lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx)
         self.coefficients = np.concatenate([[E * alpha1, E * alpha2, ks * G * alpha2, E, G],
                                             section_coefficients(section)])
         self._data = self._kernel_data()

@@ -1,10 +1,13 @@
-"""What elements with their own compiled kernels share (the belt element, the thin plate):
-argument checks, and energy / gradient / tangent from module-level kernels
+"""What elements with their own compiled kernels share (the belt elements, the thin plate):
+argument checks, the belt elements' common set-up, and energy / gradient / tangent from
+module-level kernels
 ``energy(E, data)`` and ``gradient_tangent(E, data, want_K, g, K)`` on the element's
 ``_data`` tuple, E the coordinates shaped (nel, nshape, dim)."""
 from __future__ import annotations
 
 import numpy as np
+
+from ancf.elements.basis import family_shapes
 
 _NO_TANGENT = np.zeros((0, 0, 0))
 
@@ -41,3 +44,24 @@ class CompiledElement:
         K = np.zeros((self.nel, self.ndof, self.ndof)) if tangent else _NO_TANGENT
         self.kernel_gradient_tangent(self._coords(e), self._data, tangent, g, K)
         return g, (K if tangent else None)
+
+
+class BeltElement(CompiledElement):
+    """Dufva's belt elements (2D and 3D): the arguments they share, checked and stored."""
+
+    def _setup(self, lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx) -> float:
+        """Check and store the common arguments; returns the shear modulus G (Pa)."""
+        check_material(nu, rho, E=E, alpha1=alpha1, alpha2=alpha2, ks=ks,
+                       **{"section.b": section.b, "section.h": section.h})
+        check("nx", nx, lambda v: isinstance(v, (int, np.integer)) and v >= 1, "an integer >= 1")
+        self.lengths = np.asarray(lengths, dtype=float).ravel()
+        check("lengths", lengths, lambda v: self.lengths.size > 0 and np.all(
+            np.isfinite(self.lengths) & (self.lengths > 0)), "a non-empty array of finite values > 0")
+        self.shapes = family_shapes(self.family)
+        self.nel, self.nshape = self.lengths.size, self.shapes["n"]
+        self.ndof = self.dim * self.nshape
+        check("e0 size", np.size(e0), lambda v: v == self.nel * self.ndof,
+              f"nel * {self.ndof} = {self.nel * self.ndof}")
+        self.section, self.rho, self.nx = section, float(rho), int(nx)
+        self.E_mod, self.alpha1 = float(E), float(alpha1)
+        return E / (2.0 * (1.0 + nu))
