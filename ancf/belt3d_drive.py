@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from ancf.belt_drive import PulleyDrive
 from ancf.belt_path import TwoPulleyPath, laid_belt
 from ancf.contact3d import contact_forces3d, contact_points3d, contact_state3d
 from ancf.elements.plate36 import Plate36
@@ -84,7 +85,7 @@ def laid_plate_belt(path: TwoPulleyPath, L0: float, n: int, width: float) -> np.
     return q.ravel()
 
 
-class Belt3DDrive:
+class Belt3DDrive(PulleyDrive):
     """The assembled model of a :class:`Belt3DSpec`."""
 
     def __init__(self, spec: Belt3DSpec):
@@ -108,11 +109,6 @@ class Belt3DDrive:
         self.radii = np.array([s.path.R1, s.path.R2])
         self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
 
-    @property
-    def n(self) -> int:
-        """Belt coordinates (the pulley angle is coordinate n)."""
-        return self.pattern.n
-
     def omega_driver(self, t):
         return driver_omega(t, self.spec.omega_final, self.spec.t0, self.spec.t1)
 
@@ -131,14 +127,6 @@ class Belt3DDrive:
         c = self.centres.copy()
         c[0] += float(driver_shift(t, self.spec.u0, self.spec.t0)[0]) * SHIFT
         return c
-
-    def state(self, q, theta=0.0) -> np.ndarray:
-        """System vector (belt in pattern numbering, then theta) from global belt q."""
-        return np.append(self.pattern.restrict(q), theta)
-
-    def belt(self, x) -> np.ndarray:
-        """Global belt coordinates from a system vector."""
-        return self.pattern.expand(np.asarray(x)[: self.n], np.zeros(self.n_dofs))
 
     def element_coords(self, q) -> np.ndarray:
         """(nel, 12, 3) element coordinates from global belt coordinates q."""

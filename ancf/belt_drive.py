@@ -55,7 +55,25 @@ class BeltSpec:
     Ta_max: float               # final opposing torque, N m (Eq. 3.30)
 
 
-class BeltDrive:
+class PulleyDrive:
+    """What the 2D and 3D belt drives share: a belt in the numbering of ``pattern``
+    (``n_dofs`` global coordinates) followed by the driven pulley's angle."""
+
+    @property
+    def n(self) -> int:
+        """Belt coordinates (the pulley angle is coordinate n)."""
+        return self.pattern.n
+
+    def state(self, q, theta=0.0) -> np.ndarray:
+        """System vector (belt in pattern numbering, then theta) from global belt q."""
+        return np.append(self.pattern.restrict(q), theta)
+
+    def belt(self, x) -> np.ndarray:
+        """Global belt coordinates from a system vector."""
+        return self.pattern.expand(np.asarray(x)[: self.n], np.zeros(self.n_dofs))
+
+
+class BeltDrive(PulleyDrive):
     """The assembled model of a :class:`BeltSpec`."""
 
     def __init__(self, spec: BeltSpec):
@@ -76,11 +94,6 @@ class BeltDrive:
         self.radii = np.array([s.path.R1, s.path.R2])
         self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
 
-    @property
-    def n(self) -> int:
-        """Belt coordinates (the pulley angle is coordinate n)."""
-        return self.pattern.n
-
     def omega_driver(self, t):
         return driver_omega(t, self.spec.omega_final)
 
@@ -91,14 +104,6 @@ class BeltDrive:
         """Pulley laws (2, len(t)) of the march: driver omega (rad/s), T_a (N m)."""
         t = np.atleast_1d(np.asarray(t, dtype=float))
         return np.stack([self.omega_driver(t), self.torque(t)])
-
-    def state(self, q, theta=0.0) -> np.ndarray:
-        """System vector (belt in pattern numbering, then theta) from global belt q."""
-        return np.append(self.pattern.restrict(q), theta)
-
-    def belt(self, x) -> np.ndarray:
-        """Global belt coordinates from a system vector."""
-        return self.pattern.expand(np.asarray(x)[: self.n], np.zeros(self.mesh.n_dofs))
 
     @property
     def dofmap(self) -> np.ndarray:

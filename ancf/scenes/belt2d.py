@@ -17,15 +17,14 @@ velocities, the model size and the run statistics.
 from __future__ import annotations
 
 import math
-import sys
 
 import numpy as np
 
 from ancf.belt_drive import BeltDrive, BeltSpec
 from ancf.belt_post import sample, span_midpoint, span_tension, spans
-from ancf.inputs import MAX_STEPS, check_sampling, following, intervals
+from ancf.inputs import MAX_STEPS, following, intervals
 from ancf.scenes import belt_common as bc
-from ancf.scenes.base import InputError, Param, Scene, SceneResult
+from ancf.scenes.base import Param, Scene, SceneResult
 from ancf.solvers.belt_dynamics import BeltOptions, simulate
 from ancf.solvers.belt_pretension import settle
 from ancf.solvers.belt_scipy import simulate_bdf
@@ -67,13 +66,7 @@ def params() -> tuple:
 
 def check(p: dict) -> None:
     bc.check_geometry(p)
-    check_sampling(p)
-    if p["dt"] > p["output_dt"]:
-        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: a number in [1e-07, "
-                         f"output_dt = {p['output_dt']:g}] s (samples fall on steps)")
-    if p["t_end"] / p["dt"] > MAX_STEPS:
-        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: at least "
-                         f"t_end/{MAX_STEPS} = {p['t_end'] / MAX_STEPS:g} s")
+    bc.check_steps(p)
 
 
 def spec(p: dict) -> BeltSpec:
@@ -137,7 +130,7 @@ def run(p: dict) -> SceneResult:
         x0 = drive.state(drive.q0) if x0 is None else x0
         res = simulate_bdf(drive, times(p), p["rtol"], p["atol"], x0, p["max_steps"])
     else:
-        res = simulate(drive, times(p), opt, x0=x0, progress=_progress(p))
+        res = simulate(drive, times(p), opt, x0=x0, progress=bc.progress("belt2d", p, PROGRESS_STEPS))
     if p["start"] == "settled" and not pre.converged:
         res.converged, res.message = False, f"pre-tension: {pre.message}"
     wd = np.asarray(drive.omega_driver(res.t), dtype=float)
@@ -175,12 +168,6 @@ def warn(p: dict, res: SceneResult) -> list:
             f"((path - belt_length)/2 pi = {1e3 * pre:.2g} mm): k_p = {p['k_p']:g} N/m^2 is too "
             "soft for the pre-tension; raise k_p"]
 
-
-def _progress(p: dict):
-    """Progress lines on stderr for long runs from a terminal."""
-    if not sys.stderr.isatty() or p["t_end"] / p["dt"] < PROGRESS_STEPS:
-        return None
-    return lambda t: print(f"belt2d: t = {t:.4g} / {p['t_end']:g} s", file=sys.stderr, flush=True)
 
 SCENE = Scene(
     "belt2d",

@@ -28,7 +28,6 @@ pulley (the integral of Eq. 4.45's friction).
 from __future__ import annotations
 
 import math
-import sys
 
 import numpy as np
 
@@ -36,7 +35,8 @@ from ancf.belt3d_drive import Belt3DDrive, Belt3DSpec
 from ancf.belt3d_post import MEASURES, end_state
 from ancf.belt_path import TwoPulleyPath
 from ancf.contact3d import SUPPORTED_RULES
-from ancf.inputs import MAX_STEPS, check_sampling, following, intervals
+from ancf.inputs import MAX_STEPS, following, intervals
+from ancf.scenes.belt_common import check_belt_length, check_steps, progress
 from ancf.scenes.base import InputError, Param, Scene, SceneResult
 from ancf.solvers.belt_dynamics import BeltOptions, simulate
 from ancf.solvers.belt_pretension import settle
@@ -147,21 +147,11 @@ def penetration(p: dict, lam: float) -> float:
 
 
 def check(p: dict) -> None:
-    check_sampling(p)
+    check_steps(p)
     if 2 * p["R"] >= p["centre_distance"]:
         raise InputError(f"R = {p['R']:g} m: the pulleys overlap; allowed: 2 R < centre_distance "
                          f"= {p['centre_distance']:g} m")
-    P = path_of(p).length
-    if p["belt_length"] is not None and not 0.5 * P <= p["belt_length"] <= 2.0 * P:
-        raise InputError(f"belt_length = {p['belt_length']:g} m is out of range for this path "
-                         f"({P:.6g} m); allowed: a number in [{0.5 * P:.6g}, {2 * P:.6g}] m "
-                         "(half to twice the wrapped path)")
-    if p["dt"] > p["output_dt"]:
-        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: a number in [1e-07, "
-                         f"output_dt = {p['output_dt']:g}] s (samples fall on steps)")
-    if p["t_end"] / p["dt"] > MAX_STEPS:
-        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: at least "
-                         f"t_end/{MAX_STEPS} = {p['t_end'] / MAX_STEPS:g} s")
+    check_belt_length(p["belt_length"], path_of(p).length)
     lam = stretch_for(p["T_i"], p["E"] * p["h"] * p["width"])
     if lam > 2.0:
         raise InputError(f"T_i = {p['T_i']:g} N is out of range: it needs a belt shorter than half "
@@ -198,7 +188,7 @@ def run(p: dict) -> SceneResult:
     if p["start"] == "settled":
         x0, pre = settle(drive)
         pre_iterations = pre.iterations
-    res = simulate(drive, times(p), opt, x0=x0, progress=_progress(p))
+    res = simulate(drive, times(p), opt, x0=x0, progress=progress("belt3d", p, PROGRESS_STEPS))
     if pre is not None and not pre.converged:
         res.converged, res.message = False, f"pre-tension: {pre.message}"
     wd = np.asarray(drive.omega_driver(res.t), dtype=float)
@@ -216,13 +206,6 @@ def run(p: dict) -> SceneResult:
                    contact_pairs=res.extra["contact_pairs"], pretension_iterations=pre_iterations,
                    belt_length_m=drive.spec.belt_length, total_dofs=drive.n + 1)
     return SceneResult(ok, res.message, results, extra={"result": res, "drive": drive})
-
-
-def _progress(p: dict):
-    """Progress lines on stderr for long runs from a terminal."""
-    if not sys.stderr.isatty() or p["t_end"] / p["dt"] < PROGRESS_STEPS:
-        return None
-    return lambda t: print(f"belt3d: t = {t:.4g} / {p['t_end']:g} s", file=sys.stderr, flush=True)
 
 
 SCENE = Scene(

@@ -3,8 +3,11 @@ Table 3.1 as defaults, their cross-field checks and the model builder.
 """
 from __future__ import annotations
 
+import sys
+
 from ancf.belt_path import TwoPulleyPath
 from ancf.contact import SUPPORTED_POINTS
+from ancf.inputs import MAX_STEPS, check_sampling
 from ancf.scenes.base import InputError, Param
 
 #: Table 3.1
@@ -57,11 +60,33 @@ def check_geometry(p: dict) -> None:
     if p["R1"] + p["R2"] >= D:
         raise InputError(f"R1 + R2 = {p['R1'] + p['R2']:g} m: the pulleys overlap; allowed: "
                          f"R1 + R2 < centre distance {D:g} m")
-    P = path_of(p).length
-    if p["belt_length"] is not None and not 0.5 * P <= p["belt_length"] <= 2.0 * P:
-        raise InputError(f"belt_length = {p['belt_length']:g} m is out of range for this path "
+    check_belt_length(p["belt_length"], path_of(p).length)
+
+
+def check_belt_length(length, P: float) -> None:
+    """A given belt length (m) between half and twice the wrapped path P (m)."""
+    if length is not None and not 0.5 * P <= length <= 2.0 * P:
+        raise InputError(f"belt_length = {length:g} m is out of range for this path "
                          f"({P:.6g} m); allowed: a number in [{0.5 * P:.6g}, {2 * P:.6g}] m "
                          "(half to twice the wrapped path)")
+
+
+def check_steps(p: dict) -> None:
+    """Samples on steps (dt <= output_dt) and at most MAX_STEPS steps."""
+    check_sampling(p)
+    if p["dt"] > p["output_dt"]:
+        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: a number in [1e-07, "
+                         f"output_dt = {p['output_dt']:g}] s (samples fall on steps)")
+    if p["t_end"] / p["dt"] > MAX_STEPS:
+        raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: at least "
+                         f"t_end/{MAX_STEPS} = {p['t_end'] / MAX_STEPS:g} s")
+
+
+def progress(scene: str, p: dict, min_steps: int):
+    """Progress lines on stderr for runs of at least ``min_steps`` steps from a terminal."""
+    if not sys.stderr.isatty() or p["t_end"] / p["dt"] < min_steps:
+        return None
+    return lambda t: print(f"{scene}: t = {t:.4g} / {p['t_end']:g} s", file=sys.stderr, flush=True)
 
 
 def belt_length(p: dict) -> float:
