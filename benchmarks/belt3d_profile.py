@@ -29,6 +29,7 @@ from benchmarks.belt_profile import _per_call, breakdown, linear_algebra_costs
 
 T_ENDS = (0.3, 1.2)
 COUNTS = ("steps", "nfev", "njev", "nlu", "newton_iterations", "rejected_steps", "contact_pairs")
+RESULTS = ("slip_driven", "T_tight_N", "T_slack_N")
 
 
 def kernel_costs3d(drive, x, v, t: float) -> dict:
@@ -70,7 +71,7 @@ def profile(t_end: float, **params) -> dict:
     r = out["results"]
     costs, split = run_costs(out, res)
     return {"t_end": t_end, "converged": out["converged"], "counts": {k: r[k] for k in COUNTS},
-            "integration_cpu_s": r["integration_cpu_s"],
+            "results": {k: r[k] for k in RESULTS}, "integration_cpu_s": r["integration_cpu_s"],
             "cpu_per_simulated_s": r["integration_cpu_s"] / t_end,
             "per_call_us": {k: v * 1e6 for k, v in costs.items()}, **split}
 
@@ -83,7 +84,7 @@ def main(argv=None) -> int:
                            for k in ("elastic_s", "contact_s", "linear_algebra_s", "other_s"))
         print(f"t_end = {t_end:g} s: integration {tot:.2f} s CPU "
               f"({p['cpu_per_simulated_s']:.1f} s per simulated s; converged {p['converged']}); "
-              f"{shares}\n  counts {p['counts']}\n  per call (us) "
+              f"{shares}\n  counts {p['counts']}\n  results {p['results']}\n  per call (us) "
               + ", ".join(f"{k} {v:.1f}" for k, v in p["per_call_us"].items()))
     return 0
 
