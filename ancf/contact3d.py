@@ -279,20 +279,48 @@ def _mid_surface(E, V, S0, e, q, r, v):
 
 
 @njit(cache=True)
-def _add_jacobians(S0, e, q, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw):
+def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
+    """Add point q's terms to the omega and moment derivatives, and its shape-function
+    products to the pair's buffer A (18, 78): for k <= m (pair index km),
+    A[3 d + c, km] += w S_k S_m dF_d/dr_c and A[9 + 3 d + c, km] += w S_k S_m dF_d/drdot_c
+    (the 3 x 3 blocks (k, m) and (m, k) of dQ/de, dQ/dedot are equal; :func:`_flush`).
+    P (78,) scratch."""
     ns = S0.shape[2]
+    km = 0
     for k in range(ns):
         sk = ww * S0[e, q, k]
         for d in range(3):
             Qw[e, p, 3 * k + d] += sk * D[d, 6]
             dTq[p, e, 3 * k + d] += sk * D[3, d]
             dTv[p, e, 3 * k + d] += sk * D[3, 3 + d]
-            for m in range(ns):
-                skm = sk * S0[e, q, m]
-                for c in range(3):
-                    Kq[e, 3 * k + d, 3 * m + c] += skm * D[d, c]
-                    Cv[e, 3 * k + d, 3 * m + c] += skm * D[d, 3 + c]
+        for m in range(k, ns):
+            P[km] = sk * S0[e, q, m]
+            km += 1
+    for d in range(3):
+        for c in range(6):
+            dj = D[d, c]
+            j = 3 * d + c if c < 3 else 6 + 3 * d + c
+            for i in range(km):
+                A[j, i] += P[i] * dj
     dTw[p] += ww * D[3, 6]
+
+
+@njit(cache=True)
+def _flush(A, e, ns, Kq, Cv):
+    """Add a pair's buffer A (see :func:`_add_jacobians`) to Kq[e], Cv[e] and zero it."""
+    km = 0
+    for k in range(ns):
+        for m in range(k, ns):
+            for d in range(3):
+                for c in range(3):
+                    kq, cv = A[3 * d + c, km], A[9 + 3 * d + c, km]
+                    Kq[e, 3 * k + d, 3 * m + c] += kq
+                    Cv[e, 3 * k + d, 3 * m + c] += cv
+                    if m != k:
+                        Kq[e, 3 * m + d, 3 * k + c] += kq
+                        Cv[e, 3 * m + d, 3 * k + c] += cv
+            km += 1
+    A[:, :] = 0.0
 
 
 @njit(cache=True)
@@ -313,6 +341,8 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     D, G, P, X = np.zeros((4, 7)), np.zeros((3, 7)), np.zeros((16, 3)), np.zeros((16, 3))
     r, v, a, vr = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
     n, t, vs, ft, pax = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    ns = S0.shape[2]
+    SS, A = np.zeros(ns * (ns + 1) // 2), np.zeros((18, ns * (ns + 1) // 2))
     pairs = 0
     for e in range(nel):
         sa, sb = _sides(S0, w, e)
@@ -323,6 +353,7 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
             if not _may_touch(P, centres[p], pax, R, X):
                 continue
             pairs += 1
+            touched = False
             for q in range(nq):
                 _mid_surface(E, V, S0, e, q, r, v)
                 for c in range(3):
@@ -340,7 +371,10 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
                 if want_J:
                     _point_jacobian(vr, pax, R, om, rho, Fn, vsn, branch, n, t, vs, ft,
                                     prm, G, D)
-                    _add_jacobians(S0, e, q, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw)
+                    _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, SS, A)
+                    touched = True
+            if touched:
+                _flush(A, e, ns, Kq, Cv)
     return pairs
 
 

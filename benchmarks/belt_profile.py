@@ -52,6 +52,15 @@ def kernel_costs(drive, x, v, omegas) -> dict:
     def contact(J):
         return lambda: contact_forces(E, V, drive.S0, drive.w, drive.centres, drive.radii, omegas,
                                       drive.prm, J, Q, Kq, Cv, Qw, T, dT, dT, T)
+    return {"elastic": _per_call(lambda: gradient_tangent(E, eld, False, g, K)),
+            "elastic_tangent": _per_call(lambda: gradient_tangent(E, eld, True, g, K)),
+            "contact": _per_call(contact(False)), "contact_jacobian": _per_call(contact(True)),
+            **linear_algebra_costs(drive)}
+
+
+def linear_algebra_costs(drive) -> dict:
+    """Seconds per band LU (unpivoted, as the march's kept factors) and per band solve of
+    the drive's band pattern (the mass matrix stands in for the iteration matrix: same band)."""
     A0 = drive.Mb.copy()
     kl, piv, b = drive.pattern.kl, np.zeros(drive.n, dtype=np.int64), np.ones(drive.n)
     A = A0.copy()
@@ -60,15 +69,13 @@ def kernel_costs(drive, x, v, omegas) -> dict:
     def factor():
         B = A0.copy()
         banded.lu(B, kl, piv, False)
-    return {"elastic": _per_call(lambda: gradient_tangent(E, eld, False, g, K)),
-            "elastic_tangent": _per_call(lambda: gradient_tangent(E, eld, True, g, K)),
-            "contact": _per_call(contact(False)), "contact_jacobian": _per_call(contact(True)),
-            "lu": _per_call(factor), "solve": _per_call(lambda: banded.solve(A, kl, piv, b.copy()))}
+    return {"lu": _per_call(factor), "solve": _per_call(lambda: banded.solve(A, kl, piv, b.copy()))}
 
 
 def breakdown(r: dict, costs: dict) -> dict:
     """Estimated seconds in elastic forces, contact, linear algebra and the rest, from a
-    belt2d result ``r`` (its counters) and :func:`kernel_costs`."""
+    belt-drive result ``r`` (its counters; belt2d or belt3d) and per-call costs with the keys
+    of :func:`kernel_costs`."""
     nfev, njev, nlu, nit = r["nfev"], r["njev"], r["nlu"], r["newton_iterations"]
     out = {"elastic_s": (nfev - njev) * costs["elastic"] + njev * costs["elastic_tangent"],
            "contact_s": (nfev - njev) * costs["contact"] + njev * costs["contact_jacobian"],

@@ -6,8 +6,8 @@
 Writes: a table of every benchmark (name, params, mean, stddev, rounds, extra info),
 element x n tables for the full solve and the Newton-iteration kernel, the
 linear / Omar-Shabana Newton-iteration time ratios against the thesis's ~0.5, and
-the pendulum timings (Table 2.5 ratio, cost per simulated second vs n) and the
-machine description.
+the pendulum timings (Table 2.5 ratio, cost per simulated second vs n), the 2D and 3D
+belt drives (time split and counters) and the machine description.
 """
 from __future__ import annotations
 
@@ -219,6 +219,52 @@ def dynamics_sections(benches, out_dir: Path = DEFAULT_OUT.parent) -> list:
     return parts
 
 
+BELT_SPLIT = ("elastic_s", "contact_s", "linear_algebra_s", "other_s")
+
+
+def belt_table(benches, test: str, keys) -> str | None:
+    """One row per run of a belt-drive benchmark: median time, the run's integration
+    CPU time (and per simulated second, where recorded), its split and counters, and
+    ``keys`` (extra_info results)."""
+    runs = [b for b in benches if short_name(b) == test]
+    if not runs:
+        return None
+    rows = []
+    for b in runs:
+        x = b.get("extra_info", {})
+        cpu = x.get("integration_cpu_s")
+        split = " / ".join(f"{100 * x[k] / cpu:.0f}" if cpu and k in x else "–" for k in BELT_SPLIT)
+        rows.append([params_str(b), fmt_time(b["stats"]["median"]), fmt_time(cpu),
+                     fmt_time(x.get("cpu_per_simulated_s")), split,
+                     *(x.get(k, "–") for k in ("steps", "newton_iterations", "nlu",
+                                               "rejected_steps")),
+                     *(fmt_value(k, x[k]) if x.get(k) is not None else "–" for k in keys)])
+    return md_table(["params", "median", "integration CPU", "CPU / simulated s",
+                     "elastic / contact / lin. alg. / rest, %", "steps", "Newton its",
+                     "factorisations", "rejected", *keys], rows)
+
+
+def belt_sections(benches) -> list:
+    parts = []
+    table = belt_table(benches, "test_belt_drive", ("omega_ratio_steady",))
+    if table:
+        parts += ["## Belt drive (2D), 1 s", "",
+                  "`SCENES['belt2d'].execute({n_elements})` (thesis 3.3, Table 3.1; dt 2.5e-4 s, "
+                  "generalised-α). The split of the integration time is estimated from per-call "
+                  "kernel costs times call counts (`python -m benchmarks.belt_profile`).", "",
+                  table, ""]
+    table = belt_table(benches, "test_belt3d_drive",
+                       ("slip_driven", "membrane_tight_N", "membrane_slack_N"))
+    if table:
+        parts += ["## Belt drive (3D plates), Model 2, 1.2 s", "",
+                  "`SCENES['belt3d'].execute({n_elements, contact_points})` (thesis 4.6, Table 4.1 "
+                  "Model 2; dt 1e-4 s, generalised-α, from the settled belt; one round). CPU per "
+                  "simulated second averages ramp-up and full speed. Split as for the 2D drive "
+                  "(`python -m benchmarks.belt3d_profile`); tensions are the membrane's axial "
+                  "force, span means, N.", "", table, ""]
+    return parts
+
+
 def machine_section(data) -> str:
     mi = data.get("machine_info", {})
     am = mi.get("ancf_machine")
@@ -279,6 +325,7 @@ def render(data, json_name: str, out_dir: Path = DEFAULT_OUT.parent) -> str:
                   "`ratio lin/OS` = median(linear) / median(Omar–Shabana); the paired ratio is the "
                   "median of the per-round ratios.", "", ratios, ""]
     parts += dynamics_sections(benches, out_dir)
+    parts += belt_sections(benches)
     parts += ["## Also in `make bench`", "",
               "- [core_profile.md](core_profile.md): one Newton iteration split into gather, kernel, "
               "scatter, factorisation and solve for 64-4096 elements, scaling exponents, the "

@@ -21,3 +21,18 @@ def test_summary_has_table_2_5_and_scaling(tmp_path):
     assert "| 4 | dop853 | 1 s | 1.5 s | **0.667** |" in text and "0.65" in text
     assert "dop853 ∝ n^1.00" in text and "| 32 | 8 s | 9 |" in text
     assert (tmp_path / "cost_per_simulated_second.png").is_file()
+
+
+def test_summary_has_belt_drives(tmp_path):
+    split = {"elastic_s": 2.0, "contact_s": 3.0, "linear_algebra_s": 1.0, "other_s": 4.0}
+    counts = {"steps": 7, "newton_iterations": 30, "nlu": 9, "rejected_steps": 1}
+    benches = [
+        _bench("test_belt_drive", {"n": 20}, 0.6, {"integration_cpu_s": 10.0, **split, **counts,
+                                                     "omega_ratio_steady": 0.999}),
+        _bench("test_belt3d_drive", {"n": 20, "points": 81}, 12.0,
+               {"integration_cpu_s": 10.0, "cpu_per_simulated_s": 10.0 / 1.2, **split, **counts,
+                "slip_driven": 0.1, "membrane_tight_N": 70.0, "membrane_slack_N": None})]
+    text = summarize.render({"benchmarks": benches, "machine_info": {}}, "b.json", tmp_path)
+    assert "## Belt drive (2D), 1 s" in text and "## Belt drive (3D plates), Model 2, 1.2 s" in text
+    assert "| n=20 | 600 ms | 10 s | – | 20 / 30 / 10 / 40 | 7 | 30 | 9 | 1 | 0.999 |" in text
+    assert "| n=20, points=81 | 12 s | 10 s | 8.33 s | 20 / 30 / 10 / 40 | 7 | 30 | 9 | 1 | 0.1 | 70 | – |" in text
