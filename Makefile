@@ -28,4 +28,4 @@ bench: $(STAMP)
 	$(PY) -m benchmarks.peers_belt
 
 clean:
-	rm -rf $(VENV) .pytest_cache .benchmarks
+	rm -rf $(VENV) .pytest_cache .benchmarks "$${XDG_CACHE_HOME:-$$HOME/.cache}/ancf-bench"

@@ -66,3 +66,14 @@ def test_no_import_cycles():
     assert len(graph) > 30  # the walk found the project
     cycles = [c for m in sorted(graph) if (c := _cycle_through(graph, m))]
     assert not cycles, " | ".join(" -> ".join(c) for c in cycles[:5])
+
+
+def test_numba_cache_follows_the_sources(tmp_path):
+    """Any edit of a source starts a fresh numba cache (a cached caller would otherwise keep
+    the old code of the kernels it compiles in); unchanged sources reuse theirs."""
+    import ancf
+    (tmp_path / "a.py").write_text("x = 1\n")
+    first = ancf.numba_cache_dir(tmp_path)
+    assert ancf.numba_cache_dir(tmp_path) == first and first.parent.name == "ancf-bench"
+    (tmp_path / "a.py").write_text("x = 2\n")
+    assert ancf.numba_cache_dir(tmp_path) != first
