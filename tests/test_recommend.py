@@ -165,3 +165,17 @@ def test_recommend_belt2d_meets_the_tolerance(capsys):
     assert cheaper is None or cheaper["error"] > 0.05
     params = {k: v for k, v in a["params"].items() if v is not None}  # None: computed
     assert _rerun_error(capsys, "belt2d", params, "self") == pytest.approx(a["error"], rel=1e-9)
+
+
+def test_recommend_belt3d_answers_with_bechtel_as_reference(capsys):
+    """belt3d over its first 0.02 s (the belt settled at rest, driver not yet turning,
+    omega_final = 1 rad/s and no torque for Bechtel's steady belt): the grid of plates x
+    contact points against Bechtel's tensions (both 50 N); every run meets 2 % and the
+    cheapest is chosen by counted work."""
+    rc, out, _ = _cli(capsys, "recommend", "belt3d", "--tol", "0.02", "--json", "--no-progress",
+                      "--workers", "2", "--set", "t_end=0.02", "--set", "output_dt=0.01",
+                      "--set", "steady_window=0.01", "--set", "omega_final=1",
+                      "--set", "Ta_max=0")
+    a = json.loads(out)
+    assert rc == 0 and a["found"] and a["reference"] == "bechtel" and a["error"] <= 0.02
+    assert a["evidence"]["runs"] == 9 and "contact points per plate" in a["message"]
