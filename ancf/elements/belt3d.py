@@ -72,7 +72,7 @@ from numba import njit
 from ancf.elements import _belt3d_generated as gen
 from ancf.elements import _generated as shape_gen
 from ancf.elements.basis import consistent_mass
-from ancf.elements.compiled_element import BeltElement
+from ancf.elements.compiled_element import BeltElement, add_point_tangent
 from ancf.quadrature import RectangularSection, gauss01
 
 _NV = 25    # point variables of the density
@@ -292,24 +292,6 @@ def _point_jacobian(BX, BXX, e, q, z, inv_l, Ee, gyI, gzI, gyJ, gzJ, Jv):
 
 
 @njit(cache=True)
-def _add_point_tangent(Ke, ww, Jv, H, HJ):
-    """Ke += ww Jv^T H Jv (upper triangle)."""
-    nv, nd = Jv.shape
-    for i in range(nv):
-        for b in range(nd):
-            acc = 0.0
-            for j in range(nv):
-                acc += H[i, j] * Jv[j, b]
-            HJ[i, b] = ww * acc
-    for a in range(nd):
-        for b in range(a, nd):
-            acc = 0.0
-            for i in range(nv):
-                acc += Jv[i, a] * HJ[i, b]
-            Ke[a, b] += acc
-
-
-@njit(cache=True)
 def _add_nodal_curvature(Ke, node, w, hy, hz):
     """Ke += the second derivatives of a node's nodal quantities times their
     accumulated weights w = (s^y, s^z, eps_yy, eps_zz, eps_yz)."""
@@ -361,7 +343,7 @@ def gradient_tangent(E, data, want_K, g, K):
                     acc += Jv[i, b] * gw[i]
                 g[e, b] += ww * acc
             if want_K:
-                _add_point_tangent(Ke, ww, Jv, H, HJ)
+                add_point_tangent(Ke, ww, Jv, H, HJ)
                 wI[0] += ww * ((1.0 - z) * gw[18] - inv_l * gw[19])
                 wJ[0] += ww * (z * gw[18] + inv_l * gw[19])
                 wI[1] += ww * ((1.0 - z) * gw[20] - inv_l * gw[21])

@@ -6,10 +6,30 @@ module-level kernels
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
 from ancf.elements.basis import family_shapes
 
 _NO_TANGENT = np.zeros((0, 0, 0))
+
+
+@njit(cache=True)
+def add_point_tangent(Ke, ww, Jv, H, HJ):
+    """Ke += ww Jv^T H Jv (upper triangle): a point's density Hessian H in its point
+    variables chained to the element coordinates by Jv (the belt elements' kernels)."""
+    nv, nd = Jv.shape
+    for i in range(nv):
+        for b in range(nd):
+            acc = 0.0
+            for j in range(nv):
+                acc += H[i, j] * Jv[j, b]
+            HJ[i, b] = ww * acc
+    for a in range(nd):
+        for b in range(a, nd):
+            acc = 0.0
+            for i in range(nv):
+                acc += Jv[i, a] * HJ[i, b]
+            Ke[a, b] += acc
 
 
 def check(name: str, value, ok, allowed: str) -> None:

@@ -38,7 +38,7 @@ from numba import njit
 from ancf.elements import _dufva_generated as gen
 from ancf.elements import _generated as shape_gen
 from ancf.elements.basis import consistent_mass
-from ancf.elements.compiled_element import BeltElement
+from ancf.elements.compiled_element import BeltElement, add_point_tangent
 from ancf.quadrature import RectangularSection, gauss01
 
 _NODE = 6  # coordinates per node: r, r_x, r_y
@@ -112,24 +112,6 @@ def _add_nodal_curvature(Ke, bI, bJ, hI, hJ, yI, yJ):
 
 
 @njit(cache=True)
-def _add_point_tangent(Ke, ww, Jv, H, HJ):
-    """Ke += ww Jv^T H Jv (upper triangle)."""
-    nv, nd = Jv.shape
-    for i in range(nv):
-        for b in range(nd):
-            acc = 0.0
-            for j in range(nv):
-                acc += H[i, j] * Jv[j, b]
-            HJ[i, b] = ww * acc
-    for a in range(nd):
-        for b in range(a, nd):
-            acc = 0.0
-            for i in range(nv):
-                acc += Jv[i, a] * HJ[i, b]
-            Ke[a, b] += acc
-
-
-@njit(cache=True)
 def _nodal_shear_sine(E, e, node, want_K, grad, hess):
     """(sin gamma)^K of node 0 (I) or 1 (J), its gradient in (r_x, r_y) into grad (4,)
     and, if want_K, its Hessian into hess (4, 4)."""
@@ -173,7 +155,7 @@ def gradient_tangent(E, data, want_K, g, K):
                     acc += Jv[i, b] * gw[i]
                 g[e, b] += ww * acc
             if want_K:
-                _add_point_tangent(Ke, ww, Jv, H, HJ)
+                add_point_tangent(Ke, ww, Jv, H, HJ)
                 bI += ww * ((1.0 - z) * gw[4] - inv_l * gw[5])
                 bJ += ww * (z * gw[4] + inv_l * gw[5])
                 wI += ww * (1.0 - z) * gw[6]

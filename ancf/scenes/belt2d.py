@@ -22,7 +22,7 @@ import numpy as np
 
 from ancf.belt_drive import BeltDrive, BeltSpec
 from ancf.belt_post import sample, span_midpoint, span_tension, spans
-from ancf.inputs import MAX_STEPS, following, intervals
+from ancf.inputs import MAX_STEPS, intervals
 from ancf.scenes import belt_common as bc
 from ancf.scenes.base import Param, Scene, SceneResult
 from ancf.solvers.belt_dynamics import BeltOptions, simulate
@@ -51,14 +51,7 @@ def params() -> tuple:
         Param("rtol", 1e-6, float, "-", "relative tolerance (bdf)", lo=1e-12, hi=0.1),
         Param("atol", 1e-9, float, "-", "absolute tolerance (bdf; m, m/s, rad, rad/s)", lo=1e-15,
               hi=1.0),
-        Param("dt", 2.5e-4, float, "s", "time step (Exudyn's belt example uses the same)", lo=1e-7, hi=1e-2),
-        Param("rho_inf", 0.5, float, "-", "generalized-alpha spectral radius at infinite "
-              "frequency", lo=0, hi=1),
-        Param("newton_tol", 1e-7, float, "-", "Newton tolerance on the position increment "
-              "relative to 1 + |q|", lo=1e-14, hi=1e-3),
-        Param("t_end", 1.0, float, "s", "simulated time", lo=0, lo_open=True, hi=100),
-        Param("output_dt", following(0.005, "t_end"), float, "s", "sampling interval "
-              "(default 0.005 s, at most t_end)", lo=0, lo_open=True, hi=10),
+    ) + bc.march_params(2.5e-4, "time step (Exudyn's belt example uses the same)", 1.0) + (
         Param("max_steps", 400_000, int, doc="step budget (beyond it: not converged)", lo=1,
               hi=MAX_STEPS),
     ))

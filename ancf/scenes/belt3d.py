@@ -36,7 +36,7 @@ from ancf.belt3d_post import MEASURES, end_state
 from ancf.belt_path import TwoPulleyPath
 from ancf.contact3d import SUPPORTED_RULES
 from ancf.inputs import MAX_STEPS, following, intervals
-from ancf.scenes.belt_common import check_belt_length, check_steps, progress
+from ancf.scenes.belt_common import check_belt_length, check_steps, march_params, progress
 from ancf.scenes.base import InputError, Param, Scene, SceneResult
 from ancf.solvers.belt_dynamics import BeltOptions, simulate
 from ancf.solvers.belt_pretension import settle
@@ -102,14 +102,7 @@ def params() -> tuple:
               "'laid': on the wrapped path", choices=("settled", "laid")),
         Param("integrator", "generalized-alpha", str, doc="time integrator",
               choices=("generalized-alpha",)),
-        Param("dt", 1e-4, float, "s", "time step", lo=1e-7, hi=1e-2),
-        Param("rho_inf", 0.5, float, "-", "generalized-alpha spectral radius at infinite "
-              "frequency", lo=0, hi=1),
-        Param("newton_tol", 1e-7, float, "-", "Newton tolerance on the position increment "
-              "relative to 1 + |q|", lo=1e-14, hi=1e-3),
-        Param("t_end", 1.2, float, "s", "simulated time", lo=0, lo_open=True, hi=100),
-        Param("output_dt", following(0.005, "t_end"), float, "s", "sampling interval "
-              "(default 0.005 s, at most t_end)", lo=0, lo_open=True, hi=10),
+    ) + march_params(1e-4, "time step", 1.2) + (
         Param("steady_window", following(0.1, "t_end"), float, "s", "window before t_end over "
               "which the driven slip is averaged", lo=0, lo_open=True, hi=100),
         Param("max_steps", 400_000, int, doc="step budget (beyond it: not converged)", lo=1,

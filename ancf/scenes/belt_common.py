@@ -7,7 +7,7 @@ import sys
 
 from ancf.belt_path import TwoPulleyPath
 from ancf.contact import SUPPORTED_POINTS
-from ancf.inputs import MAX_STEPS, check_sampling
+from ancf.inputs import MAX_STEPS, check_sampling, following
 from ancf.scenes.base import InputError, Param
 
 #: Table 3.1
@@ -106,3 +106,18 @@ def contact_params(gauss_points=7) -> tuple:
               choices=SUPPORTED_POINTS),
     )
 
+
+
+def march_params(dt: float, dt_doc: str, t_end: float) -> tuple:
+    """The generalised-alpha march's parameters of the belt scenes (dt, rho_inf,
+    newton_tol, t_end, output_dt)."""
+    return (
+        Param("dt", dt, float, "s", dt_doc, lo=1e-7, hi=1e-2),
+        Param("rho_inf", 0.5, float, "-", "generalized-alpha spectral radius at infinite "
+              "frequency", lo=0, hi=1),
+        Param("newton_tol", 1e-7, float, "-", "Newton tolerance on the position increment "
+              "relative to 1 + |q|", lo=1e-14, hi=1e-3),
+        Param("t_end", t_end, float, "s", "simulated time", lo=0, lo_open=True, hi=100),
+        Param("output_dt", following(0.005, "t_end"), float, "s", "sampling interval "
+              "(default 0.005 s, at most t_end)", lo=0, lo_open=True, hi=10),
+    )
