@@ -45,7 +45,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from ancf.scenes.base import InputError, Param
+from ancf.common.params import InputError, Param
 
 #: Table 4.1, Model 2: R (m), mu (-), omega_0 (rad/s), rho (kg/m^3), w and h (m)
 MODEL2 = {"R": 0.05, "mu": 0.6, "omega": 500.0, "rho": 166.667, "w": 0.04, "h": 0.003}

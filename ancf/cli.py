@@ -12,13 +12,13 @@ import math
 import signal
 import sys
 
-from ancf.diagnostics import numerical_warnings
-from ancf.scenes.base import InputError
-from ancf.strict_json import dumps
+from ancf.common.diagnostics import numerical_warnings
+from ancf.common.params import InputError
+from ancf.common.strict_json import dumps
 
 
 def _registries():
-    from analytic.references import REFERENCES
+    from ancf.scenes.analytic import REFERENCES
     from ancf.scenes import SCENES
     return SCENES, REFERENCES
 
@@ -61,9 +61,9 @@ def _run(registry, kind, args) -> int:
 
 def _sweep(args) -> int:
     from ancf.scenes import SCENES
-    from ancf.references import spec
-    from ancf.inputs import validate_fixed
-    from ancf.sweep import parse_grid, run_sweep
+    from ancf.study.references import spec
+    from ancf.common.inputs import validate_fixed
+    from ancf.study.sweep import parse_grid, run_sweep
     if args.name not in SCENES:
         raise InputError(f"sweep: unknown scene {args.name!r}; allowed: {', '.join(SCENES)}")
     grid = parse_grid(args.name, args.grid) if args.grid else None
@@ -93,7 +93,7 @@ def _sweep(args) -> int:
 
 
 def _recommend(args) -> int:
-    from ancf.recommend import public, recommend
+    from ancf.study.recommend import public, recommend
     res = recommend(args.name, args.tol, fixed=_parse_sets(args.set), reference=args.reference,
                     data=args.data, workers=args.workers, scheduler=args.scheduler,
                     time_limit=args.time_limit, progress=not args.no_progress)

@@ -22,9 +22,9 @@ import sys
 
 import numpy as np
 
-from ancf.contact3d import contact_forces3d
+from ancf.belts.contact3d import contact_forces3d
 from ancf.elements import plate36
-from ancf.solvers.belt_assembly import gather
+from ancf.belts.assembly import gather
 from benchmarks.belt_profile import _per_call, breakdown, linear_algebra_costs
 
 T_ENDS = (0.3, 1.2)

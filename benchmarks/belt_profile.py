@@ -20,10 +20,10 @@ import time
 
 import numpy as np
 
-from ancf.contact import contact_forces
+from ancf.belts.contact2d import contact_forces
 from ancf.elements.dufva2d import gradient_tangent
 from ancf.solvers import banded
-from ancf.solvers.belt_assembly import gather
+from ancf.belts.assembly import gather
 
 REPEATS = 300
 

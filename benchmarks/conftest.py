@@ -15,7 +15,7 @@ def ancf_machine() -> dict:
     import numpy as np
     import scipy
 
-    from ancf.machine import cpu_model
+    from ancf.common.machine import cpu_model
     cpu = cpu_model()
     try:
         usable = len(os.sched_getaffinity(0))

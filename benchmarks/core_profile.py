@@ -23,7 +23,7 @@ import numpy as np
 
 from ancf.scenes import SCENES
 from ancf.solvers.linear import factor, stability
-from ancf.pattern import scatter
+from ancf.core.pattern import scatter
 from benchmarks.conftest import ancf_machine
 
 ROOT = Path(__file__).resolve().parents[1]

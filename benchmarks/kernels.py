@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from ancf.constraints import Elimination
+from ancf.core.constraints import Elimination
 from ancf.elements.catalogue import ELEMENTS as CATALOGUE_ELEMENTS
 from ancf.scenes import SCENES
 from ancf.scenes import beam_static as bs

@@ -53,7 +53,7 @@ import sys
 import time
 from pathlib import Path
 
-from ancf.machine import cpu_model
+from ancf.common.machine import cpu_model
 from benchmarks import peers_report
 
 ROOT = Path(__file__).resolve().parents[1]

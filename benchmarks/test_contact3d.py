@@ -1,5 +1,5 @@
 """3D plate-pulley contact kernel (thesis 4.5, Eqs 4.43-4.45): one call of
-:func:`ancf.contact3d.contact_forces3d` with and without the exact Jacobians.
+:func:`ancf.belts.contact3d.contact_forces3d` with and without the exact Jacobians.
 
 The state is a Model 1 belt (Table 4.1: R = 0.1 m, width 0.08 m, k_p, c_p, nu_s, mu)
 of 20 ``plate36`` elements, one across the width, laid on the two-pulley path (spans
@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ancf.contact3d import contact_forces3d, contact_points3d, contact_state3d
+from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
 
 N_ELEMENTS, RULE, ROUNDS = 20, 81, 200
 R, WIDTH, PEN, SPEED = 0.10, 0.08, 1e-3, 2.0          # m, m, m, m/s

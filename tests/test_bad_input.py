@@ -9,16 +9,17 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from analytic.references import REFERENCES
-from ancf import accuracy
-from ancf.diagnostics import numerical_warnings
-from ancf.inputs import MAX_INTERVALS, MAX_STEPS
+from ancf.scenes.analytic import REFERENCES
+from ancf.scenes import accuracy
+from ancf.common.diagnostics import numerical_warnings
+from ancf.common.inputs import MAX_INTERVALS, MAX_STEPS
 from ancf.scenes import SCENES
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import InputError, SceneResult
-from ancf.strict_json import dumps
-from ancf.validity import AREA_FACTOR, check_dynamic, check_static, deformation_dets, min_det
+from ancf.common.params import InputError
+from ancf.scenes.base import SceneResult
+from ancf.common.strict_json import dumps
+from ancf.core.validity import AREA_FACTOR, check_dynamic, check_static, deformation_dets, min_det
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -19,12 +19,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ancf import beam3d
-from ancf import elements3d_checks as checks
-from ancf.assembly import Assembly, ElementGroup
+from ancf.models import beam3d
+from ancf.checks import elements3d as checks
+from ancf.core.assembly import Assembly, ElementGroup
 from ancf.elements.linear3d import LinearBeam3D
-from ancf.mesh import BeamMesh
-from ancf.quadrature import RectangularSection, gauss01
+from ancf.core.mesh import BeamMesh
+from ancf.core.quadrature import RectangularSection, gauss01
 from ancf.scenes import SCENES
 
 E_MOD, NU, RHO, L = 2.07e11, 0.3, 7850.0, 2.0
@@ -170,7 +170,7 @@ def test_mass_is_the_exact_integral(scheme):
 
 # ------------------------------------------------------- validation against the 2D beam
 def test_3d_solve_takes_the_generic_newton_path():
-    """ancf.beam3d.solve (used by the checks below): converged, not the planar compiled path."""
+    """ancf.models.beam3d.solve (used by the checks below): converged, not the planar compiled path."""
     p = SCENES["cantilever"].resolve({"element": "linear", "F": -1000.0})
     res, _, _, asm = beam3d.solve({**p, "element": "linear3d"}, beam3d.clamp,
                                   {(p["n_elements"], "r", 2): p["F"]})
@@ -184,7 +184,7 @@ def test_3d_solve_takes_the_generic_newton_path():
 def test_bending_in_a_principal_plane_reproduces_the_2d_scenes(case, scheme, axis):
     """The scene's load along -y (then along -z) on the square section: in-plane nodal
     displacements (r and the slope in the plane) equal the 2D element's to 1e-10 of the
-    largest, and the out-of-plane ones vanish to 1e-10 of it (ancf.elements3d_checks)."""
+    largest, and the out-of-plane ones vanish to 1e-10 of it (ancf.checks.elements3d)."""
     inplane, outplane = checks.principal_plane(case, scheme, axis)
     assert inplane <= 1e-10 and outplane <= 1e-10
 
@@ -216,7 +216,7 @@ def test_torsion_stiffness_is_ks_G_Ip_not_G_J(scheme, ks):
     the twist phi(x) = T x / (ks G I_p), I_p = I_y + I_z, at every node, and the
     St-Venant stiffness G J over the element's is J / (ks I_p) (0.8436 at ks = 1).
     T gives a tip twist of 1e-6 rad, so the geometric nonlinearity is ~1e-12;
-    asserted 1e-8 relative (ancf.elements3d_checks.torsion)."""
+    asserted 1e-8 relative (ancf.checks.elements3d.torsion)."""
     t = checks.torsion(scheme, ks)
     assert t["twist_error"] <= 1e-8
     assert t["ratio"] == pytest.approx(t["J_over_ks_Ip"], rel=1e-8)

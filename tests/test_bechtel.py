@@ -10,10 +10,10 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 from analytic import bechtel
-from analytic.references import REFERENCES
+from ancf.scenes.analytic import REFERENCES
 from ancf.cli import main
-from ancf.scenes.base import InputError
-from ancf.schemas import schema, validate
+from ancf.common.params import InputError
+from ancf.study.schemas import schema, validate
 
 DEFAULTS = REFERENCES["bechtel"].resolve({})
 #: DOP853 tolerance of the second solution, and what it must reproduce (relative)

@@ -9,7 +9,7 @@ reduction to the planar element (:mod:`ancf.elements.dufva2d`) in both principal
 planes, the alpha factors, Timoshenko's cantilever and the argument checks.
 
 Clamp: position, r_y and r_z of the root node (the cross-section; r_x free, as the
-planar element's clamp in ancf/belt_element_checks.py).
+planar element's clamp in ancf/checks/belt_element.py).
 """
 from __future__ import annotations
 
@@ -17,13 +17,13 @@ import numpy as np
 import pytest
 
 from analytic import belt3d, timoshenko
-from ancf import belt_element_checks as planar
-from ancf.assembly import Assembly, ElementGroup
-from ancf.constraints import Elimination
+from ancf.checks import belt_element as planar
+from ancf.core.assembly import Assembly, ElementGroup
+from ancf.core.constraints import Elimination
 from ancf.elements import _generated as shape_gen
 from ancf.elements.belt3d import DufvaBelt3D
-from ancf.mesh import BeamMesh
-from ancf.quadrature import RectangularSection, gauss01
+from ancf.core.mesh import BeamMesh
+from ancf.core.quadrature import RectangularSection, gauss01
 from ancf.solvers.static import NewtonOptions, solve_static
 
 MODEL1, SECTION1 = planar.MODEL1, planar.SECTION1  # L = 2 m, b = h = 0.1 m, E = 2.07e11 Pa

@@ -1,16 +1,16 @@
 """The 3D belt drive's acceptance checks (issue 14; reports/belt3d.md), each computed by
-:mod:`ancf.belt3d_checks`.  One full Model 2 run (1.2 s simulated) serves the first six;
+:mod:`ancf.checks.belt3d`.  One full Model 2 run (1.2 s simulated) serves the first six;
 Model 1 runs through its acceleration.  The contact-point and element-count checks need
 four more full runs (minutes): they are in the report, and here their cheap counterpart
 (the settled pre-tension) converges."""
 import numpy as np
 import pytest
 
-from ancf import belt3d_checks as bc
-from ancf.belt3d_drive import Belt3DDrive
-from ancf.belt3d_post import line_sample, span_means
+from ancf.checks import belt3d as bc
+from ancf.belts.drive3d import Belt3DDrive
+from ancf.belts.post3d import line_sample, span_means
 from ancf.scenes import belt3d as b3
-from ancf.solvers.belt_pretension import settle
+from ancf.belts.pretension import settle
 
 
 @pytest.mark.parametrize("check", [bc.steady_state, bc.torque_balance, bc.friction_moment,

@@ -1,16 +1,16 @@
 """The 3D belt drive (issue 14): model, pulley laws, pre-tension and short runs; the long
-Model 1 / Model 2 runs are in reports/belt3d.md (ancf.belt3d_checks)."""
+Model 1 / Model 2 runs are in reports/belt3d.md (ancf.checks.belt3d)."""
 import math
 
 import numpy as np
 import pytest
 
-from ancf.belt3d_drive import Belt3DDrive, ring_dofmap
-from ancf.belt3d_post import line_sample, membrane_force, span_means
-from ancf.contact3d import contact_state3d
-from ancf.pulleys import driver_shift, opposing_torque
+from ancf.belts.drive3d import Belt3DDrive, ring_dofmap
+from ancf.belts.post3d import line_sample, membrane_force, span_means
+from ancf.belts.contact3d import contact_state3d
+from ancf.belts.pulleys import driver_shift, opposing_torque
 from ancf.scenes import belt3d as b3
-from ancf.solvers.belt_pretension import settle
+from ancf.belts.pretension import settle
 
 
 def test_ring_closes_on_node_zero_without_constraints():

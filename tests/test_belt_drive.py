@@ -1,18 +1,18 @@
 """The 2D belt drive against thesis section 3.3 (Figs 3.5-3.21, Table 3.1, Eqs 3.29-3.30):
-one test per acceptance check of :mod:`ancf.belt_checks` (the report's table uses the
+one test per acceptance check of :mod:`ancf.checks.belt2d` (the report's table uses the
 same functions), the path geometry, the pulley laws and bad input."""
 import math
 
 import numpy as np
 import pytest
 
-from ancf import belt_checks as bc
-from ancf.belt_path import TwoPulleyPath
+from ancf.checks import belt2d as bc
+from ancf.belts.path import TwoPulleyPath
 from ancf.cli import main
-from ancf.pulleys import driver_omega, opposing_torque
+from ancf.belts.pulleys import driver_omega, opposing_torque
 from ancf.scenes import SCENES
 from ancf.scenes import belt_common as common
-from ancf.scenes.base import InputError
+from ancf.common.params import InputError
 
 TABLE = TwoPulleyPath((-0.191441, 0.0), 0.08125, (0.191441, 0.0), 0.08125)
 

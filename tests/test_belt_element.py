@@ -20,13 +20,13 @@ import numpy as np
 import pytest
 
 from analytic import dufva_belt, reissner, timoshenko
-from ancf.belt_element_checks import (CIRCLE_H_FOUR, MODEL1, REISSNER_TOL, SECTION1, cantilever,
+from ancf.checks.belt_element import (CIRCLE_H_FOUR, MODEL1, REISSNER_TOL, SECTION1, cantilever,
                                       circle_gap)
 from ancf.elements import _generated as shape_gen
 from ancf.elements.dufva2d import DufvaBelt2D
-from ancf.forces import EndMoment
-from ancf.mesh import BeamMesh
-from ancf.quadrature import gauss01
+from ancf.core.forces import EndMoment
+from ancf.core.mesh import BeamMesh
+from ancf.core.quadrature import gauss01
 from ancf.solvers.static import NewtonOptions, solve_static
 
 

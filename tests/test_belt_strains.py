@@ -10,8 +10,8 @@ import math
 import numpy as np
 import pytest
 
-from ancf.belt_strains import planar_belt
-from ancf.mesh import BeamMesh
+from ancf.belts.strains import planar_belt
+from ancf.core.mesh import BeamMesh
 
 SLOTS = ("r", "r_x", "r_y")
 K = 1e4  # N

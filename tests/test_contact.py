@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ancf.contact import SUPPORTED_POINTS, contact_forces, contact_points, contact_state
+from ancf.belts.contact2d import SUPPORTED_POINTS, contact_forces, contact_points, contact_state
 from ancf.elements._generated import cubic2d_S
 
 H = 1e-6

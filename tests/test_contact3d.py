@@ -1,5 +1,5 @@
 """Plate-pulley contact in 3D (thesis 4.5, Eqs 4.43-4.45): Jacobians, the point law,
-analytic wrapped strips, the planar reduction to ancf/contact.py, the bounding test,
+analytic wrapped strips, the planar reduction to ancf/belts/contact2d.py, the bounding test,
 input.
 
 Finite-difference tolerance as in tests/test_contact.py: within one branch of the law
@@ -16,8 +16,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ancf.contact import contact_forces, contact_points, contact_state
-from ancf.contact3d import (SUPPORTED_RULES, contact_forces3d, contact_points3d,
+from ancf.belts.contact2d import contact_forces, contact_points, contact_state
+from ancf.belts.contact3d import (SUPPORTED_RULES, contact_forces3d, contact_points3d,
                             contact_state3d)
 from ancf.elements._generated import plate36_S
 
@@ -385,7 +385,7 @@ def test_sliding_strip_follows_the_creep_rate_law(omega, ratio, branch):
 def test_plane_motion_reduces_to_the_2d_law_per_unit_width():
     """A strip on a pulley with axis z, moving in the x-y plane: per unit width the
     normal force, friction, sliding speed, moment and nodal forces equal those of
-    ancf/contact.py for the same centre line, with k_p, c_p, nu_s divided by the width."""
+    ancf/belts/contact2d.py for the same centre line, with k_p, c_p, nu_s divided by the width."""
     n, b, nel = 7, 0.04, 6
     prm2 = np.array([1e6, 50.0, MU, 1e3])               # N/m^2, N s/m^2, -, kg/(m s)
     prm3 = prm2 / np.array([b, b, 1.0, b])               # N/m^3, N s/m^3, -, kg/(m^2 s)
@@ -462,7 +462,7 @@ def test_bernstein_control_points_reproduce_the_plate_field():
     a (b); the Bernstein weights are >= 0 and sum to one (the convex hull)."""
     from math import comb
 
-    from ancf.contact3d import _CONTROLS
+    from ancf.belts.contact3d import _CONTROLS
     rng = np.random.default_rng(5)
     a, b = 0.17, 0.06
     xi, eta = rng.uniform(0, 1, 300), rng.uniform(0, 1, 300)

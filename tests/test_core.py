@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 import scipy.linalg as sla
 
-from ancf.constraints import Elimination
-from ancf.pattern import ReducedPattern
+from ancf.core.constraints import Elimination
+from ancf.core.pattern import ReducedPattern
 from ancf.scenes import SCENES
 from ancf.scenes import beam_static as bs
 from ancf.scenes import pendulum, spinning_beam
@@ -140,8 +140,8 @@ def test_compiled_alpha_matches_python_stepper(scene, setup, overrides, fewer):
 
 
 def test_registry_allocates_named_blocks():
-    from ancf.mesh import BeamMesh
-    from ancf.registry import Registry
+    from ancf.core.mesh import BeamMesh
+    from ancf.core.registry import Registry
     reg = Registry()
     beam = BeamMesh(2.0, 4, ("r", "r_y"), registry=reg, name="belt")
     theta = reg.add("pulley.theta", 1, "rigid")
@@ -153,8 +153,8 @@ def test_registry_allocates_named_blocks():
 
 def _ring(cls, n, radius=0.5):
     """A closed ring of n elements on a circle (a wrapped reference geometry)."""
-    from ancf.mesh import BeamMesh
-    from ancf.quadrature import RectangularSection
+    from ancf.core.mesh import BeamMesh
+    from ancf.core.quadrature import RectangularSection
 
     def circle(s):
         a = np.asarray(s) / radius
@@ -184,7 +184,7 @@ def test_gravity_in_statics_matches_timoshenko_uniform_load():
     """A force term (gravity) in the static solver: a cantilever under its own weight
     against the closed-form Timoshenko tip deflection (small load: nonlinearity ~1e-7)."""
     from analytic.timoshenko_cantilever import tip_deflection
-    from ancf.forces import Forces, Gravity
+    from ancf.core.forces import Forces, Gravity
     from ancf.solvers.static import solve_static
 
     p = SCENES["cantilever"].resolve({"n_elements": 64, "nu": 0.0})

@@ -16,15 +16,16 @@ import math
 import numpy as np
 import pytest
 
-from analytic.dynamics_refs import DYNAMIC_REFERENCES, rigid_pendulum, spinning_extension
-from ancf.constraints import Elimination
-from ancf.forces import Forces, Gravity
+from ancf.scenes.analytic import DYNAMIC_REFERENCES
+from analytic.dynamics_refs import rigid_pendulum, spinning_extension
+from ancf.core.constraints import Elimination
+from ancf.core.forces import Forces, Gravity
 from ancf.reports import published as pub
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
 from ancf.scenes import pendulum, spinning_beam
-from ancf.scenes.base import InputError
-from ancf.energy import energy_history
+from ancf.common.params import InputError
+from ancf.core.energy import energy_history
 from ancf.solvers.dynamics import integrate
 
 PEND, SPIN = pendulum.SCENE, spinning_beam.SCENE

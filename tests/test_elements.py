@@ -18,12 +18,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ancf.assembly import Assembly, ElementGroup
+from ancf.core.assembly import Assembly, ElementGroup
 from ancf.elements.catalogue import CONTRACT_ELEMENTS
 from ancf.elements.linear2d import LinearBeam2D
 from ancf.elements.omar_shabana import OmarShabana2D
-from ancf.mesh import BeamMesh
-from ancf.quadrature import RectangularSection
+from ancf.core.mesh import BeamMesh
+from ancf.core.quadrature import RectangularSection
 
 E_MOD, RHO = 2.07e11, 7850.0
 SECTION = RectangularSection(0.1, 0.1)

@@ -1,9 +1,9 @@
-"""One test per acceptance check of :mod:`ancf.elements3d_checks` (the table of
+"""One test per acceptance check of :mod:`ancf.checks.elements3d` (the table of
 reports/elements3d.md): the thin plate against Navier, Euler-Bernoulli and Reissner,
 the 3D beam against the planar scenes, superposition, St-Venant torsion, rigid motion."""
 import pytest
 
-from ancf import elements3d_checks as ec
+from ancf.checks import elements3d as ec
 
 
 def _check(prefix: str):

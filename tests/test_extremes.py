@@ -10,9 +10,9 @@ import math
 import pandas as pd
 import pytest
 
-from ancf import extremes
+from ancf.study import extremes
 from ancf.reports.extremes import axis_map
-from ancf.sweep import run_sweep
+from ancf.study.sweep import run_sweep
 
 ISSUE_AXES = {"slenderness", "poisson", "elements", "load", "spinning", "penalty", "nu_s",
               "time-steps", "load-steps", "stiff-steps"}

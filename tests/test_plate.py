@@ -26,11 +26,11 @@ import numpy as np
 import pytest
 
 from analytic import navier_plate, plate_thin
-from ancf import elements3d_checks as checks
-from ancf import plate_models
-from ancf.assembly import Assembly, ElementGroup
+from ancf.checks import elements3d as checks
+from ancf.models import plate as plate_models
+from ancf.core.assembly import Assembly, ElementGroup
 from ancf.elements.plate36 import Plate36
-from ancf.plate_mesh import SLOTS, PlateMesh
+from ancf.models.plate_mesh import SLOTS, PlateMesh
 
 STEEL = dict(h=0.01, E=2.1e11, nu=0.3)
 NAVIER_TOL = 0.01  # relative centre-deflection error of the finest mesh
@@ -148,7 +148,7 @@ def test_navier_double_series_matches_levy_single_series():
 
 
 def test_simply_supported_plate_converges_to_navier():
-    """Scene plate-square per mesh (ancf.elements3d_checks.plate_convergence)."""
+    """Scene plate-square per mesh (ancf.checks.elements3d.plate_convergence)."""
     rows = checks.plate_convergence((4, 8, 16))
     err = np.array([r["relative error"] for r in rows])
     assert abs(err[-1]) <= NAVIER_TOL
@@ -187,7 +187,7 @@ REISSNER_STRIP_TOL = 1e-3  # relative tip error of the 8 x 1 strip (large deflec
 
 def test_cantilever_strip_large_deflection_converges_to_reissner():
     """F = E I / L^2 bends the strip to a tip deflection of 0.30 L (scene plate-strip,
-    nu = 0, against the Reissner rod with shear switched off; ancf.elements3d_checks)."""
+    nu = 0, against the Reissner rod with shear switched off; ancf.checks.elements3d)."""
     err = [r["relative error"] for r in checks.strip_large((4, 8, 16))]
     assert err[1] <= REISSNER_STRIP_TOL and err[2] < err[1] < err[0], err
 

@@ -8,11 +8,11 @@ do not match are tested for the explanation the report gives (see reports/static
 import numpy as np
 import pytest
 
-from ancf.assembly import Assembly, ElementGroup
-from ancf.constraints import Elimination
+from ancf.core.assembly import Assembly, ElementGroup
+from ancf.core.constraints import Elimination
 from ancf.elements.linear2d import LinearBeam2D
-from ancf.mesh import BeamMesh
-from ancf.quadrature import RectangularSection
+from ancf.core.mesh import BeamMesh
+from ancf.core.quadrature import RectangularSection
 from ancf.reports import published as pub
 from ancf.scenes import SCENES
 from ancf.solvers.static import NewtonOptions, solve_static

@@ -5,11 +5,11 @@ import os
 
 import pytest
 
-from ancf import references
+from ancf.study import references
 from ancf.cli import main
-from ancf.recommend import recommend
-from ancf.selection import WORK_TIE
-from ancf.sweep import run_sweep
+from ancf.study.recommend import recommend
+from ancf.study.selection import WORK_TIE
+from ancf.study.sweep import run_sweep
 
 KEYS = {"scene", "tol", "params", "error", "reference", "cpu_time_s"}
 

@@ -11,9 +11,9 @@ from pathlib import Path
 
 import pytest
 
-from ancf.belt3d_checks import CHECK_NAMES as BELT3D_ROWS
-from ancf.belt_checks import GAUSS_CHECK
-from ancf.extremes import AXES, QUICK_SKIPPED
+from ancf.checks.belt3d import CHECK_NAMES as BELT3D_ROWS
+from ancf.checks.belt2d import GAUSS_CHECK
+from ancf.study.extremes import AXES, QUICK_SKIPPED
 from ancf.reports.__main__ import CHAPTERS
 
 PNG = b"\x89PNG\r\n\x1a\n"
@@ -130,7 +130,7 @@ def _expected() -> dict:
     """Every acceptance row of a quick report and its status."""
     out = {k: v for k, (_, v) in AGREES.items()}
     out.update(dict.fromkeys(QUICK_ONLY_SKIPPED, QUICK_SKIPPED))
-    from ancf.references import specs
+    from ancf.study.references import specs
     out.update({f"Speed–accuracy {name}: Pareto plot + cheapest-configuration table": "PASS"
                 for name in specs()})
     out.update({f"Extremes: {a.title}": _axis_status(a) for a in AXES})

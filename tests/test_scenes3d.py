@@ -9,7 +9,7 @@ import pytest
 
 from ancf.cli import main
 from ancf.scenes import SCENES
-from ancf.scenes.base import InputError
+from ancf.common.params import InputError
 
 NEW = ("plate-square", "plate-strip", "beam3d-cantilever")
 
@@ -83,5 +83,5 @@ def test_bad_input_is_one_line_naming_the_field(name, field, value, capsys):
 
 @pytest.mark.parametrize("name", NEW)
 def test_every_new_scene_has_a_reference(name):
-    from ancf.references import spec
+    from ancf.study.references import spec
     assert spec(name).reference().kind in ("analytic", "self")

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from ancf.schemas import RESULTS, registries, schema, schemas_markdown, validate
+from ancf.study.schemas import RESULTS, registries, schema, schemas_markdown, validate
 
 NAMES = list(registries())
 
@@ -68,4 +68,4 @@ def test_the_validator_rejects_what_the_schema_forbids():
 
 def test_published_schemas_are_the_generated_ones():
     path = Path(__file__).resolve().parents[1] / "reports" / "schemas.md"
-    assert path.read_text() == schemas_markdown(), "run `python -m ancf.schemas`"
+    assert path.read_text() == schemas_markdown(), "run `python -m ancf.study.schemas`"

@@ -1,14 +1,14 @@
-"""`ancf.selection` and `ancf.cost`: the cheapest run by counted work, so that the choice is
+"""`ancf.study.selection` and `ancf.study.cost`: the cheapest run by counted work, so that the choice is
 the same on every repeat and every machine (issue 15, item 11; used by the speed-accuracy
 tables and `ancf recommend`)."""
 import numpy as np
 import pandas as pd
 import pytest
 
-from ancf.cost import FEATURES, WEIGHTS, calibrate, counts, quadrature_points, with_work, work
+from ancf.study.cost import FEATURES, WEIGHTS, calibrate, counts, quadrature_points, with_work, work
 from ancf.reports.speed_accuracy import cheapest_table
-from ancf.selection import WORK_TIE, cheapest_first, model_size, tie_limit
-from ancf.sweep import run_sweep
+from ancf.study.selection import WORK_TIE, cheapest_first, model_size, tie_limit
+from ancf.study.sweep import run_sweep
 
 
 def _runs(work, cpu=None):

@@ -17,10 +17,10 @@ import sympy as sp
 from analytic import shape_functions as sf
 from analytic.shape_functions import FAMILIES, a, b, derive, l, x, y, z
 from ancf.elements.catalogue import CONTRACT_ELEMENTS
-from ancf.assembly import Assembly, ElementGroup
+from ancf.core.assembly import Assembly, ElementGroup
 from ancf.elements import _generated as gen
-from ancf.mesh import BeamMesh
-from ancf.quadrature import RectangularSection
+from ancf.core.mesh import BeamMesh
+from ancf.core.quadrature import RectangularSection
 
 E_MOD, NU, RHO = 2.07e11, 0.3, 7850.0
 SECTION = RectangularSection(0.1, 0.2)  # b (z) = 0.1 m, h (y) = 0.2 m

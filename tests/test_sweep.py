@@ -17,8 +17,8 @@ import pandas as pd
 import pytest
 
 from ancf.cli import main
-from ancf.scenes.base import InputError
-from ancf.sweep import expand, journal_path, parse_grid, read_rows, run_sweep
+from ancf.common.params import InputError
+from ancf.study.sweep import expand, journal_path, parse_grid, read_rows, run_sweep
 
 # 2 elements x 2 schemes x 8 element counts x 2 heights x 2 Poisson ratios = 128 runs
 GRID = ["element=linear,omar-shabana", "integration=thesis,exact", "n_elements=1,2,3,4,5,6,7,8",

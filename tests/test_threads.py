@@ -1,12 +1,12 @@
-"""The report generator and sweep workers run with one BLAS thread (`ancf.threads`), so
+"""The report generator and sweep workers run with one BLAS thread (`ancf.common.threads`), so
 their numbers agree with each other and do not depend on the machine's core count."""
 import os
 import subprocess
 import sys
 from pathlib import Path
 
-from ancf.sweep import _Runner
-from ancf.threads import BLAS_ENV
+from ancf.study.sweep import _Runner
+from ancf.common.threads import BLAS_ENV
 
 
 def test_report_generator_pins_one_blas_thread_before_numpy():

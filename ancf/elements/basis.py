@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf.quadrature import RectangularSection, gauss01
+from ancf.core.quadrature import RectangularSection, gauss01
 
 
 def family_shapes(family: str) -> dict:

@@ -3,7 +3,7 @@
 Nodal coordinates per node: ``r``, ``r_x``, ``r_y``, ``r_z`` (Eq. 4.25; family
 ``cubic3d``: cubic in x, linear in y and z), element coordinates ordered
 ``k * 3 + d`` (shape function k, component d).  Section: height ``h`` along y,
-width ``b`` along z (:class:`ancf.quadrature.RectangularSection`).
+width ``b`` along z (:class:`ancf.core.quadrature.RectangularSection`).
 
 Kinematics (Eqs 4.23-4.39) and the readings made of the printed text:
 
@@ -73,7 +73,7 @@ from ancf.elements import _belt3d_generated as gen
 from ancf.elements import _generated as shape_gen
 from ancf.elements.basis import consistent_mass
 from ancf.elements.compiled_element import BeltElement, add_point_tangent
-from ancf.quadrature import RectangularSection, gauss01
+from ancf.core.quadrature import RectangularSection, gauss01
 
 _NV = 25    # point variables of the density
 _NODE = 4   # shape functions per node: r, r_x, r_y, r_z

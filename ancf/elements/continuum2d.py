@@ -25,7 +25,7 @@ import numpy as np
 from ancf.elements.basis import Basis, consistent_mass, family_shapes
 from ancf.elements.green2d import GreenPlanar
 from ancf.elements.material import scheme_terms
-from ancf.quadrature import RectangularSection
+from ancf.core.quadrature import RectangularSection
 
 _NO_TANGENT = np.zeros((0, 0, 0))
 

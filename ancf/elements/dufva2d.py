@@ -39,7 +39,7 @@ from ancf.elements import _dufva_generated as gen
 from ancf.elements import _generated as shape_gen
 from ancf.elements.basis import consistent_mass
 from ancf.elements.compiled_element import BeltElement, add_point_tangent
-from ancf.quadrature import RectangularSection, gauss01
+from ancf.core.quadrature import RectangularSection, gauss01
 
 _NODE = 6  # coordinates per node: r, r_x, r_y
 

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ancf.quadrature import EXACT
+from ancf.core.quadrature import EXACT
 
 
 @dataclass(frozen=True)

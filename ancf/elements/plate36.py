@@ -29,7 +29,7 @@ from numba import njit
 from ancf.elements import _generated as shape_gen
 from ancf.elements import _plate_generated as gen
 from ancf.elements.compiled_element import CompiledElement, check, check_material
-from ancf.quadrature import gauss01
+from ancf.core.quadrature import gauss01
 
 _DERIVS = ("x", "y", "xx", "xy", "yy")  # point variables: r_x, r_y, r_xx, r_xy, r_yy
 

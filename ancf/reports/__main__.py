@@ -5,7 +5,7 @@ import sys
 import time
 from pathlib import Path
 
-from ancf.threads import one_blas_thread
+from ancf.common.threads import one_blas_thread
 
 one_blas_thread()  # before numpy: reproducible numbers and single-thread CPU times
 
@@ -22,7 +22,7 @@ from ancf.reports.elements3d import elements3d_chapter
 from ancf.reports import studies, tables
 from ancf.reports.output import configure, markdown_table, progress, run
 from ancf.reports.speed_accuracy import speed_accuracy_chapter
-from ancf.schemas import schemas_markdown
+from ancf.study.schemas import schemas_markdown
 
 
 def _analytic_investigation() -> str:

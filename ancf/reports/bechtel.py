@@ -13,7 +13,7 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from analytic import bechtel  # noqa: E402
-from analytic.references import REFERENCES  # noqa: E402
+from ancf.scenes.analytic import REFERENCES  # noqa: E402
 from ancf.reports.output import markdown_table, progress, save_figure, write_csv  # noqa: E402
 
 STIFFNESSES = (0.2e3, 25e3)  # N, the thesis's compliant and stiff belts (Figs 4.11-4.18, 4.4-4.5)

@@ -18,7 +18,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from analytic.dynamics_refs import DYNAMIC_REFERENCES  # noqa: E402
+from ancf.scenes.analytic import DYNAMIC_REFERENCES  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure,  # noqa: E402
                                  settings, write_csv)
 from ancf.scenes import pendulum, spinning_beam  # noqa: E402
@@ -144,7 +144,7 @@ def pendulum_energy(status: dict) -> list:
     status["Pendulum: energy deviation below 0.62e-4 J (4 elements)"] = _pass(dev < THESIS_ENERGY_DEVIATION)
     return ["## Energy balance (thesis Fig. 2.7, Eq. 2.34)\n",
             "Kinetic ½ ėᵀMė, gravitational −∫ρ g·r dV and strain energy, per element and summed "
-            "(`ancf/energy.py`), sampled every 0.01 s (per element: "
+            "(`ancf/core/energy.py`), sampled every 0.01 s (per element: "
             "`data/pendulum_energy_per_element.csv`).\n",
             "![energy components](figures/pendulum_energy.png)\n",
             markdown_table(df, 3), "",

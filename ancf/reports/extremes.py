@@ -1,7 +1,7 @@
 """Report chapter ``extremes.md``: the stability maps of the extremes study.
 
 The study (the axes, their grids and the diagnosis of every run) is
-:mod:`ancf.extremes`; this chapter runs each axis, turns its rows into a map (one cell
+:mod:`ancf.study.extremes`; this chapter runs each axis, turns its rows into a map (one cell
 per model and value: ✓ works, ≈ usable, ✗ locked or wrong, ⚠ a diagnosis), draws the
 slenderness figure and states the pinned numbers and the acceptance statuses.
 """
@@ -11,7 +11,7 @@ import math
 
 import pandas as pd
 
-from ancf.extremes import AXES, QUICK_SKIPPED, ROUGH, WORKS, Axis, L, run_axis
+from ancf.study.extremes import AXES, QUICK_SKIPPED, ROUGH, WORKS, Axis, L, run_axis
 
 
 def cell(row) -> str:

@@ -76,7 +76,7 @@ def progress(msg: str) -> None:
 
 @lru_cache(maxsize=None)
 def _run_cached(registry: str, name: str, items: tuple):
-    from analytic.references import REFERENCES
+    from ancf.scenes.analytic import REFERENCES
     from ancf.scenes import SCENES
     reg = SCENES if registry == "scene" else REFERENCES
     out, _ = reg[name].execute(dict(items))

@@ -200,8 +200,8 @@ def newton_iteration_time_ratio(n=16, repeats=30):
     gradient and band tangent, band LU and solve), linear / Omar-Shabana, measured side by
     side (interleaved) in one run; median over repeats."""
     progress("timing: Newton iteration, linear vs Omar-Shabana")
-    from ancf.constraints import Elimination
-    from ancf.pattern import ReducedPattern, assemble_compiled
+    from ancf.core.constraints import Elimination
+    from ancf.core.pattern import ReducedPattern, assemble_compiled
     from ancf.solvers.linear import factor
     times = {}
     setups = {}
@@ -232,7 +232,7 @@ def newton_iteration_time_ratio(n=16, repeats=30):
 def machine() -> str:
     import os
 
-    from ancf.machine import cpu_model
+    from ancf.common.machine import cpu_model
     cpu = cpu_model()
     return (f"{cpu}, {os.cpu_count()} cores, {platform.system()} {platform.release()}, "
             f"Python {platform.python_version()}, numpy {np.__version__}")

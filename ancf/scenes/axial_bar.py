@@ -7,11 +7,12 @@ zero, which the scene reports (``results.tip_reaction_y_N``) as evidence.
 """
 import numpy as np
 
-from ancf import accuracy
-from ancf.constraints import Elimination
+from ancf.scenes import accuracy
+from ancf.core.constraints import Elimination
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import Param, Scene
-from ancf.validity import check_static
+from ancf.common.params import Param
+from ancf.scenes.base import Scene
+from ancf.core.validity import check_static
 
 
 def run(p):

@@ -7,70 +7,12 @@ and turns the outcome into the public JSON shape
 """
 from __future__ import annotations
 
-import math
 import time
 from dataclasses import dataclass, field
 from typing import Callable
 
-from ancf.diagnostics import nonfinite, numerical_warnings
-
-
-class InputError(ValueError):
-    """Bad user input; the message names the field and its allowed range."""
-
-
-@dataclass(frozen=True)
-class Param:
-    """A scene parameter. ``lo``/``hi`` bound numbers (``lo_open``: strict lower bound);
-    ``choices`` restrict strings; ``default`` may be a function of the other params."""
-
-    name: str
-    default: object
-    kind: type = float
-    unit: str = ""
-    doc: str = ""
-    lo: float | None = None
-    hi: float | None = None
-    lo_open: bool = False
-    hi_open: bool = False
-    choices: tuple | None = None
-
-    def allowed(self) -> str:
-        if self.choices is not None:
-            return "one of " + ", ".join(map(str, self.choices))
-        if self.kind is str:
-            return "a name (see the parameter's description)"
-        lo = "-inf" if self.lo is None else f"{self.lo:g}"
-        hi = "inf" if self.hi is None else f"{self.hi:g}"
-        kind = "an integer" if self.kind is int else "a number"
-        return f"{kind} in {'(' if self.lo_open or self.lo is None else '['}{lo}, {hi}{')' if self.hi_open or self.hi is None else ']'}"
-
-    def parse(self, value):
-        if value is None and self.default is None:
-            return None  # a parameter computed when not given: resolved sets round-trip
-        try:
-            if self.kind is int:
-                v = float(value)
-                if not v.is_integer():
-                    raise ValueError
-                v = int(v)
-            else:
-                v = self.kind(value)
-        except (TypeError, ValueError):
-            raise InputError(f"{self.name}: {value!r} is not valid; allowed: {self.allowed()}") from None
-        self.check(v)
-        return v
-
-    def check(self, v):
-        bad = False
-        if self.choices is not None:
-            bad = v not in self.choices
-        elif self.kind in (int, float):
-            bad = (not math.isfinite(v)
-                   or (self.lo is not None and (v <= self.lo if self.lo_open else v < self.lo))
-                   or (self.hi is not None and (v >= self.hi if self.hi_open else v > self.hi)))
-        if bad:
-            raise InputError(f"{self.name} = {v!r} is out of range; allowed: {self.allowed()}")
+from ancf.common.diagnostics import nonfinite, numerical_warnings
+from ancf.common.params import InputError
 
 
 @dataclass
@@ -89,10 +31,10 @@ class Scene:
     params: tuple
     run: Callable[[dict], SceneResult]
     check: Callable[[dict], None] | None = None  # cross-field validation
-    # Optional declarations for sweeps / recommendations (ancf.references): the
+    # Optional declarations for sweeps / recommendations (ancf.study.references): the
     # parameters that choose the model (the rest define the problem), the physics the
-    # scene needs (ancf.references.PHYSICS) and the name of its reference.  Scenes that
-    # have an entry in ancf.references.SPECS need none of them.
+    # scene needs (ancf.study.references.PHYSICS) and the name of its reference.  Scenes that
+    # have an entry in ancf.study.references.SPECS need none of them.
     knobs: tuple = ()
     needs: tuple = ()
     reference: str | None = None

@@ -6,16 +6,18 @@ the cross-section plane, from -y towards -z for a negative ``F`` (force F (0, co
 sin a) on the tip position).  0 is the 2D case: the beam stays in the x-y plane and
 reproduces the 2D scene (element ``linear``) to round-off; 90 bends it about y.
 Clamp: every slot of the first node but r_x (position and section orientation), all
-three components.  ``element``: the 3D elements of :data:`ancf.beam3d.BUILDERS`.
+three components.  ``element``: the 3D elements of :data:`ancf.models.beam3d.BUILDERS`.
 Results ``tip_x``, ``tip_y``, ``tip_z``: the tip node's position.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from ancf import accuracy, beam3d
+from ancf.scenes import accuracy
+from ancf.models import beam3d
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import InputError, Param, Scene
+from ancf.common.params import InputError, Param
+from ancf.scenes.base import Scene
 from ancf.scenes.cantilever import cantilever_params
 
 

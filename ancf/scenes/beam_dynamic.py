@@ -8,12 +8,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf.energy import energy_history
-from ancf.forces import Forces
-from ancf.inputs import MAX_STEPS, check_fixed_step, check_sampling, following, intervals
-from ancf.multipliers import Baumgarte, LinearConstraints
+from ancf.core.energy import energy_history
+from ancf.core.forces import Forces
+from ancf.common.inputs import MAX_STEPS, check_fixed_step, check_sampling, following, intervals
+from ancf.core.multipliers import Baumgarte, LinearConstraints
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import Param
+from ancf.common.params import Param
 from ancf.solvers.dynamics import INTEGRATORS, MultiplierModel, ReducedModel, integrate
 
 RTOL_FLOOR = float(100 * np.finfo(float).eps)  # scipy's solve_ivp raises smaller rtol to this

@@ -9,12 +9,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf.assembly import Assembly, ElementGroup
-from ancf.constraints import Elimination
+from ancf.core.assembly import Assembly, ElementGroup
+from ancf.core.constraints import Elimination
 from ancf.elements.catalogue import ELEMENTS, element_kwargs
-from ancf.mesh import BeamMesh
-from ancf.quadrature import RectangularSection
-from ancf.scenes.base import InputError, Param, SceneResult
+from ancf.core.mesh import BeamMesh
+from ancf.core.quadrature import RectangularSection
+from ancf.common.params import InputError, Param
+from ancf.scenes.base import SceneResult
 from ancf.solvers.linear import ZERO_EIGENVALUE_REL
 from ancf.solvers.static import NewtonOptions, solve_static, stability_at
 

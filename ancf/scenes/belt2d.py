@@ -6,7 +6,7 @@ starting at rest.  The driver (left) turns counter-clockwise at the angular velo
 of Eq. 3.29 (ramp from t = 0.05 s to ``omega_final`` at 0.6 s); the driven pulley
 (inertia ``inertia``) turns under the belt's friction against the opposing torque
 of Eq. 3.30 (``Ta_max``; 0: none).  Contact: distributed penalty with tri-linear
-creep-rate friction at ``gauss_points`` points per element (:mod:`ancf.contact`).
+creep-rate friction at ``gauss_points`` points per element (:mod:`ancf.belts.contact2d`).
 
 Results: the angular velocities of both pulleys sampled every ``output_dt``, the
 vertical positions of the span midpoints, the span tensions at ``t_end`` (mean
@@ -20,14 +20,15 @@ import math
 
 import numpy as np
 
-from ancf.belt_drive import BeltDrive, BeltSpec
-from ancf.belt_post import sample, span_midpoint, span_tension, spans
-from ancf.inputs import MAX_STEPS, intervals
+from ancf.belts.drive2d import BeltDrive, BeltSpec
+from ancf.belts.post2d import sample, span_midpoint, span_tension, spans
+from ancf.common.inputs import MAX_STEPS, intervals
 from ancf.scenes import belt_common as bc
-from ancf.scenes.base import Param, Scene, SceneResult
-from ancf.solvers.belt_dynamics import BeltOptions, simulate
-from ancf.solvers.belt_pretension import settle
-from ancf.solvers.belt_scipy import simulate_bdf
+from ancf.common.params import Param
+from ancf.scenes.base import Scene, SceneResult
+from ancf.belts.dynamics import BeltOptions, simulate
+from ancf.belts.pretension import settle
+from ancf.belts.bdf import simulate_bdf
 
 INTEGRATORS = ("generalized-alpha", "bdf")
 PROGRESS_STEPS = 20_000  # runs of at least this many steps report progress on a terminal

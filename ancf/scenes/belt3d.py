@@ -1,9 +1,9 @@
 """Three-dimensional belt drive of thin plates (thesis 4.6, Table 4.1, Figs 4.10-4.18).
 
-A closed belt of ``n_elements`` thin ``plate36`` elements (:mod:`ancf.belt3d_drive`)
+A closed belt of ``n_elements`` thin ``plate36`` elements (:mod:`ancf.belts.drive3d`)
 on two equal pulleys ``R`` apart by pi R (Table 4.1: l_s = pi R, belt 4 pi R),
 penalty contact with creep-rate friction at ``contact_points`` points per element
-(:mod:`ancf.contact3d`), driver ramp Eq. 3.29 (``t0`` to ``t1``, ``omega_final``),
+(:mod:`ancf.belts.contact3d`), driver ramp Eq. 3.29 (``t0`` to ``t1``, ``omega_final``),
 opposing torque Eq. 4.47 on the driven pulley (inertia ``inertia``).
 
 ``model`` picks Table 4.1's column as the defaults of every other parameter:
@@ -31,15 +31,16 @@ import math
 
 import numpy as np
 
-from ancf.belt3d_drive import Belt3DDrive, Belt3DSpec
-from ancf.belt3d_post import MEASURES, end_state
-from ancf.belt_path import TwoPulleyPath
-from ancf.contact3d import SUPPORTED_RULES
-from ancf.inputs import MAX_STEPS, following, intervals
+from ancf.belts.drive3d import Belt3DDrive, Belt3DSpec
+from ancf.belts.post3d import MEASURES, end_state
+from ancf.belts.path import TwoPulleyPath
+from ancf.belts.contact3d import SUPPORTED_RULES
+from ancf.common.inputs import MAX_STEPS, following, intervals
 from ancf.scenes.belt_common import check_belt_length, check_steps, march_params, progress
-from ancf.scenes.base import InputError, Param, Scene, SceneResult
-from ancf.solvers.belt_dynamics import BeltOptions, simulate
-from ancf.solvers.belt_pretension import settle
+from ancf.common.params import InputError, Param
+from ancf.scenes.base import Scene, SceneResult
+from ancf.belts.dynamics import BeltOptions, simulate
+from ancf.belts.pretension import settle
 
 #: Table 4.1 (n_elements, E, u0, T_i, bending: section 4.6's text)
 MODELS = {
@@ -51,7 +52,7 @@ MODELS = {
             T_i=50.0, bending="off", Ta_max=2.0, start="settled"),
 }
 T0 = 0.05            # s, Table 4.1 (both models)
-TA_T1 = 1.0          # s, Eq. 4.47 (see ancf.pulleys)
+TA_T1 = 1.0          # s, Eq. 4.47 (see ancf.belts.pulleys)
 PROGRESS_STEPS = 5_000
 
 

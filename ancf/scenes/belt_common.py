@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import sys
 
-from ancf.belt_path import TwoPulleyPath
-from ancf.contact import SUPPORTED_POINTS
-from ancf.inputs import MAX_STEPS, check_sampling, following
-from ancf.scenes.base import InputError, Param
+from ancf.belts.path import TwoPulleyPath
+from ancf.belts.contact2d import SUPPORTED_POINTS
+from ancf.common.inputs import MAX_STEPS, check_sampling, following
+from ancf.common.params import InputError, Param
 
 #: Table 3.1
 R1, R2, X_CENTRE = 0.08125, 0.08125, 0.191441

@@ -20,16 +20,17 @@ import math
 import numpy as np
 import scipy.sparse as sp
 
-from ancf.assembly import Assembly, ElementGroup
-from ancf.belt_path import laid_belt
-from ancf.constraints import Elimination
+from ancf.core.assembly import Assembly, ElementGroup
+from ancf.belts.path import laid_belt
+from ancf.core.constraints import Elimination
 from ancf.elements._generated import cubic2d_S
 from ancf.elements.dufva2d import DufvaBelt2D
-from ancf.mesh import BeamMesh
-from ancf.pattern import ReducedPattern
-from ancf.quadrature import RectangularSection
+from ancf.core.mesh import BeamMesh
+from ancf.core.pattern import ReducedPattern
+from ancf.core.quadrature import RectangularSection
 from ancf.scenes import belt_common as bc
-from ancf.scenes.base import InputError, Param, Scene, SceneResult
+from ancf.common.params import InputError, Param
+from ancf.scenes.base import Scene, SceneResult
 from ancf.solvers.minimize import minimize
 
 CURVE_POINTS = 200  # per element, for the radius statistics

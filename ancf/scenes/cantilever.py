@@ -6,11 +6,12 @@ Model 1: h = 0.1 m, nu = 0.3 (defaults); Model 2: h = 0.5 m, nu = 0.
 """
 import numpy as np
 
-from ancf import accuracy
-from ancf.constraints import Elimination
+from ancf.scenes import accuracy
+from ancf.core.constraints import Elimination
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import Param, Scene
-from ancf.validity import check_static
+from ancf.common.params import Param
+from ancf.scenes.base import Scene
+from ancf.core.validity import check_static
 
 
 def run(p):

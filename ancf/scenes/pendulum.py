@@ -10,13 +10,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf import accuracy
-from ancf.constraints import Elimination
-from ancf.forces import Gravity
+from ancf.scenes import accuracy
+from ancf.core.constraints import Elimination
+from ancf.core.forces import Gravity
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import Param, Scene, SceneResult
-from ancf.validity import check_dynamic
+from ancf.common.params import Param
+from ancf.scenes.base import Scene, SceneResult
+from ancf.core.validity import check_dynamic
 
 
 def setup(p: dict):

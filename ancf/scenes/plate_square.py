@@ -4,7 +4,7 @@ plate of thesis 4.3 against Navier's series).
 ``n_elements`` x ``n_elements`` ``plate36`` elements (bending on, ``ng`` x ``ng`` Gauss
 points) over a x a; simply supported: w = 0 and the slope along the edge vanish on the
 boundary, the in-plane coordinates are fixed.  Linear (small-deflection) static solve
-at the flat reference with a sparse direct solver (``ancf.plate_models``): valid while
+at the flat reference with a sparse direct solver (``ancf.models.plate``): valid while
 the centre deflection is small against the thickness (h/47 at the defaults).
 ``center_deflection_m`` is signed, positive along the pressure; it is held against
 Navier's double series (``ancf analytic navier-plate``, Kirchhoff's rigidity
@@ -15,8 +15,9 @@ from __future__ import annotations
 import math
 
 from analytic import navier_plate
-from ancf.plate_models import simply_supported_centre
-from ancf.scenes.base import InputError, Param, Scene, SceneResult
+from ancf.models.plate import simply_supported_centre
+from ancf.common.params import InputError, Param
+from ancf.scenes.base import Scene, SceneResult
 
 
 def params() -> tuple:

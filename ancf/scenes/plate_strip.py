@@ -19,10 +19,11 @@ to the Euler-Bernoulli / Reissner rod (reports/elements3d.md).
 """
 from __future__ import annotations
 
-from ancf import accuracy
-from ancf.plate_models import edge_load, strip_model, tip_mean
+from ancf.scenes import accuracy
+from ancf.models.plate import edge_load, strip_model, tip_mean
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import Param, Scene
+from ancf.common.params import Param
+from ancf.scenes.base import Scene
 
 
 def params() -> tuple:

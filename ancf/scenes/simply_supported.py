@@ -3,11 +3,12 @@ report Tables 1-2).  Supports: x and y of the first node, y of the last node.
 """
 import numpy as np
 
-from ancf import accuracy
-from ancf.constraints import Elimination
+from ancf.scenes import accuracy
+from ancf.core.constraints import Elimination
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import InputError, Param, Scene
-from ancf.validity import check_static
+from ancf.common.params import InputError, Param
+from ancf.scenes.base import Scene
+from ancf.core.validity import check_static
 
 
 def _check(p):

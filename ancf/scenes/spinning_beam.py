@@ -26,14 +26,15 @@ import math
 
 import numpy as np
 
-from ancf import accuracy
-from ancf.constraints import Elimination
-from ancf.inputs import following
-from ancf.quadrature import gauss01
+from ancf.scenes import accuracy
+from ancf.core.constraints import Elimination
+from ancf.common.inputs import following
+from ancf.core.quadrature import gauss01
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
-from ancf.scenes.base import InputError, Param, Scene, SceneResult
-from ancf.validity import check_dynamic
+from ancf.common.params import InputError, Param
+from ancf.scenes.base import Scene, SceneResult
+from ancf.core.validity import check_dynamic
 
 
 def hub_angle(t: float, omega_s: float, T_s: float):

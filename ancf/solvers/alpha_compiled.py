@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ancf.pattern import assemble_compiled
+from ancf.core.pattern import assemble_compiled
 from ancf.solvers import banded
 
 DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
@@ -143,7 +143,7 @@ class CompiledAlpha:
 
     @staticmethod
     def applies(model) -> bool:
-        from ancf.forces import Gravity
+        from ancf.core.forces import Gravity
         p = getattr(model, "pattern", None)
         return (getattr(model, "form", "") == "elimination" and p is not None and p.band
                 and p.compiled(model.assembly) is not None

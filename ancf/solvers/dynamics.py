@@ -30,7 +30,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from ancf.pattern import ReducedPattern
+from ancf.core.pattern import ReducedPattern
 from ancf.solvers.linear import factor
 from ancf.solvers.result import DynamicResult, finish
 
@@ -88,7 +88,7 @@ def _mul(A, B):
 
 class ReducedModel:
     """Elimination form q = T z + g(t) (``rheo`` from ``Elimination.rheonomic()``), in
-    the numbering of its :class:`~ancf.pattern.ReducedPattern`: forces and tangents
+    the numbering of its :class:`~ancf.core.pattern.ReducedPattern`: forces and tangents
     are scattered straight into the reduced system, M_r is factored once (band LU)."""
 
     form = "elimination"
@@ -159,7 +159,7 @@ class ReducedModel:
 
 class MultiplierModel:
     """Lagrange-multiplier form (Eq. 2.32) with Baumgarte drift control for the
-    index-1 (acceleration) form; ``constraints`` from ``ancf.multipliers``."""
+    index-1 (acceleration) form; ``constraints`` from ``ancf.core.multipliers``."""
 
     form = "lagrange"
 

@@ -2,7 +2,7 @@
 
 Solves ``Qe(q) + lambda (Qk + Q(q)) = 0`` for the independent coordinates ``z``
 (``q = T z + g``) as the load factor ``lambda`` goes 0 -> 1; ``Qk`` is a constant
-load vector and ``Q`` the sum of the model's force terms (``ancf.forces``: gravity,
+load vector and ``Q`` the sum of the model's force terms (``ancf.core.forces``: gravity,
 and any term with a value and Jacobians, which statics and dynamics share).  Non-convergence is a
 result (``converged=False`` and a ``message``), never an exception or a NaN.
 """
@@ -14,7 +14,7 @@ import numpy as np
 
 from numba import njit
 
-from ancf.pattern import ReducedPattern, assemble_compiled
+from ancf.core.pattern import ReducedPattern, assemble_compiled
 from ancf.solvers import banded
 from ancf.solvers.linear import Singular, factor, stability
 
@@ -171,7 +171,7 @@ class _Newton:
 def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = None,
                  forces=None) -> StaticResult:
     """Equilibrium under the external load vector ``Qk`` (global, N) and the force terms
-    ``forces`` (an ``ancf.forces.Forces``, or None), starting at ``q0``."""
+    ``forces`` (an ``ancf.core.forces.Forces``, or None), starting at ``q0``."""
     opt = options or NewtonOptions()
     T, g, _ = elimination.build()
     pattern = ReducedPattern(assembly.n_dofs, [grp.dofmap for grp in assembly.groups]

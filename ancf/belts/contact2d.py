@@ -1,0 +1,229 @@
+"""Distributed penalty contact between a planar ANCF belt and circular pulleys
+(thesis section 3.2, Eqs 3.20-3.27), compiled (numba).
+
+At every Gauss point of the centreline (y = 0) of a ``cubic2d`` element, with
+r = S0 e (m) and rdot = S0 edot (m/s), and for a pulley of centre o (m), radius R (m)
+and angular velocity omega (rad/s, counter-clockwise positive):
+
+    d    = R - |r - o|                   penetration, m                     (3.21)
+    n    = (r - o) / |r - o|             outward normal of the pulley       (3.22)
+    ddot = -n . rdot                     penetration rate, m/s
+    F_n  = max(k_p d + c_p ddot, 0)      if d >= 0, else 0; N/m            (3.20)
+    t    = I~ n,  I~ = [[0, -1], [1, 0]] tangent, counter-clockwise         (3.24)
+    v_t  = t . (rdot - omega R t)        sliding velocity, m/s              (3.25)
+    phi  = -sign(v_t) min(nu_s |v_t|, mu F_n)   friction along t, N/m       (3.23)
+    f    = F_n n + phi t                 force per unit length on the belt, N/m
+
+The clamp F_n >= 0 is ours: Eq 3.20 gives k_p d + c_p ddot for every d >= 0, which
+is negative when the belt leaves the pulley faster than k_p d / c_p; the damper
+would then pull the belt onto the pulley.  The thesis excludes adhesion ("only the
+kinetic friction is applied ... excluding the existence of adhesion"), and Eq 3.23
+scales friction with ||f_n||, which a pulling normal force would feed, so the
+normal force is clamped at zero (no tension across the contact).
+
+Friction law (our reading of Eq 3.23 and the tri-linear creep-rate law of Fig 3.3):
+the friction force per unit length grows linearly with the sliding velocity with
+slope nu_s (kg/(m s) = N s/m^2), through zero, and saturates at the Coulomb value
+mu |f_n| for |v_t| >= mu F_n / nu_s; the three lines are -mu F_n, -nu_s v_t and
++mu F_n.  The surface speed of the pulley is omega R, as written in Eq 3.25 (R, not
+|r - o|).
+
+Generalised force (Eq 3.27) and pulley moment (Eq 3.26 integrand; the normal force
+passes through the centre and has no moment), Gauss quadrature over each element:
+
+    Q_e += sum_g w_g S0_g^T f_g                   N (per coordinate)
+    T_p += sum_g w_g ((r - o) x (-phi t))_z = -sum_g w_g phi |r - o|    N m
+
+Element coordinates are ordered ``k * 2 + d`` (shape function k of ``cubic2d_S``,
+component d), 12 per element; E, V are (nel, 6, 2).  A point exactly at a pulley
+centre has no normal; the penalty regime (d << R) never reaches it.
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from ancf.elements._generated import cubic2d_S
+from ancf.core.quadrature import gauss01
+
+#: Gauss rules along the element the contact is integrated with (the force is not
+#: smooth, so more points than the stiffness needs; Eq 3.27 discussion).
+SUPPORTED_POINTS = (5, 7, 11)
+
+#: relative widening of the bounding disc, so that the rounding of the Gauss-point
+#: positions (a few ulps of the coordinates) cannot put a skipped point in contact.
+_BOUND_MARGIN = 1e3 * np.finfo(np.float64).eps
+
+
+def contact_points(lengths, gauss_points):
+    """Shape functions and weights at the contact Gauss points.
+
+    ``lengths`` (nel,) reference element lengths, m; ``gauss_points`` one of
+    :data:`SUPPORTED_POINTS`.  Returns ``S0`` (nel, ng, 6) ``cubic2d`` shape functions
+    on the centreline y = 0, ``w`` (nel, ng) Gauss weights times the element length (m)
+    and ``xi`` (ng,) the points in [0, 1].
+    """
+    if gauss_points not in SUPPORTED_POINTS:
+        raise ValueError(f"gauss_points must be one of {SUPPORTED_POINTS} (got {gauss_points!r})")
+    l = np.asarray(lengths, dtype=float)
+    if l.ndim != 1 or not np.all(np.isfinite(l) & (l > 0)):
+        raise ValueError(f"lengths must be a 1-D array of positive finite lengths, m "
+                         f"(got {lengths!r})")
+    xi, wg = gauss01(int(gauss_points))
+    L = l[:, None]
+    S0 = np.ascontiguousarray(cubic2d_S(xi[None, :] * L, 0.0, L))
+    return S0, wg[None, :] * L, xi
+
+
+@njit(cache=True)
+def _may_touch(E, e, l, o0, o1, R):
+    """False only if the element's centreline provably stays outside the pulley disc:
+    the cubic Hermite centreline lies in the convex hull of its Bezier control points
+    r^I, r^I + l r_x^I / 3, r^J - l r_x^J / 3, r^J (cubic2d: S2 = l (xi - 2 xi^2 + xi^3),
+    so r_x is per metre), hence in any disc enclosing them."""
+    p0x, p0y = E[e, 0, 0], E[e, 0, 1]
+    p3x, p3y = E[e, 3, 0], E[e, 3, 1]
+    p1x, p1y = p0x + l * E[e, 1, 0] / 3.0, p0y + l * E[e, 1, 1] / 3.0
+    p2x, p2y = p3x - l * E[e, 4, 0] / 3.0, p3y - l * E[e, 4, 1] / 3.0
+    cx, cy = 0.25 * (p0x + p1x + p2x + p3x), 0.25 * (p0y + p1y + p2y + p3y)
+    rb = max(np.hypot(p0x - cx, p0y - cy), np.hypot(p1x - cx, p1y - cy),
+             np.hypot(p2x - cx, p2y - cy), np.hypot(p3x - cx, p3y - cy))
+    dist = np.hypot(cx - o0, cy - o1)
+    return dist - rb <= R + _BOUND_MARGIN * (dist + rb + R)
+
+
+@njit(cache=True)
+def _point_law(a0, a1, v0, v1, R, om, prm):
+    """Contact law at one point, r - o = a (m), rdot = v (m/s).  Returns |r - o|, d, F_n,
+    v_t, phi and the slopes of the active friction branch dphi/dv_t, dphi/dF_n."""
+    kp, cp, mu, nu = prm[0], prm[1], prm[2], prm[3]
+    rho = np.hypot(a0, a1)
+    n0, n1 = a0 / rho, a1 / rho
+    d = R - rho
+    vt = -n1 * v0 + n0 * v1 - om * R
+    Fn = kp * d - cp * (n0 * v0 + n1 * v1) if d >= 0.0 else 0.0
+    if Fn <= 0.0:
+        return rho, d, 0.0, vt, 0.0, 0.0, 0.0
+    if nu * abs(vt) < mu * Fn:
+        return rho, d, Fn, vt, -nu * vt, -nu, 0.0
+    s = np.sign(vt)
+    return rho, d, Fn, vt, -s * mu * Fn, 0.0, -s * mu
+
+
+@njit(cache=True)
+def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, phi, dphi_v, dphi_F, prm, D):
+    """D (3, 5): derivatives of (f_0, f_1, tau = -phi |r - o|) with respect to
+    (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0)."""
+    kp, cp = prm[0], prm[1]
+    n0, n1 = a0 / rho, a1 / rho
+    t0, t1 = -n1, n0
+    vn, vtt = n0 * v0 + n1 * v1, t0 * v0 + t1 * v1
+    gF = (-kp * n0 - cp * vtt / rho * t0, -kp * n1 - cp * vtt / rho * t1, -cp * n0, -cp * n1, 0.0)
+    gv = (-vn / rho * t0, -vn / rho * t1, t0, t1, -R)
+    n, t = (n0, n1), (t0, t1)
+    for c in range(5):
+        gphi = dphi_v * gv[c] + dphi_F * gF[c]
+        for d in range(2):
+            D[d, c] = n[d] * gF[c] + t[d] * gphi
+        D[2, c] = -rho * gphi
+        if c < 2:  # n and t turn with r: dn/dr = t t^T / rho, dt/dr = -n t^T / rho
+            for d in range(2):
+                D[d, c] += (Fn * t[d] - phi * n[d]) * t[c] / rho
+            D[2, c] -= phi * n[c]
+
+
+@njit(cache=True)
+def _centreline(E, V, S0, e, g):
+    r0 = r1 = v0 = v1 = 0.0
+    for k in range(S0.shape[2]):
+        s = S0[e, g, k]
+        r0 += s * E[e, k, 0]
+        r1 += s * E[e, k, 1]
+        v0 += s * V[e, k, 0]
+        v1 += s * V[e, k, 1]
+    return r0, r1, v0, v1
+
+
+@njit(cache=True)
+def _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw):
+    ns = S0.shape[2]
+    for k in range(ns):
+        sk = ww * S0[e, g, k]
+        for d in range(2):
+            Qw[e, p, 2 * k + d] += sk * D[d, 4]
+            dTq[p, e, 2 * k + d] += sk * D[2, d]
+            dTv[p, e, 2 * k + d] += sk * D[2, 2 + d]
+            for m in range(ns):
+                skm = sk * S0[e, g, m]
+                for c in range(2):
+                    Kq[e, 2 * k + d, 2 * m + c] += skm * D[d, c]
+                    Cv[e, 2 * k + d, 2 * m + c] += skm * D[d, 2 + c]
+    dTw[p] += ww * D[2, 4]
+
+
+@njit(cache=True)
+def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
+                   Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
+    """Add the contact forces of every element on every pulley.
+
+    E, V (nel, 6, 2) element coordinates (m, slopes -) and velocities; S0, w from
+    :func:`contact_points` (the element length is sum_g w); centres (np, 2) m, radii
+    (np,) m, omegas (np,) rad/s; prm = [k_p N/m^2, c_p N s/m^2, mu -, nu_s kg/(m s)].
+    Adds Q (nel, 12) N and T (np,) N m and, if ``want_J``, their exact derivatives on the
+    active branch: Kq, Cv (nel, 12, 12) dQ/de, dQ/dedot; Qw (nel, np, 12) dQ/domega_p;
+    dTq, dTv (np, nel, 12) dT_p/de, dT_p/dedot; dTw (np,) dT_p/domega_p.  Returns the
+    number of (element, pulley) pairs whose Gauss points were evaluated.
+    """
+    nel, ng = w.shape
+    D = np.zeros((3, 5))
+    pairs = 0
+    for e in range(nel):
+        l = 0.0
+        for g in range(ng):
+            l += w[e, g]
+        for p in range(radii.shape[0]):
+            o0, o1, R = centres[p, 0], centres[p, 1], radii[p]
+            if not _may_touch(E, e, l, o0, o1, R):
+                continue
+            pairs += 1
+            for g in range(ng):
+                r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
+                a0, a1 = r0 - o0, r1 - o1
+                rho, _, Fn, _, phi, dpv, dpF = _point_law(a0, a1, v0, v1, R, omegas[p], prm)
+                if Fn <= 0.0:
+                    continue
+                ww = w[e, g]
+                f0 = (Fn * a0 - phi * a1) / rho
+                f1 = (Fn * a1 + phi * a0) / rho
+                for k in range(S0.shape[2]):
+                    Q[e, 2 * k] += ww * S0[e, g, k] * f0
+                    Q[e, 2 * k + 1] += ww * S0[e, g, k] * f1
+                T[p] -= ww * phi * rho
+                if want_J:
+                    _point_jacobian(a0, a1, v0, v1, R, rho, Fn, phi, dpv, dpF, prm, D)
+                    _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw)
+    return pairs
+
+
+@njit(cache=True)
+def contact_state(E, V, S0, centres, radii, omegas, prm):
+    """Contact quantities at every Gauss point for post-processing (no bounding test).
+
+    Returns ``r`` (nel, ng, 2) centreline positions, m, and, each (nel, ng, np):
+    penetration ``d`` (m, negative out of contact), normal force ``F_n`` (N/m),
+    friction ``phi`` along t (N/m, signed) and sliding velocity ``v_t`` (m/s).
+    """
+    nel, ng = S0.shape[0], S0.shape[1]
+    npul = radii.shape[0]
+    r = np.zeros((nel, ng, 2))
+    d, Fn = np.zeros((nel, ng, npul)), np.zeros((nel, ng, npul))
+    phi, vt = np.zeros((nel, ng, npul)), np.zeros((nel, ng, npul))
+    for e in range(nel):
+        for g in range(ng):
+            r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
+            r[e, g, 0], r[e, g, 1] = r0, r1
+            for p in range(npul):
+                _, dd, F, v, ph, _, _ = _point_law(r0 - centres[p, 0], r1 - centres[p, 1], v0, v1,
+                                                   radii[p], omegas[p], prm)
+                d[e, g, p], Fn[e, g, p], phi[e, g, p], vt[e, g, p] = dd, F, ph, v
+    return r, d, Fn, phi, vt

@@ -1,0 +1,144 @@
+"""The 2D belt drive as a model: a closed belt of Dufva elements on a two-pulley path,
+penalty contact with creep-rate friction on both pulleys, a driver with prescribed
+angular velocity and a driven pulley whose rotation is a generalised coordinate.
+
+Coordinates: the belt's nodal coordinates (node by node r, r_x, r_y; the loop is
+closed by the last element sharing the first node, so there are no constraint
+equations, thesis section 3.3) in the numbering of a :class:`ReducedPattern`
+(reverse Cuthill-McKee: a ring has a narrow band once renumbered), followed by the
+driven pulley's angle theta (rad).  The mass matrix is constant: band storage
+``Mb`` for the belt, ``inertia`` for the pulley.
+
+Pulley 0 is the driver (left, ``omega_driver(t)``), pulley 1 the driven one.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+
+from ancf.belts.path import TwoPulleyPath, laid_belt
+from ancf.belts.contact2d import contact_forces, contact_points, contact_state
+from ancf.elements.dufva2d import DufvaBelt2D
+from ancf.core.mesh import BeamMesh
+from ancf.core.pattern import ReducedPattern, scatter
+from ancf.belts.pulleys import driver_omega, opposing_torque
+from ancf.core.quadrature import RectangularSection
+
+SLOTS = ("r", "r_x", "r_y")
+
+
+@dataclass(frozen=True)
+class BeltSpec:
+    """Everything that defines a belt drive (SI units; see the belt2d scene)."""
+
+    path: TwoPulleyPath
+    belt_length: float          # reference (unstretched) length L0, m
+    n_elements: int
+    E: float                    # Young's modulus, Pa
+    nu: float                   # Poisson's ratio (shear modulus only)
+    rho: float                  # density, kg/m^3
+    b: float                    # section width, m
+    h: float                    # section height, m
+    ks: float                   # shear correction factor
+    alpha1: float               # axial stiffness parameter (Eq. 3.18)
+    alpha2: float               # bending stiffness parameter (Eqs 3.18-3.19)
+    nx: int                     # Gauss points of the elastic forces per element
+    k_p: float                  # penalty stiffness per unit length, N/m^2
+    c_p: float                  # penalty damping per unit length, N s/m^2
+    mu: float                   # friction coefficient
+    nu_s: float                 # creep-rate factor, kg/(m s)
+    gauss_points: int           # contact Gauss points per element (5, 7, 11)
+    inertia: float              # driven pulley moment of inertia, kg m^2
+    omega_final: float          # driver's final angular velocity, rad/s (Eq. 3.29)
+    Ta_max: float               # final opposing torque, N m (Eq. 3.30)
+
+
+class PulleyDrive:
+    """What the 2D and 3D belt drives share: a belt in the numbering of ``pattern``
+    (``n_dofs`` global coordinates) followed by the driven pulley's angle."""
+
+    @property
+    def n(self) -> int:
+        """Belt coordinates (the pulley angle is coordinate n)."""
+        return self.pattern.n
+
+    def state(self, q, theta=0.0) -> np.ndarray:
+        """System vector (belt in pattern numbering, then theta) from global belt q."""
+        return np.append(self.pattern.restrict(q), theta)
+
+    def belt(self, x) -> np.ndarray:
+        """Global belt coordinates from a system vector."""
+        return self.pattern.expand(np.asarray(x)[: self.n], np.zeros(self.n_dofs))
+
+
+class BeltDrive(PulleyDrive):
+    """The assembled model of a :class:`BeltSpec`."""
+
+    def __init__(self, spec: BeltSpec):
+        self.spec = s = spec
+        self.mesh = BeamMesh(s.belt_length, s.n_elements, SLOTS, closed=True)
+        self.q0 = laid_belt(s.path, s.belt_length, s.n_elements).ravel()
+        self.element = DufvaBelt2D(self.mesh.lengths, self.q0[self.mesh.dofmap],
+                                   RectangularSection(s.b, s.h), E=s.E, nu=s.nu, rho=s.rho,
+                                   alpha1=s.alpha1, alpha2=s.alpha2, ks=s.ks, nx=s.nx)
+        n = self.mesh.n_dofs
+        self.pattern = ReducedPattern(n, [self.mesh.dofmap], sp.identity(n, format="csr"))
+        self.vidx, self.midx = self.pattern.groups[0]
+        self.Mb = self.pattern.zeros_matrix()
+        scatter(np.zeros((s.n_elements, 12)), self.element.mass(), self.vidx, self.midx,
+                np.zeros(self.pattern.n), self.Mb, True)
+        self.S0, self.w, self.xi = contact_points(self.mesh.lengths, s.gauss_points)
+        self.centres = np.array([s.path.O1, s.path.O2], dtype=float)
+        self.radii = np.array([s.path.R1, s.path.R2])
+        self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
+
+    def omega_driver(self, t):
+        return driver_omega(t, self.spec.omega_final)
+
+    def torque(self, t):
+        return opposing_torque(t, self.spec.Ta_max)
+
+    def laws(self, t) -> np.ndarray:
+        """Pulley laws (2, len(t)) of the march: driver omega (rad/s), T_a (N m)."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        return np.stack([self.omega_driver(t), self.torque(t)])
+
+    @property
+    def dofmap(self) -> np.ndarray:
+        return self.mesh.dofmap
+
+    @property
+    def n_dofs(self) -> int:
+        return self.mesh.n_dofs
+
+    def element_coords(self, q) -> np.ndarray:
+        """(nel, 6, 2) element coordinates from global belt coordinates q."""
+        return np.ascontiguousarray(np.asarray(q)[self.dofmap].reshape(-1, 6, 2))
+
+    def fixed_dofs(self) -> list:
+        """Node 0's coordinate along the path tangent (the larger component): the rigid
+        sliding round frictionless pulleys (:mod:`ancf.belts.pretension`)."""
+        return [self.mesh.dof(0, "r", int(np.argmax(np.abs(self.q0[2:4]))))]
+
+    def penalty(self, E, want_J: bool):
+        """Frictionless, undamped contact at rest: (energy sum w k_p d^2/2 J, Q (nel, 12) N,
+        dQ/de (nel, 12, 12) N/m or None)."""
+        nel = E.shape[0]
+        V, om = np.zeros_like(E), np.zeros(2)
+        prm = np.array([self.spec.k_p, 0.0, 0.0, 0.0])
+        _, d, _, _, _ = contact_state(E, V, self.S0, self.centres, self.radii, om, prm)
+        U = 0.5 * self.spec.k_p * np.einsum("eg,egp->", self.w, np.maximum(d, 0.0) ** 2)
+        if not want_J:
+            return float(U), None, None
+        Q, Kq = np.zeros((nel, 12)), np.zeros((nel, 12, 12))
+        contact_forces(E, V, self.S0, self.w, self.centres, self.radii, om, prm, True, Q, Kq,
+                       np.zeros_like(Kq), np.zeros((nel, 2, 12)), np.zeros(2),
+                       np.zeros((2, nel, 12)), np.zeros((2, nel, 12)), np.zeros(2))
+        return float(U), Q, Kq
+
+    def kernel(self):
+        """The arrays of the compiled march (:mod:`ancf.belts.march`)."""
+        return (self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
+                self.centres, self.radii, self.prm, float(self.spec.inertia))

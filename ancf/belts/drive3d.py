@@ -1,0 +1,162 @@
+"""The 3D belt drive as a model (thesis sections 4.5-4.6): a closed belt of thin
+``plate36`` elements on two pulleys, distributed penalty contact with creep-rate
+friction over each element's mid surface (:mod:`ancf.belts.contact3d`), a driver with
+prescribed angular velocity (Eq. 3.29) that may be moved to pre-tension the belt
+(Eq. 4.46), and a driven pulley whose rotation is a generalised coordinate loaded by
+the opposing torque (Eq. 4.47).
+
+Geometry: the belt path of :class:`ancf.belts.path.TwoPulleyPath` in the x-y plane,
+pulley axes along +z, the belt's width along z from 0 to ``width``.  One element
+across the width: element i has the nodes A = (i, 0), B = (i + 1, 0), C = (i + 1, 1),
+D = (i, 1) (position along the belt, edge), node (i, j) numbered 2 i + j and node n
+taken as node 0, so the loop is closed without constraint equations.  Element x runs
+along the belt, element y across it (global z).  The laid belt: r on the path at
+equal spacing P/n, ``r_x`` = t P / L0 (the stretch of the flat reference of length
+L0 / n, so a belt shorter than the path starts pre-tensioned), ``r_y`` = e_z.
+
+Coordinates: the belt's nodal coordinates in the numbering of a
+:class:`ancf.core.pattern.ReducedPattern` (band), then the driven pulley's angle.  The
+mass matrix is constant: band storage ``Mb`` for the belt, ``inertia`` for the pulley.
+Pulley 0 is the driver (left), pulley 1 the driven one; the driver moves by u(t)
+along ``shift`` = -e_x (away from the driven pulley: it tightens the belt).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+
+from ancf.belts.drive2d import PulleyDrive
+from ancf.belts.path import TwoPulleyPath, laid_belt
+from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
+from ancf.elements.plate36 import Plate36
+from ancf.core.pattern import ReducedPattern, scatter
+from ancf.belts.pulleys import driver_omega, driver_shift, opposing_torque
+
+PER_NODE = 9  # r, r_x, r_y, 3 components each
+SHIFT = np.array([-1.0, 0.0, 0.0])  # direction the driver is moved in (Eq. 4.46)
+AXIS = np.array([0.0, 0.0, 1.0])    # pulley axes
+
+
+@dataclass(frozen=True)
+class Belt3DSpec:
+    """Everything that defines a 3D belt drive (SI units; see the belt3d scene)."""
+
+    path: TwoPulleyPath
+    belt_length: float          # reference (unstretched) length L0, m
+    n_elements: int
+    E: float                    # Young's modulus, Pa
+    nu: float                   # Poisson's ratio
+    rho: float                  # density, kg/m^3
+    width: float                # belt width w, m
+    h: float                    # thickness, m
+    bending: bool               # Eq. 4.17 on (Model 1) or off (Model 2)
+    k_p: float                  # penalty stiffness per unit area, N/m^3
+    c_p: float                  # penalty damping per unit area, N s/m^3
+    mu: float                   # friction coefficient
+    nu_s: float                 # creep-rate factor, kg/(m^2 s)
+    contact_points: int         # surface rule per element (25, 49, 81)
+    inertia: float              # driven pulley moment of inertia, kg m^2
+    omega_final: float          # driver's final angular velocity, rad/s (Eq. 3.29)
+    t0: float                   # start of the ramps, s
+    t1: float                   # end of the driver ramp, s (Table 4.1)
+    Ta_max: float               # final opposing torque, N m (Eq. 4.47)
+    Ta_t1: float                # end of the torque ramp, s (Eq. 4.47: 1.0)
+    u0: float                   # driver displacement, m (Eq. 4.46; 0: none)
+    ng: int = 4                 # Gauss points per direction of the elastic forces
+
+
+def ring_dofmap(n: int) -> np.ndarray:
+    """(n, 36) element DOF maps of a closed ring of n plates, one across the width."""
+    i = np.arange(n)
+    nodes = np.stack([2 * i, 2 * ((i + 1) % n), 2 * ((i + 1) % n) + 1, 2 * i + 1], 1)
+    return (nodes[:, :, None] * PER_NODE + np.arange(PER_NODE)).reshape(n, -1)
+
+
+def laid_plate_belt(path: TwoPulleyPath, L0: float, n: int, width: float) -> np.ndarray:
+    """Global coordinates (2 n * 9,) of the belt laid on the path (module docstring)."""
+    q2 = laid_belt(path, L0, n)  # (n, 3, 2): r, r_x, r_y of the planar belt
+    q = np.zeros((n, 2, 3, 3))
+    for j, z in enumerate((0.0, width)):
+        q[:, j, 0, :2], q[:, j, 0, 2] = q2[:, 0], z
+        q[:, j, 1, :2] = q2[:, 1]
+        q[:, j, 2] = AXIS
+    return q.ravel()
+
+
+class Belt3DDrive(PulleyDrive):
+    """The assembled model of a :class:`Belt3DSpec`."""
+
+    def __init__(self, spec: Belt3DSpec):
+        self.spec = s = spec
+        n = s.n_elements
+        self.dofmap = ring_dofmap(n)
+        self.n_dofs = 2 * n * PER_NODE
+        self.q0 = laid_plate_belt(s.path, s.belt_length, n, s.width)
+        self.lengths = np.full(n, s.belt_length / n)
+        self.element = Plate36(self.lengths, s.width, s.h, s.E, s.nu, s.rho, bending=s.bending,
+                               ng=s.ng)
+        self.pattern = ReducedPattern(self.n_dofs, [self.dofmap],
+                                      sp.identity(self.n_dofs, format="csr"))
+        self.vidx, self.midx = self.pattern.groups[0]
+        self.Mb = self.pattern.zeros_matrix()
+        scatter(np.zeros((n, 36)), self.element.mass(), self.vidx, self.midx,
+                np.zeros(self.pattern.n), self.Mb, True)
+        self.S0, self.w = contact_points3d(self.lengths, np.full(n, s.width), s.contact_points)
+        self.centres = np.array([[*s.path.O1, 0.0], [*s.path.O2, 0.0]], dtype=float)
+        self.axes = np.array([AXIS, AXIS])
+        self.radii = np.array([s.path.R1, s.path.R2])
+        self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
+
+    def omega_driver(self, t):
+        return driver_omega(t, self.spec.omega_final, self.spec.t0, self.spec.t1)
+
+    def torque(self, t):
+        return opposing_torque(t, self.spec.Ta_max, self.spec.t0, self.spec.Ta_t1)
+
+    def laws(self, t) -> np.ndarray:
+        """Pulley laws (4, len(t)): driver omega (rad/s), T_a (N m), driver shift u (m)
+        and its rate (m/s)."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        u, du = driver_shift(t, self.spec.u0, self.spec.t0)
+        return np.stack([self.omega_driver(t), self.torque(t), u, du])
+
+    def pulley_centres(self, t: float) -> np.ndarray:
+        """Pulley centres (2, 3) at time t, m (the driver moved by Eq. 4.46)."""
+        c = self.centres.copy()
+        c[0] += float(driver_shift(t, self.spec.u0, self.spec.t0)[0]) * SHIFT
+        return c
+
+    def element_coords(self, q) -> np.ndarray:
+        """(nel, 12, 3) element coordinates from global belt coordinates q."""
+        return np.ascontiguousarray(np.asarray(q)[self.dofmap].reshape(-1, 12, 3))
+
+    def fixed_dofs(self) -> list:
+        """Node 0's (edge 0) coordinates along the path tangent and along the pulley axes:
+        the rigid motions frictionless pulleys leave free (:mod:`ancf.belts.pretension`)."""
+        along = int(np.argmax(np.abs(self.q0[3:5])))
+        return [along, 2]
+
+    def penalty(self, E, want_J: bool):
+        """Frictionless, undamped contact at rest: (energy sum w k_p d^2/2 J, Q (nel, 36) N,
+        dQ/de (nel, 36, 36) N/m or None)."""
+        nel = E.shape[0]
+        V, om, cv = np.zeros_like(E), np.zeros(2), np.zeros((2, 3))
+        prm = np.array([self.spec.k_p, 0.0, 0.0, 0.0])
+        _, d, _, _, _, _ = contact_state3d(E, V, self.S0, self.centres, self.axes, self.radii, om,
+                                           cv, prm)
+        U = 0.5 * self.spec.k_p * np.einsum("eg,egp->", self.w, np.maximum(d, 0.0) ** 2)
+        if not want_J:
+            return float(U), None, None
+        Q, Kq = np.zeros((nel, 36)), np.zeros((nel, 36, 36))
+        contact_forces3d(E, V, self.S0, self.w, self.centres, self.axes, self.radii, om, cv, prm,
+                         True, Q, Kq, np.zeros_like(Kq), np.zeros((nel, 2, 36)), np.zeros(2),
+                         np.zeros((2, nel, 36)), np.zeros((2, nel, 36)), np.zeros(2))
+        return float(U), Q, Kq
+
+    def kernel(self):
+        """The arrays of the compiled march (:mod:`ancf.belts.march`)."""
+        return (self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
+                self.centres, self.radii, self.prm, float(self.spec.inertia), self.axes,
+                SHIFT.copy())

@@ -1,0 +1,132 @@
+"""Time integration of the 2D belt drive: set-up and bookkeeping around the compiled
+march of :mod:`ancf.belts.march`.
+
+The steps are fixed (at most ``dt``, samples on steps, see
+:func:`ancf.solvers.generalized_alpha.step_times`); a step whose Newton iteration
+fails even with fresh factors is retried as two halves, down to
+``dt / 2**max_halvings``; past that the run stops with ``converged=False`` and a
+message, keeping the samples it reached.  The initial accelerations are
+consistent (M a0 = -f(x0, v0)).
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from ancf.solvers import banded
+from ancf.belts.march import BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE, march
+from ancf.belts.forces import evaluate_any
+from ancf.solvers.generalized_alpha import AlphaOptions, step_times
+from ancf.solvers.result import DynamicResult
+
+CHUNKS = 20  # progress reports per run
+MESSAGES = {DONE: "ok", BUDGET: "step budget exhausted (max_steps)",
+            NON_FINITE: "non-finite coordinates", BLOW_UP: "coordinates blew up"}
+
+
+@dataclass(frozen=True)
+class BeltOptions:
+    dt: float = 2.5e-4
+    rho_inf: float = 0.5
+    newton_tol: float = 1e-7     # beta' |d acc|_inf <= tol (1 + |z|_inf)
+    max_iter: int = 12
+    max_halvings: int = 4
+    max_steps: int = 400_000
+    q_limit: float = 1e3         # blow-up: |z|_inf above q_limit (1 + |z0|_inf)
+
+
+class _March:
+    """The arrays of one run of the compiled march."""
+
+    def __init__(self, drive, opt: BeltOptions, ts):
+        self.drive, self.opt = drive, opt
+        self.mdl, self.kl, self.Mb = drive.kernel(), drive.pattern.kl, drive.Mb
+        n = drive.n
+        self.fs = (drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros(n),
+                   np.zeros(n), np.zeros(n), np.array([np.nan, np.nan]))
+        self.cf = np.array(AlphaOptions(rho_inf=opt.rho_inf).coefficients())
+        self.count = np.zeros(7, dtype=np.int64)
+        self.set_times(ts)
+
+    def set_times(self, ts):
+        self.ts = ts
+        self.tabs = self.drive.laws(ts)
+
+    def initial_acceleration(self, x, v):
+        n = self.drive.n
+        f = np.zeros(n + 1)
+        evaluate_any(x, v, self.tabs[:, 0].copy(), self.mdl, False, 0.0, 0.0, f, np.zeros((1, 1)),
+                     np.zeros(n), np.zeros(n))
+        M = self.Mb.copy()
+        piv = np.zeros(n, dtype=np.int64)
+        banded.lu(M, self.kl, piv, True)
+        a = -f
+        banded.solve(M, self.kl, piv, a[:n])
+        a[n] /= self.mdl[8]
+        return a
+
+    def run(self, st, k, k_stop, slot, out_x, out_v, limit):
+        o = self.opt
+        return march(self.ts, k, k_stop, st, self.fs, self.cf, self.mdl, self.Mb, self.kl, self.tabs,
+                     self.count, o.newton_tol, o.max_iter, limit, o.max_steps, slot, out_x, out_v)
+
+
+def _halved(m: _March, st, ta, tb, depth, limit) -> bool:
+    """Advance st from ta to tb in 2**depth equal steps (recursively on failure)."""
+    ts_keep = m.ts
+    sub = np.linspace(ta, tb, 3)
+    m.set_times(sub)
+    dummy = np.zeros((1, st[0].size))
+    status, k = m.run(st, 0, 2, np.full(3, -1, dtype=np.int64), dummy, dummy, limit)
+    ok = status == DONE
+    if not ok and status not in (NON_FINITE, BLOW_UP, BUDGET) and depth < m.opt.max_halvings:
+        ok = all(_halved(m, st, a, b, depth + 1, limit) for a, b in zip(sub[k:-1], sub[k + 1:]))
+    m.set_times(ts_keep)
+    return ok
+
+
+def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) -> DynamicResult:
+    """Integrate the belt drive over the sample times t_out (s) from x0, v0 (system
+    vectors; default: the laid belt at rest).  ``progress(t)`` is called per chunk."""
+    t_out = np.asarray(t_out, dtype=float)
+    ts = step_times(t_out, opt.dt)
+    slot = np.full(ts.size, -1, dtype=np.int64)
+    slot[np.searchsorted(ts, t_out[1:] - 1e-12)] = np.arange(1, t_out.size)
+    n1 = drive.n + 1
+    x = drive.state(drive.q0) if x0 is None else np.array(x0, dtype=float)
+    v = np.zeros(n1) if v0 is None else np.array(v0, dtype=float)
+    m = _March(drive, opt, ts)
+    a0 = m.initial_acceleration(x, v)
+    st = (x, v, a0, a0.copy())
+    X, V = np.zeros((t_out.size, n1)), np.zeros((t_out.size, n1))
+    X[0], V[0] = x, v
+    limit = opt.q_limit * (1 + np.max(np.abs(x[:-1])))
+    t0, k, status, rejected = time.process_time(), 0, DONE, 0
+    chunks = np.linspace(0, ts.size - 1, CHUNKS + 1).round().astype(int)[1:]
+    for k_stop in chunks:
+        while k < k_stop and status in (DONE, NEWTON_FAILED):
+            status, k = m.run(st, k, k_stop, slot, X, V, limit)
+            if status == NEWTON_FAILED:
+                rejected += 1
+                if not _halved(m, st, ts[k], ts[k + 1], 1, limit):
+                    break
+                status, k = DONE, k + 1
+                if slot[k] >= 0:
+                    X[slot[k]], V[slot[k]] = st[0], st[1]
+        if status != DONE:
+            break
+        if progress:
+            progress(ts[k])
+    reached = int(np.searchsorted(t_out, ts[k] + 1e-12))
+    ok = status == DONE and k == ts.size - 1
+    msg = "ok" if ok else (MESSAGES.get(status) or f"no convergence: Newton failed at t = {ts[k]:.6g} s "
+                           f"even with steps of dt/2^{opt.max_halvings}")
+    c = m.count
+    res = DynamicResult(t_out[:reached], X[:reached], V[:reached], ok, msg, "generalized-alpha",
+                        steps=int(c[4]), nfev=int(c[0]), njev=int(c[1]), nlu=int(c[2]),
+                        newton_iterations=int(c[5]), rejected_steps=rejected,
+                        cpu_time_s=time.process_time() - t0)
+    res.extra["contact_pairs"] = int(c[6])
+    return res

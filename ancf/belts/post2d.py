@@ -1,0 +1,97 @@
+"""Post-processing of belt-drive states: quantities along the belt and on the spans.
+
+Along the belt (``npts`` points per element, belt arc coordinate s = reference
+arc length from node 0, m): position, velocity, belt speed |r'|, axial force
+N = E A alpha1 eps_l (Eq. 3.17, N) and the contact state (penetration, normal and
+friction force per unit length, relative velocity; :func:`ancf.belts.contact2d.contact_state`).
+
+On the spans: the point where the belt crosses a span's perpendicular bisector
+(its "midpoint", Figs 3.10-3.11) and the mean axial force over the belt points
+whose projection falls in the middle third of a span and lies within ``R/2`` of
+its line (the span tension).  The upper span runs from pulley 2 to pulley 1 and is
+the tight one while the driver (pulley 1, counter-clockwise) pulls the belt off
+it; the lower span is the slack one.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ancf.belts.contact2d import contact_state
+from ancf.elements._generated import cubic2d_S
+
+
+@dataclass
+class BeltSample:
+    s: np.ndarray         # (m,) belt arc coordinate, m
+    r: np.ndarray         # (m, 2) positions, m
+    v: np.ndarray         # (m, 2) velocities, m/s
+    N: np.ndarray         # (m,) axial force, N
+    d: np.ndarray         # (m, npulley) penetration, m
+    Fn: np.ndarray        # (m, npulley) normal force per unit length, N/m
+    Ft: np.ndarray        # (m, npulley) friction per unit length along t, N/m
+    vt: np.ndarray        # (m, npulley) relative tangential velocity, m/s
+
+    @property
+    def speed(self) -> np.ndarray:
+        return np.linalg.norm(self.v, axis=1)
+
+
+def _shapes(drive, npts: int):
+    xi = (np.arange(npts) + 0.5) / npts
+    l = drive.mesh.lengths
+    X = xi[None, :] * l[:, None]
+    S0 = cubic2d_S(X, np.zeros_like(X), np.broadcast_to(l[:, None], X.shape))
+    return xi, np.ascontiguousarray(S0.reshape(l.size, npts, 6))
+
+
+def sample(drive, x, v, t: float, npts: int = 8) -> BeltSample:
+    """The belt at system state (x, v), time t (s)."""
+    q, qd = drive.belt(x), drive.belt(v)
+    dm = drive.mesh.dofmap
+    E, V = q[dm].reshape(-1, 6, 2), qd[dm].reshape(-1, 6, 2)
+    xi, S0 = _shapes(drive, npts)
+    omegas = np.array([float(drive.omega_driver(t)), float(v[-1])])
+    r, d, Fn, phi, vt = contact_state(E, V, S0, drive.centres, drive.radii, omegas, drive.prm)
+    s = (np.arange(drive.mesh.n_elements)[:, None] + xi[None, :]) * drive.mesh.lengths[0]
+    N = drive.element.axial_force(q[dm], xi)
+    flat = lambda a: np.asarray(a).reshape(s.size, *np.shape(a)[2:])  # noqa: E731
+    return BeltSample(s.ravel(), flat(r), flat(np.einsum("eqk,ekd->eqd", S0, V)), N.ravel(),
+                      flat(d), flat(Fn), flat(phi), flat(vt))
+
+
+def spans(path) -> dict:
+    """{"tight": (start, end), "slack": (start, end)} span end points, m."""
+    r, _ = path(np.array([p[1] for p in path.pieces()[1:4:2]]))
+    e, _ = path(np.array([p[2] for p in path.pieces()[1:4:2]]))
+    return {"slack": (r[0], e[0]), "tight": (r[1], e[1])}
+
+
+def _span_coords(points, span):
+    a, b = span
+    u = (b - a) / np.linalg.norm(b - a)
+    rel = points - a
+    lam = rel @ u / np.linalg.norm(b - a)
+    off = rel @ np.array([-u[1], u[0]])
+    return lam, off
+
+
+def span_tension(smp: BeltSample, span, R: float) -> float:
+    """Mean axial force (N) over the belt points in the middle third of ``span``."""
+    lam, off = _span_coords(smp.r, span)
+    sel = (lam > 1 / 3) & (lam < 2 / 3) & (np.abs(off) < R / 2)
+    return float(smp.N[sel].mean()) if sel.any() else float("nan")
+
+
+def span_midpoint(smp: BeltSample, span, R: float) -> np.ndarray:
+    """Position (2,) where the belt crosses the span's perpendicular bisector, m."""
+    r = np.vstack([smp.r, smp.r[:1]])  # the belt is closed
+    lam, off = _span_coords(r, span)
+    near = np.abs(off) < R
+    for i in np.flatnonzero(near[:-1] & near[1:]):
+        j = i + 1
+        if (lam[i] - 0.5) * (lam[j] - 0.5) <= 0 and lam[i] != lam[j]:
+            f = (0.5 - lam[i]) / (lam[j] - lam[i])
+            return r[i] + f * (r[j] - r[i])
+    return np.full(2, np.nan)

@@ -1,0 +1,129 @@
+"""Post-processing of the 3D belt drive (thesis 4.2 and 4.6): quantities along a line
+of the belt and on its spans.
+
+Along the line y (element coordinate across the belt, m; 0: the edge the thesis
+samples, w/2: the centre line) at ``npts`` points per element: positions,
+velocities, the three strain measures of :mod:`ancf.belts.strains` with their
+tensions k eps (k = E h w, N; Table 4.1's "k = 0.2 kN" for Model 2), the belt speed
+along the tangent, det F, and the membrane's own axial force
+
+    N_m = h w t . (r_x S_xx + r_y S_xy),   S = plane-stress Saint-Venant-Kirchhoff
+    stresses of the mid-surface Green strains (the stresses of Eq. 4.16),
+
+i.e. the force the element actually transmits (the tangential component of the first
+Piola stress resultant on a section x = const, taken uniform over the width).  The
+span means average the points whose projection lies in the middle third of a span
+and within R/2 of its line (:mod:`ancf.belts.post2d`); the tight span is the upper one,
+which runs into the counter-clockwise driver.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ancf.belts.drive3d import SHIFT
+from ancf.belts.post2d import _span_coords, spans
+from ancf.belts.strains import DEFAULT_POINTS, measures
+from ancf.belts.contact3d import contact_forces3d, contact_state3d
+from ancf.elements._generated import plate36_S, plate36_x, plate36_y
+
+MEASURES = ("green", "true", "almansi")
+
+
+def _shapes(lengths, width, y, npts):
+    xi = (np.arange(npts) + 0.5) / npts
+    X = xi[None, :] * lengths[:, None]
+    Y, A = np.full_like(X, y), np.broadcast_to(lengths[:, None], X.shape)
+    Bw = np.full_like(X, width)
+    return xi, [np.ascontiguousarray(f(X, Y, A, Bw)) for f in (plate36_S, plate36_x, plate36_y)]
+
+
+def flat_reference(lengths, width) -> np.ndarray:
+    """(nel, 12, 3) coordinates of the flat, unstrained reference plates."""
+    E0 = np.zeros((lengths.size, 12, 3))
+    for k, (x, y) in enumerate(((0, 0), (1, 0), (1, 1), (0, 1))):
+        E0[:, 3 * k, 0], E0[:, 3 * k, 1] = x * lengths, y * width
+        E0[:, 3 * k + 1, 0] = 1.0
+        E0[:, 3 * k + 2, 1] = 1.0
+    return E0
+
+
+def membrane_force(rx, ry, E: float, nu: float, h: float, w: float) -> np.ndarray:
+    """N_m (module docstring) from r_x, r_y (..., 3), N."""
+    Exx = 0.5 * (np.einsum("...d,...d", rx, rx) - 1.0)
+    Eyy = 0.5 * (np.einsum("...d,...d", ry, ry) - 1.0)
+    Exy = 0.5 * np.einsum("...d,...d", rx, ry)
+    Sxx = E / (1.0 - nu**2) * (Exx + nu * Eyy)
+    Sxy = E / (1.0 + nu) * Exy
+    t = rx / np.linalg.norm(rx, axis=-1, keepdims=True)
+    return h * w * (np.einsum("...d,...d", t, rx) * Sxx + np.einsum("...d,...d", t, ry) * Sxy)
+
+
+def line_sample(drive, x, v, y: float = 0.0, npts: int = DEFAULT_POINTS) -> dict:
+    """Arrays (nel * npts,) along the line y of the belt at system state (x, v); ``r``
+    (m, 3) positions, ``s`` reference arc length from node 0 (m)."""
+    s = drive.spec
+    E, V = drive.element_coords(drive.belt(x)), drive.element_coords(drive.belt(v))
+    L = drive.lengths
+    xi, (S, Sx, Sy) = _shapes(L, s.width, y, npts)
+    k = s.E * s.h * s.width
+    out = measures(S, Sx, E, flat_reference(L, s.width), V, k, others=(Sy,))
+    rx, ry = (np.einsum("eqk,ekd->eqd", B, E) for B in (Sx, Sy))
+    out["tension_membrane_N"] = membrane_force(rx, ry, s.E, s.nu, s.h, s.width)
+    out["r"] = np.einsum("eqk,ekd->eqd", S, E)
+    out["s"] = (np.arange(L.size)[:, None] + xi[None, :]) * L[0]
+    return {key: a.reshape(-1, *a.shape[2:]) for key, a in out.items()}
+
+
+def span_means(drive, smp: dict) -> dict:
+    """{"tight"/"slack": {quantity: mean over the span's middle third}}."""
+    R = float(drive.radii.min())
+    out = {}
+    for name, span in spans(drive.spec.path).items():
+        lam, off = _span_coords(smp["r"][:, :2], span)
+        sel = (lam > 1 / 3) & (lam < 2 / 3) & (np.abs(off) < R / 2)
+        out[name] = {key: float(np.mean(a[sel])) if sel.any() else float("nan")
+                     for key, a in smp.items() if key not in ("r", "s")}
+    return out
+
+
+def _contact_args(drive, x, v, t: float) -> tuple:
+    """Arguments of the 3D contact kernels at state (x, v), time t."""
+    E, V = drive.element_coords(drive.belt(x)), drive.element_coords(drive.belt(v))
+    law = drive.laws(np.array([t]))[:, 0]
+    odot = np.zeros((2, 3))
+    odot[0] = law[3] * SHIFT
+    return E, V, drive.pulley_centres(t), np.array([law[0], float(v[-1])]), odot
+
+
+def pulley_moments(drive, x, v, t: float) -> np.ndarray:
+    """Moments (2,) of the contact forces about the pulley axes at state (x, v), N m
+    (the driven pulley's is the integral of the friction of Eq. 4.45 times the lever)."""
+    E, V, o, om, odot = _contact_args(drive, x, v, t)
+    nel, T = E.shape[0], np.zeros(2)
+    contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, om, odot, drive.prm,
+                     False, np.zeros((nel, 36)), np.zeros((0, 36, 36)), np.zeros((0, 36, 36)),
+                     np.zeros((0, 2, 36)), T, np.zeros((2, 0, 36)), np.zeros((2, 0, 36)),
+                     np.zeros(2))
+    return T
+
+
+def contact_sample(drive, x, v, t: float) -> tuple:
+    """:func:`ancf.belts.contact3d.contact_state3d` at state (x, v): r, d, F_n, f_t, v_s, branch."""
+    E, V, o, om, odot = _contact_args(drive, x, v, t)
+    return contact_state3d(E, V, drive.S0, o, drive.axes, drive.radii, om, odot, drive.prm)
+
+
+def end_state(drive, x, v, t: float, measure: str) -> dict:
+    """The belt3d scene's results at the final state (span means along the edge y = 0)."""
+    means = span_means(drive, line_sample(drive, x, v))
+    tensions = {m: {side: means[side][f"tension_{m}_N"] for side in ("tight", "slack")}
+                for m in (*MEASURES, "membrane")}
+    R = float(drive.radii[1])
+    return {"T_tight_N": tensions[measure]["tight"], "T_slack_N": tensions[measure]["slack"],
+            "v_tight": means["tight"]["speed"], "v_slack": means["slack"]["speed"],
+            "tensions": tensions,
+            "torque_from_tensions_Nm": (tensions[measure]["tight"] - tensions[measure]["slack"]) * R,
+            "torques_from_tensions_Nm": {m: (tn["tight"] - tn["slack"]) * R
+                                         for m, tn in tensions.items()},
+            "torque_from_friction_Nm": float(pulley_moments(drive, x, v, t)[1]),
+            "penetration_max_m": float(max(contact_sample(drive, x, v, t)[1].max(), 0.0))}

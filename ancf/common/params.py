@@ -1,0 +1,64 @@
+"""Scene and reference parameters: named values with defaults and ranges, and the
+error that bad input raises (one line naming the field and its allowed range)."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+
+class InputError(ValueError):
+    """Bad user input; the message names the field and its allowed range."""
+
+
+@dataclass(frozen=True)
+class Param:
+    """A scene parameter. ``lo``/``hi`` bound numbers (``lo_open``: strict lower bound);
+    ``choices`` restrict strings; ``default`` may be a function of the other params."""
+
+    name: str
+    default: object
+    kind: type = float
+    unit: str = ""
+    doc: str = ""
+    lo: float | None = None
+    hi: float | None = None
+    lo_open: bool = False
+    hi_open: bool = False
+    choices: tuple | None = None
+
+    def allowed(self) -> str:
+        if self.choices is not None:
+            return "one of " + ", ".join(map(str, self.choices))
+        if self.kind is str:
+            return "a name (see the parameter's description)"
+        lo = "-inf" if self.lo is None else f"{self.lo:g}"
+        hi = "inf" if self.hi is None else f"{self.hi:g}"
+        kind = "an integer" if self.kind is int else "a number"
+        return f"{kind} in {'(' if self.lo_open or self.lo is None else '['}{lo}, {hi}{')' if self.hi_open or self.hi is None else ']'}"
+
+    def parse(self, value):
+        if value is None and self.default is None:
+            return None  # a parameter computed when not given: resolved sets round-trip
+        try:
+            if self.kind is int:
+                v = float(value)
+                if not v.is_integer():
+                    raise ValueError
+                v = int(v)
+            else:
+                v = self.kind(value)
+        except (TypeError, ValueError):
+            raise InputError(f"{self.name}: {value!r} is not valid; allowed: {self.allowed()}") from None
+        self.check(v)
+        return v
+
+    def check(self, v):
+        bad = False
+        if self.choices is not None:
+            bad = v not in self.choices
+        elif self.kind in (int, float):
+            bad = (not math.isfinite(v)
+                   or (self.lo is not None and (v <= self.lo if self.lo_open else v < self.lo))
+                   or (self.hi is not None and (v >= self.hi if self.hi_open else v > self.hi)))
+        if bad:
+            raise InputError(f"{self.name} = {v!r} is out of range; allowed: {self.allowed()}")

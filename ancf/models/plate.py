@@ -1,0 +1,105 @@
+"""Supported thin-plate models (``plate36`` on a :class:`~ancf.models.plate_mesh.PlateMesh`),
+shared by the scenes ``plate-square`` and ``plate-strip``, the tests and the report.
+
+* :func:`simply_supported_centre`: the simply supported rectangle under uniform pressure,
+  a linear (small-deflection) solve at the flat reference with a sparse direct solver.
+  In-plane coordinates are fixed (at the flat reference the membrane and bending
+  problems decouple), ``w = 0`` and the slope along the edge (``dw/dy`` on x = 0, a;
+  ``dw/dx`` on y = 0, b) vanish on the boundary.
+* :func:`edge_load`: consistent forces of an end load spread uniformly over the edge x = a.
+* :func:`strip_linear_tip` / :func:`strip_model`: the strip clamped at x = 0 (``r``,
+  ``r_x`` and ``r_y`` of every root node, all three components).
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse.linalg as sla
+
+from ancf.core.assembly import Assembly, ElementGroup
+from ancf.core.constraints import Elimination
+from ancf.elements import _generated as shape_gen
+from ancf.elements.plate36 import Plate36
+from ancf.models.plate_mesh import SLOTS, PlateMesh
+from ancf.core.quadrature import gauss01
+
+
+def assembly(m: PlateMesh, h: float, E: float, nu: float, ng: int = 4) -> Assembly:
+    """One group of bending plate elements over the mesh."""
+    return Assembly(m.n_dofs, [ElementGroup(Plate36(m.lengths, m.widths, h=h, E=E, nu=nu, ng=ng),
+                                            m.dofmap)])
+
+
+def _linear_solve(m: PlateMesh, asm: Assembly, fixed: set, f: np.ndarray) -> np.ndarray:
+    """Displacements (n_dofs,) of K u = f at the flat reference, ``fixed`` coordinates zero."""
+    _, K = asm.gradient_tangent(m.reference())
+    free = np.setdiff1d(np.arange(m.n_dofs), sorted(fixed))
+    u = np.zeros(m.n_dofs)
+    u[free] = sla.spsolve(K[free][:, free].tocsc(), f[free])
+    return u
+
+
+def in_plane(m: PlateMesh) -> set:
+    """The x and y components of every nodal coordinate."""
+    return {m.dof(k, s, c) for k in range(m.n_nodes) for s in SLOTS for c in (0, 1)}
+
+
+def simply_supported_centre(n: int, a: float, b: float, h: float, E: float, nu: float,
+                            p: float, ng: int = 4) -> float:
+    """Centre deflection (m, along +z = along a positive pressure p, Pa) of an n x n mesh
+    (n even) of the simply supported a x b plate."""
+    m = PlateMesh(a, b, n, n)
+    fixed = in_plane(m)
+    for k in range(m.n_nodes):
+        on_x, on_y = m.X[k] in (0.0, a), m.Y[k] in (0.0, b)
+        fixed |= {m.dof(k, "r", 2)} if on_x or on_y else set()
+        fixed |= {m.dof(k, "r_y", 2)} if on_x else set()
+        fixed |= {m.dof(k, "r_x", 2)} if on_y else set()
+    u = _linear_solve(m, assembly(m, h, E, nu, ng), fixed, m.pressure_load(p))
+    return float(u[m.dof(m.node(n // 2, n // 2), "r", 2)])
+
+
+def edge_load(m: PlateMesh, P: float) -> np.ndarray:
+    """Consistent forces (n_dofs,) of the end load P (N, along +z) spread uniformly over
+    the edge x = a (2-point Gauss rule along y: exact for the cubic shape functions)."""
+    t, w = gauss01(2)
+    a, b = m.lengths[0], m.widths[0]
+    fe = P / m.b * b * (w @ shape_gen.plate36_S(np.full(2, a), t * b, a, b))
+    f = np.zeros(m.n_dofs)
+    np.add.at(f, m.dofmap[m.nx - 1::m.nx, 2::3], np.broadcast_to(fe, (m.ny, 12)))
+    return f
+
+
+def root(m: PlateMesh) -> list:
+    """Every coordinate (r, r_x, r_y; x, y, z) of the nodes at x = 0."""
+    return [m.dof(k, s, c) for k in range(m.n_nodes) if m.X[k] == 0.0 for s in SLOTS
+            for c in range(3)]
+
+
+def tip_nodes(m: PlateMesh) -> list:
+    """The nodes of the edge x = a."""
+    return [m.node(m.nx, j) for j in range(m.ny + 1)]
+
+
+def strip_linear_tip(nx: int, ny: int, L: float, b: float, h: float, E: float, nu: float,
+                     P: float) -> float:
+    """Mean tip deflection (m, along +z) of the clamped strip L x b under the end load P
+    (N, along +z), linear solve at the reference."""
+    m = PlateMesh(L, b, nx, ny)
+    u = _linear_solve(m, assembly(m, h, E, nu), in_plane(m) | set(root(m)), edge_load(m, P))
+    return float(np.mean([u[m.dof(k, "r", 2)] for k in tip_nodes(m)]))
+
+
+def strip_model(nx: int, ny: int, L: float, b: float, h: float, E: float, nu: float,
+                ng: int = 4):
+    """(mesh, q0, assembly, elimination) of the clamped strip for a nonlinear solve."""
+    m = PlateMesh(L, b, nx, ny)
+    q0 = m.reference()
+    fixed = root(m)
+    return m, q0, assembly(m, h, E, nu, ng), Elimination(m.n_dofs).fix(fixed, q0[fixed])
+
+
+def tip_mean(m: PlateMesh, q: np.ndarray) -> dict:
+    """{tip_x, tip_y, tip_z}: the mean position (m) of the nodes of the edge x = a."""
+    tips = tip_nodes(m)
+    return {f"tip_{c}": float(np.mean([q[m.dof(k, "r", i)] for k in tips]))
+            for i, c in enumerate("xyz")}

@@ -1,0 +1,129 @@
+"""The analytic references (:mod:`analytic`) exposed like scenes: ``ancf analytic NAME``."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from analytic import bechtel, navier_plate, reissner, timoshenko
+from analytic.dynamics_refs import rigid_pendulum, spinning_extension
+from ancf.common.inputs import check_sampling, following, intervals
+from ancf.common.params import Param
+from ancf.scenes.base import Scene, SceneResult
+
+_SECTION = (
+    Param("E", 2.07e11, float, "Pa", "Young's modulus", lo=0, lo_open=True),
+    Param("nu", 0.0, float, "-", "Poisson's ratio", lo=0, hi=0.5, hi_open=True),
+    Param("L", 2.0, float, "m", "beam length", lo=0, lo_open=True),
+    Param("h", 0.1, float, "m", "section height", lo=0, lo_open=True),
+    Param("b", 0.1, float, "m", "section width", lo=0, lo_open=True),
+    Param("ks", 5.0 / 6.0, float, "-", "shear correction factor", lo=0, lo_open=True, hi=2),
+)
+
+
+def _timoshenko(p):
+    w = timoshenko.mid_deflection(p["E"], p["nu"], p["L"], p["h"], p["b"], p["F"], ks=p["ks"])
+    return SceneResult(True, "closed form: " + timoshenko.closed_form_text(), {"mid_deflection_m": w})
+
+
+def _reissner(p):
+    r = reissner.tip_position(p["E"], p["nu"], p["L"], p["h"], p["b"], p["F"], ks=p["ks"])
+    return SceneResult(r.converged, r.message,
+                       {"tip_x": r.tip_x, "tip_y": r.tip_y, "tip_rotation_rad": r.tip_rotation},
+                       extra={"solution": r})
+
+
+def _bechtel(p):
+    return SceneResult(True, "closed form per slip arc, installed mass by Brent's method "
+                       f"(xtol {bechtel.XTOL_N:g} N)", bechtel.results(p))
+
+
+def _navier(p):
+    w, N = navier_plate.centre_deflection(p["a"], p["b"], p["h"], p["E"], p["nu"], p["p"],
+                                          rtol=p["rtol"])
+    return SceneResult(True, f"Navier double series, odd indices up to {N} (tail bound below "
+                       f"rtol = {p['rtol']:g})", {"center_deflection_m": w, "terms": N})
+
+
+def _extension(p):
+    al = math.sqrt(p["rho"] / p["E"]) * p["omega_s"] * p["L"]
+    if al >= math.pi / 2:
+        return SceneResult(False, f"a l = {al:.4g} >= pi/2: no steady state (resonance of the "
+                           "axial mode)", {"axial_extension_m": None, "al": al,
+                                           "axial_extension_thesis_m": None})
+    u = spinning_extension(p["L"], p["E"], p["rho"], p["omega_s"])
+    # the thesis's printed 1.09545e-4 m: rho A with Wu & Haug's tabulated area, E A with b h
+    ut = spinning_extension(p["L"], p["E"], p["rho"] * p["A_mass"] / (p["b"] * p["h"]), p["omega_s"])
+    return SceneResult(True, "closed form (thesis Eq. 2.36)",
+                       {"axial_extension_m": u, "al": al, "axial_extension_thesis_m": ut})
+
+
+def _rigid(p):
+    n = intervals(p["t_end"], p["output_dt"])
+    t = np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
+    try:
+        th, x, y = rigid_pendulum(p["L"], p["g"], t, p["h"])
+    except FloatingPointError as exc:
+        return SceneResult(False, str(exc), {"times": t.tolist(), "theta": None, "tip_x": None,
+                                             "tip_y": None})
+    return SceneResult(True, "theta'' = -(g L / 2) cos(theta) / (L^2/3 + h^2/12), DOP853 rtol 1e-12",
+                       {"times": t.tolist(), "theta": th.tolist(), "tip_x": x.tolist(),
+                        "tip_y": y.tolist()})
+
+
+_NAVIER = (
+    Param("a", 1.0, float, "m", "plate side along x", lo=0, lo_open=True, hi=1e3),
+    Param("b", 1.0, float, "m", "plate side along y", lo=0, lo_open=True, hi=1e3),
+    Param("h", 0.01, float, "m", "thickness", lo=0, lo_open=True, hi=1e2),
+    Param("E", 2.1e11, float, "Pa", "Young's modulus", lo=0, lo_open=True),
+    Param("nu", 0.3, float, "-", "Poisson's ratio", lo=0, hi=0.5, hi_open=True),
+    Param("p", 1e3, float, "Pa", "uniform pressure (deflection positive along it)", lo=-1e12, hi=1e12),
+    Param("rtol", 1e-10, float, "-", "relative truncation tolerance of the series", lo=1e-14, hi=1e-2),
+)
+
+
+def _with(params, **defaults):
+    return tuple(Param(p.name, defaults.get(p.name, p.default), p.kind, p.unit, p.doc, p.lo, p.hi,
+                       p.lo_open, p.hi_open, p.choices) for p in params)
+
+
+REFERENCES = {
+    "timoshenko": Scene(
+        "timoshenko", "Simply supported Timoshenko beam, midspan load (SymPy-derived).",
+        _SECTION + (Param("F", -1000.0, float, "N", "vertical midspan force"),), _timoshenko),
+    "reissner": Scene(
+        "reissner", "Geometrically exact (Reissner) cantilever, dead tip load (BVP, scipy).",
+        _with(_SECTION, nu=0.3) + (Param("F", lambda v: -5e8 * v["h"] ** 3, float, "N",
+                                         "vertical tip force (default -5e8 h^3)"),), _reissner),
+    "bechtel": Scene(
+        "bechtel", "Bechtel et al.'s steady extensible belt on two pulleys, stick and slip arcs "
+        "(thesis 4.1; Model 2).", bechtel.PARAMS, _bechtel),
+    "navier-plate": Scene(
+        "navier-plate", "Simply supported Kirchhoff plate under uniform pressure: Navier series "
+        "centre deflection (D = E h^3 / (12 (1 - nu^2))).", _NAVIER, _navier),
+}
+
+DYNAMIC_REFERENCES = {
+    "spinning-extension": Scene(
+        "spinning-extension", "Steady axial extension of a spinning beam (thesis Eq. 2.36).",
+        (Param("L", 8.0, float, "m", "beam length", lo=0, lo_open=True),
+         Param("E", 6.895e10, float, "Pa", "Young's modulus", lo=0, lo_open=True),
+         Param("rho", 2766.67, float, "kg/m^3", "density", lo=0, lo_open=True),
+         Param("omega_s", 4.0, float, "rad/s", "steady angular velocity", lo=0),
+         Param("b", 1.986e-3, float, "m", "section width (thesis)", lo=0, lo_open=True),
+         Param("h", 3.675e-2, float, "m", "section height (thesis)", lo=0, lo_open=True),
+         Param("A_mass", 7.2968e-5, float, "m^2",
+               "area in rho A of the thesis variant (Wu & Haug's tabulated A)", lo=0, lo_open=True)),
+        _extension),
+    "rigid-pendulum": Scene(
+        "rigid-pendulum", "Rigid compound pendulum released horizontally (numerical, rtol 1e-12).",
+        (Param("L", 2.0, float, "m", "length", lo=0, lo_open=True),
+         Param("g", 9.81, float, "m/s^2", "gravitational acceleration", lo=0),
+         Param("h", 0.0, float, "m", "section height (0: slender rod, the stated reference)", lo=0),
+         Param("t_end", 1.0, float, "s", "simulated time", lo=0, lo_open=True, hi=1e4),
+         Param("output_dt", following(0.01, "t_end"), float, "s",
+               "sampling interval (default 0.01 s, at most t_end)", lo=0, lo_open=True, hi=10)),
+        _rigid, check_sampling),
+}
+
+REFERENCES.update(DYNAMIC_REFERENCES)

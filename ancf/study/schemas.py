@@ -1,0 +1,312 @@
+"""JSON schemas of the public output of ``ancf run SCENE --json`` and ``ancf analytic NAME
+--json``: one per scene and per analytic reference, generated from declarations.
+
+The top level is the same for all (``scene``, ``params``, ``converged``, ``message``,
+``results``, ``cpu_time_s``, ``warnings``); ``params`` follows the scene's parameter
+declarations (:class:`ancf.scenes.base.Param`); ``results`` follows :data:`RESULTS` below,
+the one place where a result key is declared: its JSON type, whether it is always present
+and whether it is ``null`` when the run does not converge.  Result keys not declared are
+an error of the schema (``additionalProperties: false``), so a new result key must be
+declared here, which publishes it (``python -m ancf.study.schemas`` writes
+``reports/schemas.md``).  :func:`validate` is a small validator for the subset of JSON
+Schema used (type, properties, required, additionalProperties, items), so that the suite
+needs no extra dependency.
+"""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+NUM, INT, STR, BOOL = "number", "integer", "string", "boolean"
+
+
+def field(kind: str, doc: str, nullable: bool = False, required: bool = True,
+          items: str | None = None, keys: dict | None = None) -> dict:
+    """Declaration of one result key (``items``: the element type of an array; ``keys``:
+    the declarations of an object's keys)."""
+    return {"kind": kind, "doc": doc, "nullable": nullable, "required": required,
+            "items": items, "keys": keys}
+
+
+def series(doc: str) -> dict:
+    """A sampled time history: an array of numbers (null where not finite)."""
+    return field("array", doc, items=NUM)
+
+
+_STATIC = {
+    "newton_iterations": field(INT, "Newton iterations over all load steps"),
+    "load_steps_taken": field(INT, "converged load steps"),
+    "load_factor": field(NUM, "load factor reached (1 when converged)"),
+    "tangent_evaluations": field(INT, "tangent-stiffness evaluations", required=False),
+    "factorizations": field(INT, "factorisations of the tangent", required=False),
+    "negative_tangent_eigenvalues": field(
+        INT, "negative eigenvalues of the reduced tangent at the solution (absent when Newton "
+             "stopped; null when the model is too large for the dense check)",
+        nullable=True, required=False),
+    "zero_tangent_eigenvalues": field(INT, "zero eigenvalues of the reduced tangent",
+                                      nullable=True, required=False),
+    "lowest_tangent_eigenvalue_rel": field(NUM, "lowest eigenvalue / largest |eigenvalue|",
+                                           nullable=True, required=False),
+}
+
+_DYNAMIC = {
+    "times": series("sample times, s"),
+    "integrator": field(STR, "time integrator used"),
+    "steps": field(INT, "accepted time steps"),
+    "nfev": field(INT, "force evaluations"),
+    "njev": field(INT, "Jacobian (tangent) evaluations"),
+    "nlu": field(INT, "LU factorisations"),
+    "newton_iterations": field(INT, "Newton iterations (implicit integrators)"),
+    "rejected_steps": field(INT, "rejected time steps"),
+    "integration_cpu_s": field(NUM, "CPU time of the integration, s"),
+    "constraint_violation_m": field(NUM, "largest constraint violation, m", nullable=True),
+    "samples": field(INT, "number of samples"),
+    "t_reached": field(NUM, "last time reached, s"),
+}
+
+
+def _nullable(doc: str) -> dict:
+    return field(NUM, doc, nullable=True)
+
+
+_BELT_STEADY = {
+    "T_tight_N": _nullable("tight-span tension, N"), "T_slack_N": _nullable("slack-span tension, N"),
+    "v_tight": _nullable("tight-span speed (= omega R of the driver), m/s"),
+    "v_slack": _nullable("slack-span speed (= omega R of the driven pulley), m/s"),
+    "slip_arc_driver_rad": _nullable("slip arc on the driver, rad"),
+    "slip_arc_driven_rad": _nullable("slip arc on the driven pulley, rad"),
+    "omega_ratio": _nullable("omega_driven / omega_driver = v_slack / v_tight"),
+    "max_torque_Nm": _nullable("largest transmissible torque (slip over the whole wrap), N m")}
+
+#: result keys per scene / analytic reference
+RESULTS = {
+    "simply-supported": {**_STATIC, "mid_deflection_m": _nullable("midpoint deflection, m")},
+    "cantilever": {**_STATIC, "tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m")},
+    "axial-bar": {**_STATIC, "elongation_m": _nullable("elongation, m"),
+                  "tip_reaction_y_N": _nullable("transverse reaction at the tip support, N")},
+    "pendulum": {
+        **_DYNAMIC, "tip_x": series("tip x, m"), "tip_y": series("tip y, m"),
+        "energy_max_deviation_J": _nullable("largest |E(t) - E(0)|, J"),
+        "energy_kinetic": series("kinetic energy, J"),
+        "energy_potential": series("gravitational potential energy, J"),
+        "energy_strain": series("strain energy, J"), "energy_total": series("total energy, J")},
+    "spinning-beam": {
+        **_DYNAMIC, "tip_dx": series("tip minus rigid shadow tip, x, m"),
+        "tip_dy": series("tip minus rigid shadow tip, y, m"),
+        "tip_axial": series("tip deviation along the rotating beam axis, m"),
+        "tip_lateral": series("tip deviation across the rotating beam axis, m"),
+        "hub_angle": series("hub angle, rad"), "extension": series("centreline elongation, m"),
+        "axial_extension_m": _nullable("mean elongation over the last mean_window s, m"),
+        "axial_extension_std_m": _nullable("its standard deviation, m"),
+        "tip_axial_mean_m": _nullable("mean axial tip deviation over the window, m"),
+        "max_abs_tip_lateral_m": _nullable("largest |lateral tip deviation|, m"),
+        "frame": field(STR, "frame of the tip_axial / tip_lateral components")},
+    "belt-free-static": {
+        "radius_mean_m": _nullable("mean distance of the centreline from its centroid, m"),
+        "radius_max_dev_m": _nullable("largest deviation of that distance from its mean, m"),
+        "radius_reference_m": field(NUM, "belt_length / (2 pi), the circle's radius, m"),
+        "newton_iterations": field(INT, "Newton iterations"),
+        "residual_initial": field(NUM, "largest generalised force at the wrapped shape, N"),
+        "residual_final": field(NUM, "largest generalised force at the last iterate, N")},
+    "belt2d": {
+        **_DYNAMIC,
+        "omega_driver": series("driver angular velocity (Eq. 3.29), rad/s"),
+        "omega_driven": series("driven pulley angular velocity, rad/s"),
+        "omega_ratio_steady": _nullable("mean omega_driven / mean omega_driver over the last "
+                                        "0.1 s (null before the driver turns)"),
+        "mid_tight_y_m": series("tight (upper) span: where the belt crosses the span's "
+                                "perpendicular bisector, y, m"),
+        "mid_slack_y_m": series("slack (lower) span: the same, m"),
+        "tension_tight_N": _nullable("tight span: mean axial force over its middle third at "
+                                     "t_end, N"),
+        "tension_slack_N": _nullable("slack span: the same, N"),
+        "tension_tight_mean_N": _nullable("tight span tension averaged over the samples of the "
+                                          "last 0.1 s (the instantaneous one carries the span "
+                                          "and pulley oscillations), N"),
+        "tension_slack_mean_N": _nullable("slack span: the same, N"),
+        "penetration_max_m": _nullable("largest penetration of the belt's centreline sample "
+                                       "points into a pulley at t_end, m"),
+        "contact_dofs": field(INT, "belt coordinates of the elements touching a pulley at t_end",
+                              nullable=True),
+        "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle", nullable=True),
+        "contact_pairs": field(INT, "element-pulley pairs whose Gauss points were evaluated "
+                                    "(after the bounding test), summed over force evaluations"),
+        "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
+                                            "(0: start = laid)")},
+    "belt3d": {
+        **_DYNAMIC,
+        "omega_driver": series("driver angular velocity (Eq. 3.29), rad/s"),
+        "omega_driven": series("driven pulley angular velocity, rad/s"),
+        "slip_driven": _nullable("1 - mean omega_driven / mean omega_driver over the last "
+                                 "steady_window (null before the driver turns)"),
+        "T_tight_N": _nullable("tight (upper) span: mean tension k eps of strain_measure over its "
+                               "middle third at t_end, along the edge y = 0, N"),
+        "T_slack_N": _nullable("slack (lower) span: the same, N"),
+        "v_tight": _nullable("tight span: mean belt speed along the tangent at t_end, m/s"),
+        "v_slack": _nullable("slack span: the same, m/s"),
+        "tensions": field("object", "span tensions per measure (green, true, almansi: k eps; "
+                          "membrane: the element's own axial force), N", nullable=True,
+                          keys={m: field("object", f"{m}: tight and slack, N",
+                                         keys={"tight": field(NUM, "tight span, N"),
+                                               "slack": field(NUM, "slack span, N")})
+                                for m in ("green", "true", "almansi", "membrane")}),
+        "torque_from_tensions_Nm": _nullable("(T_tight - T_slack) R of strain_measure, N m"),
+        "torques_from_tensions_Nm": field("object", "(T_tight - T_slack) R per measure, N m",
+                                          nullable=True,
+                                          keys={m: field(NUM, f"{m}, N m") for m in
+                                                ("green", "true", "almansi", "membrane")}),
+        "torque_from_friction_Nm": _nullable("moment of the contact (friction) forces on the "
+                                             "driven pulley at t_end, N m"),
+        "penetration_max_m": _nullable("largest penetration of a contact point at t_end, m"),
+        "contact_pairs": field(INT, "element-pulley pairs whose points were evaluated (after the "
+                                    "bounding test), summed over force evaluations"),
+        "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
+                                            "(0: start = laid)"),
+        "belt_length_m": field(NUM, "reference (unstretched) belt length used, m"),
+        "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle")},
+    "plate-square": {
+        "center_deflection_m": _nullable("centre deflection along the pressure (linear solve), m"),
+        "navier_center_deflection_m": _nullable("Navier's series at the same parameters, m"),
+        "navier_terms": field(INT, "largest odd index of Navier's series summed"),
+        "relative_error": _nullable("center_deflection_m / navier_center_deflection_m - 1"),
+        "tangent_evaluations": field(INT, "tangent-stiffness evaluations (1: a linear solve)"),
+        "factorizations": field(INT, "factorisations of the tangent (1)")},
+    "plate-strip": {**_STATIC, "tip_x": _nullable("mean x of the tip-edge nodes, m"),
+                    "tip_y": _nullable("mean y of the tip-edge nodes (b/2 by symmetry), m"),
+                    "tip_z": _nullable("mean z of the tip-edge nodes (along the load), m")},
+    "beam3d-cantilever": {**_STATIC, "tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
+                          "tip_z": _nullable("tip z, m")},
+    "navier-plate": {"center_deflection_m": _nullable("centre deflection along the pressure, m"),
+                     "terms": field(INT, "largest odd series index summed")},
+    "timoshenko": {"mid_deflection_m": _nullable("midspan deflection, m")},
+    "reissner": {"tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
+                 "tip_rotation_rad": _nullable("tip section rotation, rad")},
+    "spinning-extension": {
+        "axial_extension_m": _nullable("steady axial extension (Eq. 2.36), m"),
+        "al": _nullable("the parameter a L of Eq. 2.36"),
+        "axial_extension_thesis_m": _nullable("the same as printed in the thesis, m")},
+    "bechtel": {**_BELT_STEADY, "capstan": field("object", "the same keys with the belt's "
+                                                 "inertia neglected (capstan model)",
+                                                 keys=_BELT_STEADY)},
+    "rigid-pendulum": {"times": series("sample times, s"), "theta": series("angle, rad"),
+                       "tip_x": series("tip x, m"), "tip_y": series("tip y, m")},
+}
+
+_PARAM_TYPES = {float: NUM, int: INT, str: STR, bool: BOOL}
+
+
+def _type(kind: str, nullable: bool):
+    return [kind, "null"] if nullable else kind
+
+
+def _result_schema(decl: dict) -> dict:
+    props = {}
+    for k, f in decl.items():
+        props[k] = {"type": _type(f["kind"], f["nullable"]), "description": f["doc"]}
+        if f["items"]:
+            props[k]["items"] = {"type": [f["items"], "null"]}
+        if f["keys"]:
+            props[k].update({kk: v for kk, v in _result_schema(f["keys"]).items() if kk != "type"})
+    return {"type": "object", "properties": props, "additionalProperties": False,
+            "required": [k for k, f in decl.items() if f["required"]]}
+
+
+def _params_schema(scene) -> dict:
+    props = {p.name: {"type": _type(_PARAM_TYPES[p.kind], p.default is None),
+                      "description": f"{p.doc} ({p.unit})" if p.unit else p.doc}
+             for p in scene.params}
+    return {"type": "object", "properties": props, "additionalProperties": False,
+            "required": list(props)}
+
+
+def registries() -> dict:
+    """{name: (command, Scene)} of every scene and analytic reference."""
+    from ancf.scenes.analytic import REFERENCES
+    from ancf.scenes import SCENES
+    return {**{n: ("run", s) for n, s in SCENES.items()},
+            **{n: ("analytic", s) for n, s in REFERENCES.items()}}
+
+
+def schema(name: str) -> dict:
+    """The JSON schema of ``ancf run|analytic NAME --json``."""
+    command, sc = registries()[name]
+    props = {"scene": {"type": STR, "const": name}, "params": _params_schema(sc),
+             "converged": {"type": BOOL}, "message": {"type": STR},
+             "results": _result_schema(RESULTS[name]), "cpu_time_s": {"type": NUM},
+             "warnings": {"type": "array", "items": {"type": STR},
+                          "description": "accuracy warnings, empty when none"}}
+    return {"$schema": "https://json-schema.org/draft/2020-12/schema",
+            "title": f"ancf {command} {name} --json", "type": "object", "properties": props,
+            "required": list(props), "additionalProperties": False}
+
+
+_CHECK = {NUM: lambda v: isinstance(v, (int, float)) and not isinstance(v, bool),
+          INT: lambda v: isinstance(v, int) and not isinstance(v, bool),
+          STR: lambda v: isinstance(v, str), BOOL: lambda v: isinstance(v, bool),
+          "null": lambda v: v is None, "array": lambda v: isinstance(v, list),
+          "object": lambda v: isinstance(v, dict)}
+
+
+def validate(value, sch: dict, path: str = "$") -> list[str]:
+    """Violations of ``sch`` by ``value`` (empty when valid), one line each with its path."""
+    types = sch.get("type")
+    types = [types] if isinstance(types, str) else types
+    if types and not any(_CHECK[t](value) for t in types):
+        return [f"{path}: {type(value).__name__} is not {' or '.join(types)}"]
+    if "const" in sch and value != sch["const"]:
+        return [f"{path}: {value!r} is not {sch['const']!r}"]
+    errors = []
+    if isinstance(value, dict):
+        props = sch.get("properties", {})
+        errors += [f"{path}: missing key {k!r}" for k in sch.get("required", ()) if k not in value]
+        for k, v in value.items():
+            if k in props:
+                errors += validate(v, props[k], f"{path}.{k}")
+            elif sch.get("additionalProperties") is False:
+                errors.append(f"{path}: undeclared key {k!r}")
+    if isinstance(value, list) and "items" in sch:
+        for i, v in enumerate(value):
+            errors += validate(v, sch["items"], f"{path}[{i}]")
+    return errors
+
+
+def _type_text(s: dict) -> str:
+    t = s["type"]
+    text = " or ".join(t) if isinstance(t, list) else t
+    return text + (f" of {' or '.join(s['items']['type'])}" if "items" in s else "")
+
+
+def schemas_markdown() -> str:
+    """reports/schemas.md: every schema as a table, and as JSON."""
+    import json
+    parts = ["# JSON output schemas\n",
+             "Generated from `ancf/study/schemas.py` (`python -m ancf.study.schemas`); do not edit. One "
+             "schema per `ancf run SCENE --json` and `ancf analytic NAME --json`; the suite "
+             "validates every scene's and reference's default run against it "
+             "(`tests/test_schemas.py`). Top level: `scene`, `params` (every parameter used), "
+             "`converged`, `message`, `results`, `cpu_time_s`, `warnings` (a list of strings, "
+             "empty when none). Result keys marked nullable are `null` where the run did not "
+             "converge; optional keys are absent when the solver did not get that far.\n"]
+    for name, (command, _) in registries().items():
+        s = schema(name)
+        res = s["properties"]["results"]
+        parts += [f"## `ancf {command} {name}`\n", "| result key | type | required | meaning |",
+                  "|---|---|---|---|"]
+        parts += [f"| `{k}` | {_type_text(v)} | {'yes' if k in res['required'] else 'no'} | "
+                  f"{v['description']} |" for k, v in res["properties"].items()]
+        parts += ["", "<details><summary>JSON schema</summary>\n", "```json",
+                  json.dumps(s, indent=1, ensure_ascii=False), "```", "</details>\n"]
+    return "\n".join(parts)
+
+
+def main(argv=None) -> int:
+    """``python -m ancf.study.schemas [FILE]``: write the Markdown (default reports/schemas.md)."""
+    argv = sys.argv[1:] if argv is None else argv
+    out = Path(argv[0]) if argv else Path(__file__).resolve().parents[1] / "reports" / "schemas.md"
+    out.write_text(schemas_markdown())
+    print(out)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,663 @@
+"""Parameter sweeps: the cartesian product of parameter values, run in parallel.
+
+``ancf sweep SCENE --grid key=v1,v2 [--grid ...]`` (or :func:`run_sweep`) runs every
+combination in worker processes, one row per run, into a Parquet or CSV file:
+
+* the row holds the key (a hash of the scene and every resolved parameter value), the
+  parameters (one column each, all values used), ``status`` (``ok``, ``not-converged``,
+  ``failed``, ``timeout``, ``invalid``, ``worker-died``), ``converged``, ``message``,
+  ``error`` against the scene's reference (:mod:`ancf.study.references`), ``reference``,
+  ``cpu_time_s`` (process CPU time of the run), ``wall_time_s``, ``steps`` (load steps
+  or time steps), ``iterations`` (Newton iterations), ``session`` (which invocation
+  computed it) and the scalar results as ``res_<name>`` (list results: their last value
+  as ``res_<name>_final``);
+* runs are deterministic (one BLAS thread per worker) and resumable: every finished row
+  is appended at once to ``FILE.journal.jsonl``; a new call with the same file skips the
+  keys already there (``retry_failed`` reruns failed / timed-out ones) and the journal is
+  folded into FILE at the end, also after Ctrl-C;
+* each run happens in a separate worker process, killed when it exceeds ``time_limit``
+  (the row says ``time limit exceeded (X s)``); an exception or a crash of the worker
+  becomes a failed row with its message; the other runs go on;
+* ``scheduler=ADDRESS`` runs the same tasks on a Dask cluster (dask.distributed); each
+  Dask worker thread drives one such worker process, so time limits, isolation and
+  the numbers are the same as on one machine.
+"""
+from __future__ import annotations
+
+import itertools
+import json
+import math
+import os
+import selectors
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import traceback
+from collections import deque
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from ancf.study.references import ReferenceFailed, spec, stable_hash
+from ancf.common.threads import BLAS_ENV
+from ancf.common.params import InputError
+
+STATUSES = ("ok", "not-converged", "failed", "timeout", "invalid", "worker-died")
+RETRY = ("failed", "timeout", "worker-died")
+_ENV = {**BLAS_ENV, "PYTHONWARNINGS": "ignore"}
+
+
+# ---------------------------------------------------------------------------------------
+# grids and tasks
+# ---------------------------------------------------------------------------------------
+
+def parse_grid(scene: str, items) -> dict:
+    """``["n_elements=2,4,8", "integration=thesis;normal=2x2,shear=1x1"]`` -> {name: [values]}.
+    Values are separated by ',' (or by ';' when a value itself holds commas) and parsed
+    by the scene's parameter (bad values raise InputError naming the field)."""
+    from ancf.scenes import SCENES
+    sc = SCENES[scene]
+    params = {p.name: p for p in sc.params}
+    grid = {}
+    for item in items or []:
+        if "=" not in item:
+            raise InputError(f"--grid {item!r}: expected key=v1,v2,...")
+        k, v = item.split("=", 1)
+        k = k.strip()
+        if k not in params:
+            raise InputError(f"{k}: unknown parameter of scene {scene!r}; allowed: "
+                             f"{', '.join(params)}")
+        vals = [s.strip() for s in (v.split(";") if ";" in v else v.split(",")) if s.strip()]
+        if not vals:
+            raise InputError(f"--grid {item!r}: no values")
+        grid[k] = list(dict.fromkeys(params[k].parse(s) for s in vals))
+    return grid
+
+
+def expand(grids, fixed: dict | None = None) -> list[dict]:
+    """Union of the cartesian products of ``grids`` (a dict or a list of dicts), each
+    combination merged over ``fixed``; deterministic order, duplicates removed."""
+    if isinstance(grids, dict):
+        grids = [grids]
+    out, seen = [], set()
+    for g in grids:
+        keys = list(g)
+        for combo in itertools.product(*(g[k] for k in keys)):
+            ov = dict(fixed or {})
+            ov.update(zip(keys, combo))
+            h = json.dumps(ov, sort_keys=True, default=str)
+            if h not in seen:
+                seen.add(h)
+                out.append(ov)
+    return out
+
+
+def run_key(scene: str, params: dict) -> str:
+    return stable_hash({"scene": scene, "params": params})
+
+
+def make_tasks(scene: str, overrides: list[dict], reference: str | None = None) -> list[dict]:
+    """Resolve every combination, key it, and attach the reference values (computed
+    once per distinct physical problem, in this process)."""
+    from ancf.scenes import SCENES
+    sc = SCENES[scene]
+    s = spec(scene)
+    ref = s.reference(reference)
+    refs: dict = {}
+    tasks = []
+    for i, ov in enumerate(overrides):
+        t = {"index": i, "scene": scene, "reference": ref.name, "ref_values": None,
+             "ref_error": None}
+        try:
+            params = sc.resolve(ov)
+        except InputError as exc:
+            t.update(params=None, overrides={k: _jsonable(v) for k, v in ov.items()},
+                     invalid=str(exc), key=stable_hash({"scene": scene, "overrides": ov}))
+            tasks.append(t)
+            continue
+        t.update(params={k: _jsonable(v) for k, v in params.items()},
+                 key=run_key(scene, params))
+        pk = stable_hash(s.physical(params))
+        if pk not in refs:
+            try:
+                refs[pk] = (ref.values(params), None)
+            except (ReferenceFailed, ValueError) as exc:
+                refs[pk] = (None, str(exc))
+        t["ref_values"], t["ref_error"] = refs[pk]
+        tasks.append(t)
+    return tasks
+
+
+def _jsonable(v):
+    if isinstance(v, np.generic):
+        return v.item()
+    return v
+
+
+# ---------------------------------------------------------------------------------------
+# one run (in a worker process)
+# ---------------------------------------------------------------------------------------
+
+def _base_row(task: dict) -> dict:
+    row = {"key": task["key"], "scene": task["scene"]}
+    row.update(task.get("params") or task.get("overrides") or {})
+    row.update(status=None, converged=False, message="", error=float("nan"),
+               reference=task["reference"], cpu_time_s=float("nan"), wall_time_s=float("nan"),
+               steps=None, iterations=None)
+    return row
+
+
+def failure_row(task: dict, status: str, message: str, wall: float = float("nan")) -> dict:
+    row = _base_row(task)
+    row.update(status=status, message=message, wall_time_s=wall)
+    return row
+
+
+def run_case(task: dict) -> dict:
+    """Run one task; never raises (failures become rows)."""
+    from ancf.scenes import SCENES
+    if task.get("invalid"):
+        return failure_row(task, "invalid", f"invalid input: {task['invalid']}", 0.0)
+    row = _base_row(task)
+    t0 = time.perf_counter()
+    try:
+        with np.errstate(all="ignore"):
+            out, _ = SCENES[task["scene"]].execute(task["params"])
+    except InputError as exc:
+        return failure_row(task, "invalid", f"invalid input: {exc}", time.perf_counter() - t0)
+    except Exception as exc:  # noqa: BLE001 - a failing run is data, not a crash
+        tb = traceback.extract_tb(exc.__traceback__)
+        where = f" at {Path(tb[-1].filename).name}:{tb[-1].lineno}" if tb else ""
+        return failure_row(task, "failed", f"{type(exc).__name__}: {exc}{where}",
+                           time.perf_counter() - t0)
+    wall = time.perf_counter() - t0
+    res = out["results"] or {}
+    row.update(converged=bool(out["converged"]), message=out["message"],
+               cpu_time_s=float(out["cpu_time_s"]), wall_time_s=wall)
+    row["steps"] = res.get("steps", res.get("load_steps_taken"))
+    row["iterations"] = res.get("newton_iterations")
+    for k, v in res.items():
+        if isinstance(v, (list, tuple)):
+            if v and isinstance(v[-1], (int, float)) and not isinstance(v[-1], bool):
+                row[f"res_{k}_final"] = float(v[-1])
+        elif v is None or isinstance(v, (bool, int, float, str)):
+            row[f"res_{k}"] = v
+    if not out["converged"]:
+        row["status"] = "not-converged"
+        return row
+    bad = [k for k, v in res.items() if isinstance(v, float) and not math.isfinite(v)]
+    if bad:
+        row.update(status="failed", converged=False,
+                   message=f"non-finite result ({', '.join(bad)}) reported as converged")
+        return row
+    row["status"] = "ok"
+    if task.get("ref_values") is not None:
+        try:
+            ref = spec(task["scene"]).reference(task["reference"])
+            err = float(ref.error(res, task["ref_values"], out["params"]))
+        except Exception as exc:  # noqa: BLE001
+            err, row["message"] = float("nan"), f"{out['message']}; error not computed: {exc}"
+        if not math.isfinite(err):
+            row.update(status="failed", message=f"{out['message']}; error against "
+                       f"{task['reference']} is not finite")
+        row["error"] = err
+    else:
+        row["message"] = f"{out['message']}; reference unavailable: {task.get('ref_error')}"
+    return row
+
+
+def _worker_main() -> int:
+    """``python -m ancf.study.sweep --worker``: read tasks (JSON lines) on stdin, write rows on
+    the original stdout; anything the scenes print goes to stderr."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the driver decides when to stop
+    out = os.fdopen(os.dup(1), "w")
+    os.dup2(2, 1)
+    sys.stdout = sys.stderr
+    from ancf.scenes import SCENES  # warm the imports and the compiled kernels (a
+    SCENES["axial-bar"].execute({"n_elements": 1})  # one-element solve) before saying ready
+    out.write(json.dumps({"ready": os.getpid()}) + "\n")
+    out.flush()
+    for line in sys.stdin:
+        if not line.strip():
+            continue
+        row = run_case(json.loads(line))
+        out.write(json.dumps(row) + "\n")
+        out.flush()
+    return 0
+
+
+# ---------------------------------------------------------------------------------------
+# worker processes
+# ---------------------------------------------------------------------------------------
+
+class _Runner:
+    """One worker process (``python -m ancf.study.sweep --worker``) and its line protocol."""
+
+    def __init__(self):
+        self.err = tempfile.TemporaryFile()
+        env = dict(os.environ, **_ENV)
+        root = str(Path(__file__).resolve().parents[1])
+        env["PYTHONPATH"] = root + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
+        self.proc = subprocess.Popen([sys.executable, "-m", "ancf.study.sweep", "--worker"],
+                                     stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                     stderr=self.err, env=env, start_new_session=True)
+        self.fd = self.proc.stdout.fileno()
+        os.set_blocking(self.fd, False)
+        self.buf = b""
+        self.task = None
+        self.t0 = 0.0
+        self.ready = False
+
+    def send(self, task: dict) -> None:
+        self.task, self.t0 = task, time.monotonic()
+        self.proc.stdin.write((json.dumps(task) + "\n").encode())
+        self.proc.stdin.flush()
+
+    def feed(self):
+        """New complete messages, or None at end of file (the worker died)."""
+        try:
+            data = os.read(self.fd, 1 << 20)
+        except BlockingIOError:
+            return []
+        if not data:
+            return None
+        self.buf += data
+        *lines, self.buf = self.buf.split(b"\n")
+        return [json.loads(x) for x in lines if x.strip()]
+
+    def stderr_tail(self, n: int = 400) -> str:
+        try:
+            self.err.seek(0)
+            text = self.err.read().decode(errors="replace").strip()
+        except (OSError, ValueError):
+            return ""
+        return (": " + text[-n:].replace("\n", " | ")) if text else ""
+
+    def kill(self) -> None:
+        if self.proc.poll() is None:
+            try:
+                os.killpg(self.proc.pid, signal.SIGKILL)
+            except (ProcessLookupError, PermissionError):
+                self.proc.kill()
+        self.proc.wait()
+        self._close()
+
+    def close(self) -> None:
+        """Ask the worker to finish (end of input), then kill it if it does not."""
+        try:
+            self.proc.stdin.close()
+        except (OSError, BrokenPipeError):
+            pass
+        try:
+            self.proc.wait(timeout=2)
+        except subprocess.TimeoutExpired:
+            self.kill()
+        self._close()
+
+    def _close(self):
+        for f in (self.proc.stdin, self.proc.stdout, self.err):
+            try:
+                f.close()
+            except (OSError, BrokenPipeError, ValueError):
+                pass
+
+    def died_row(self, task) -> dict:
+        code = self.proc.wait()
+        how = f"killed by signal {-code}" if code < 0 else f"exit code {code}"
+        return failure_row(task, "worker-died", f"worker process died ({how}){self.stderr_tail()}",
+                           time.monotonic() - self.t0)
+
+    def wait_ready(self, timeout: float = 120.0) -> None:
+        deadline = time.monotonic() + timeout
+        sel = selectors.DefaultSelector()
+        sel.register(self.fd, selectors.EVENT_READ)
+        try:
+            while not self.ready:
+                if not sel.select(max(deadline - time.monotonic(), 0.0)):
+                    raise RuntimeError("sweep worker did not start in time" + self.stderr_tail())
+                msgs = self.feed()
+                if msgs is None:
+                    raise RuntimeError("sweep worker failed to start" + self.stderr_tail())
+                self.ready = any("ready" in m for m in msgs)
+        finally:
+            sel.close()
+
+    def run_blocking(self, task: dict, time_limit: float) -> dict:
+        """Send one task and wait for its row (or kill on the time limit)."""
+        self.send(task)
+        sel = selectors.DefaultSelector()
+        sel.register(self.fd, selectors.EVENT_READ)
+        try:
+            while True:
+                left = self.t0 + time_limit - time.monotonic()
+                if left <= 0 or not sel.select(left):
+                    if time.monotonic() - self.t0 < time_limit:
+                        continue
+                    self.kill()
+                    return failure_row(task, "timeout", f"time limit exceeded ({time_limit:g} s)",
+                                       time.monotonic() - self.t0)
+                msgs = self.feed()
+                if msgs is None:
+                    return self.died_row(task)
+                for m in msgs:
+                    if "key" in m:
+                        self.task = None
+                        return m
+        finally:
+            sel.close()
+
+
+def _run_local(todo: list[dict], workers: int, time_limit: float):
+    """Yield one row per task, running ``workers`` worker processes at a time."""
+    pending = deque(todo)
+    sel = selectors.DefaultSelector()
+    runners: list[_Runner] = []
+
+    def spawn():
+        r = _Runner()
+        sel.register(r.fd, selectors.EVENT_READ, r)
+        runners.append(r)
+
+    def retire(r, kill):
+        sel.unregister(r.fd)
+        runners.remove(r)
+        (r.kill if kill else r.close)()
+
+    try:
+        for _ in range(max(1, min(workers, len(todo)))):
+            spawn()
+        while pending or any(r.task is not None for r in runners):
+            for r in runners:
+                if r.ready and r.task is None and pending:
+                    r.send(pending.popleft())
+            busy = [r for r in runners if r.task is not None]
+            wait = min([r.t0 + time_limit - time.monotonic() for r in busy] + [1.0])
+            for key, _ in sel.select(max(wait, 0.005)):
+                r = key.data
+                msgs = r.feed()
+                if msgs is None:
+                    task, was_ready = r.task, r.ready
+                    row = r.died_row(task) if task is not None else None
+                    tail = r.stderr_tail()
+                    retire(r, kill=True)
+                    if not was_ready:
+                        raise RuntimeError("sweep worker failed to start" + tail)
+                    spawn()
+                    if row is not None:
+                        yield row
+                    continue
+                for m in msgs:
+                    if "ready" in m:
+                        r.ready = True
+                    elif "key" in m:
+                        r.task = None
+                        yield m
+            now = time.monotonic()
+            for r in [r for r in runners if r.task is not None and now - r.t0 > time_limit]:
+                task = r.task
+                retire(r, kill=True)
+                spawn()
+                yield failure_row(task, "timeout", f"time limit exceeded ({time_limit:g} s)",
+                                  now - r.t0)
+    finally:
+        for r in list(runners):
+            r.kill() if r.task is not None else r.close()
+        sel.close()
+
+
+_LOCAL = threading.local()
+SCHEDULER_TIMEOUT = 5.0  # s to reach a Dask scheduler
+
+
+def dask_run(task: dict, time_limit: float) -> dict:
+    """Dask task: run one case in this Dask worker thread's own worker process."""
+    r = getattr(_LOCAL, "runner", None)
+    if r is None or r.proc.poll() is not None:
+        r = _LOCAL.runner = _Runner()
+        r.wait_ready()
+    row = r.run_blocking(task, time_limit)
+    if row["status"] in ("timeout", "worker-died"):
+        _LOCAL.runner = None
+    return row
+
+
+def _connect(address):
+    """A Dask client, or one line naming the address after SCHEDULER_TIMEOUT seconds."""
+    from distributed import Client
+    try:
+        return Client(address, timeout=SCHEDULER_TIMEOUT)
+    except OSError:  # TimeoutError is an OSError
+        raise InputError(f"--scheduler {address}: no Dask scheduler answered within "
+                         f"{SCHEDULER_TIMEOUT:g} s") from None
+    except (ValueError, TypeError) as exc:
+        raise InputError(f"--scheduler {address}: not a scheduler address ({exc})") from None
+
+
+def _run_dask(todo: list[dict], scheduler, time_limit: float):
+    """Connect now (an unreachable scheduler fails before any run), then yield rows."""
+    own = not hasattr(scheduler, "submit")
+    return _dask_rows(_connect(scheduler) if own else scheduler, own, todo, time_limit)
+
+
+def _dask_rows(client, own: bool, todo: list[dict], time_limit: float):
+    from distributed import as_completed
+    try:
+        session = f"{os.getpid()}-{time.time_ns()}"
+        futs = {client.submit(dask_run, t, time_limit, pure=False,
+                              key=f"ancf-sweep-{t['key']}-{session}"): t for t in todo}
+        for fut in as_completed(futs):
+            try:
+                yield fut.result()
+            except Exception as exc:  # noqa: BLE001
+                yield failure_row(futs[fut], "failed", f"dask: {type(exc).__name__}: {exc}")
+    finally:
+        if own:
+            client.close()
+
+
+# ---------------------------------------------------------------------------------------
+# files
+# ---------------------------------------------------------------------------------------
+
+def journal_path(out) -> Path:
+    out = Path(out)
+    return out.with_name(out.name + ".journal.jsonl")
+
+
+def read_rows(out) -> pd.DataFrame:
+    """Rows of a sweep file plus its journal (an interrupted sweep), deduplicated by key."""
+    out = Path(out)
+    frames = []
+    if out.exists():
+        frames.append(_read_table(out))
+    jp = journal_path(out)
+    if jp.exists():
+        rows = []
+        for line in jp.read_text().splitlines():
+            try:
+                rows.append(json.loads(line))
+            except ValueError:
+                pass  # a line cut by a hard kill
+        if rows:
+            frames.append(pd.DataFrame(rows))
+    frames = [f for f in frames if len(f)]
+    if not frames:
+        return pd.DataFrame()
+    df = pd.concat(frames, ignore_index=True) if len(frames) > 1 else frames[0]
+    return df.drop_duplicates("key", keep="last").reset_index(drop=True)
+
+
+def _read_table(path: Path) -> pd.DataFrame:
+    if path.suffix == ".parquet":
+        return pd.read_parquet(path)
+    return pd.read_csv(path)
+
+
+def _write_table(df: pd.DataFrame, path: Path) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f".{path.name}.tmp{os.getpid()}")
+    if path.suffix == ".parquet":
+        df.to_parquet(tmp, index=False)
+    else:
+        df.to_csv(tmp, index=False)
+    os.replace(tmp, path)
+
+
+def _check_out(out) -> Path:
+    out = Path(out)
+    if out.suffix not in (".parquet", ".csv"):
+        raise InputError(f"--out {str(out)!r}: the file name must end in .parquet or .csv")
+    return out
+
+
+_FRONT = ("key", "scene")
+_BACK = ("status", "converged", "message", "error", "reference", "cpu_time_s", "wall_time_s",
+         "steps", "iterations", "session")
+
+
+def _order(df: pd.DataFrame, param_names, keys_in_order) -> pd.DataFrame:
+    rank = {k: i for i, k in enumerate(keys_in_order)}
+    df = df.assign(_o=df["key"].map(lambda k: rank.get(k, len(rank))))
+    df = df.sort_values("_o", kind="stable").drop(columns="_o").reset_index(drop=True)
+    cols = [c for c in _FRONT if c in df] + [c for c in param_names if c in df]
+    cols += [c for c in _BACK if c in df]
+    cols += sorted(c for c in df.columns if c not in cols)
+    df = df[cols]
+    for c in ("converged",):
+        df[c] = df[c].astype(bool)
+    for c in ("error", "cpu_time_s", "wall_time_s"):
+        df[c] = pd.to_numeric(df[c], errors="coerce").astype(float)
+    return df
+
+
+# ---------------------------------------------------------------------------------------
+# driver
+# ---------------------------------------------------------------------------------------
+
+def run_sweep(scene: str, grids=None, *, out, fixed: dict | None = None,
+              reference: str | None = None, workers: int | None = None, scheduler=None,
+              time_limit: float = 600.0, retry_failed: bool = False, progress: bool = True,
+              log=None) -> pd.DataFrame:
+    """Run (or resume) a sweep; returns every row of ``out`` (this grid's first, in grid
+    order).  ``grids``: dict or list of dicts {param: [values]} (default: the scene's
+    report grid); ``fixed``: overrides applied to every run; ``scheduler``: a Dask
+    scheduler address (or a ``distributed.Client``) instead of local processes."""
+    from ancf.scenes import SCENES
+    if scene not in SCENES:
+        raise InputError(f"scene: unknown name {scene!r}; allowed: {', '.join(SCENES)}")
+    if not time_limit > 0:
+        raise InputError(f"time_limit = {time_limit!r} is out of range; allowed: a number > 0")
+    out = _check_out(out)
+    s = spec(scene)
+    grids = s.report_grids if grids is None else grids
+    ref = s.reference(reference)
+    log = log or (lambda msg: print(msg, file=sys.stderr, flush=True))
+    tasks = make_tasks(scene, expand(grids, fixed), ref.name)
+    if tasks and all(t.get("invalid") for t in tasks):  # nothing to run: bad input, not rows
+        raise InputError(tasks[0]["invalid"])
+    keys = [t["key"] for t in tasks]
+
+    have = read_rows(out)
+    if len(have) and "reference" in have:
+        other = set(have["reference"].dropna().astype(str)) - {ref.name}
+        if other:
+            raise InputError(f"reference: {out} holds errors against {', '.join(sorted(other))}, "
+                             f"not {ref.name!r}; use that reference or another --out file")
+    done = set()
+    if len(have):
+        ok = ~have["status"].isin(RETRY) if retry_failed else pd.Series(True, index=have.index)
+        done = set(have.loc[ok, "key"])
+    todo = [t for t in tasks if t["key"] not in done]
+    n_done = len(tasks) - len(todo)
+    where = f"Dask scheduler {scheduler}" if scheduler is not None else \
+        f"{workers or os.cpu_count()} worker process(es)"
+    log(f"sweep {scene}: {len(tasks)} runs, {n_done} already in {out.name}, {len(todo)} to run "
+        f"on {where}; reference {ref.name}; time limit {time_limit:g} s per run")
+
+    session = f"{time.strftime('%Y%m%dT%H%M%S')}-{os.getpid()}"
+    jp = journal_path(out)
+    jp.parent.mkdir(parents=True, exist_ok=True)
+    gen = None
+    try:
+        if todo:
+            if scheduler is not None:
+                gen = _run_dask(todo, scheduler, time_limit)
+            else:
+                gen = _run_local(todo, workers or os.cpu_count() or 1, time_limit)
+            bar = _bar(len(todo), scene, progress)
+            with open(jp, "a") as journal:
+                for row in gen:
+                    row["session"] = session
+                    journal.write(json.dumps(row) + "\n")
+                    journal.flush()
+                    bar.update(1)
+            bar.close()
+    finally:
+        if gen is not None:
+            gen.close()
+        df = read_rows(out)
+        if len(df):
+            df = _order(df, [p.name for p in SCENES[scene].params], keys)
+            _write_table(df, out)
+        if jp.exists():
+            jp.unlink()
+    counts = df["status"].value_counts().to_dict() if len(df) else {}
+    log(f"sweep {scene}: {len(df)} rows in {out} ({', '.join(f'{k} {v}' for k, v in counts.items())})")
+    return df
+
+
+class _NoBar:
+    def update(self, n):
+        pass
+
+    def close(self):
+        pass
+
+
+def _bar(total: int, desc: str, enabled: bool):
+    if not enabled:
+        return _NoBar()
+    try:
+        from tqdm import tqdm
+    except ImportError:  # pragma: no cover - tqdm is a dependency
+        return _Counter(total, desc)
+    tqdm.monitor_interval = 0
+    return tqdm(total=total, desc=desc, file=sys.stderr, unit="run", dynamic_ncols=True)
+
+
+class _Counter:
+    def __init__(self, total, desc):
+        self.total, self.desc, self.n = total, desc, 0
+
+    def update(self, n):
+        self.n += n
+        print(f"\r{self.desc}: {self.n}/{self.total}", end="", file=sys.stderr, flush=True)
+
+    def close(self):
+        print(file=sys.stderr)
+
+
+def rows_for(df: pd.DataFrame, scene: str, physical: dict) -> pd.DataFrame:
+    """Rows of ``df`` whose physical parameters equal ``physical``."""
+    m = pd.Series(True, index=df.index)
+    for k, v in physical.items():
+        if k not in df:
+            return df.iloc[0:0]
+        col = df[k]
+        if v is None:  # a parameter computed by the scene (stored as null)
+            m &= col.isna()
+        elif isinstance(v, float):
+            m &= np.isclose(pd.to_numeric(col, errors="coerce"), v, rtol=1e-12, atol=0)
+        else:
+            m &= col.astype(str) == str(v)
+    return df[m]
+
+
+if __name__ == "__main__":
+    if sys.argv[1:] == ["--worker"]:
+        raise SystemExit(_worker_main())
+    raise SystemExit("usage: python -m ancf.study.sweep --worker (internal); see `ancf sweep --help`")
