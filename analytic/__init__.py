@@ -1,0 +1,5 @@
+"""Closed-form and semi-analytic references, one file each (Timoshenko, Reissner,
+Bechtel, Navier, the dynamic references), and the SymPy generators of the shape
+functions and of the belt and plate energy densities.  Imports nothing of ``ancf``
+but the leaf ``ancf.common``.
+"""

@@ -1,7 +1,11 @@
-"""Scene registry: one declarative scene per paper example.
+"""Scenes: one declarative scene per paper example, each in one file on the scene API
+(``base``: ``Scene``, ``SceneResult``); ``analytic`` exposes the references of
+``analytic/`` the same way (``ancf analytic NAME``); ``accuracy`` the per-scene
+accuracy warnings; ``beam_static``, ``beam_dynamic`` and ``belt_common`` the builders
+the scenes share.
 
-``SCENES`` is built on first use, so that importing ``ancf.scenes.base`` (the
-scene API, also used by ``analytic``) loads no scene, solver or element.
+``SCENES`` is built on first use, so that importing ``ancf.scenes.base`` loads no
+scene, solver or element.
 """
 from __future__ import annotations
 

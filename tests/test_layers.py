@@ -1,0 +1,47 @@
+"""The layer rule (``ancf.common.layers``): every module belongs to a layer and imports
+nothing from a layer above its own, at module level or inside a function; the
+README's layout table is the one generated from the tree."""
+from __future__ import annotations
+
+import pytest
+
+from ancf.common import layers
+
+FILES = layers.project_files()
+
+
+def test_every_module_belongs_to_a_layer():
+    orphans = [f for f in FILES if f not in layers.PACKAGE_FILES
+               and layers.layer_of(layers.module_name(f)) is None]
+    assert orphans == []
+
+
+def test_no_module_imports_from_a_layer_above_its_own():
+    found = [line for f in FILES for line in layers.upward_imports(f, (layers.ROOT / f).read_text())]
+    assert found == [], "\n".join(found)
+
+
+def test_the_package_init_imports_no_project_module():
+    for f in layers.PACKAGE_FILES:
+        assert layers.imports((layers.ROOT / f).read_text(), "ancf", True) == []
+
+
+@pytest.mark.parametrize("rel, source, bad", [
+    ("ancf/core/mesh.py", "def f():\n    from ancf.scenes import SCENES\n", True),
+    ("ancf/solvers/static.py", "from ancf.elements import green2d\n", True),
+    ("ancf/solvers/static.py", "import ancf.belts.contact2d\n", True),
+    ("analytic/bechtel.py", "from ancf.core.quadrature import gauss01\n", True),
+    ("ancf/common/inputs.py", "from analytic import bechtel\n", True),
+    ("ancf/belts/path.py", "from . import contact2d\nfrom ..core import mesh\n", False),
+    ("ancf/belts/path.py", "from ..scenes import base\n", True),
+    ("analytic/bechtel.py", "from ancf.common.params import Param\nimport ancf\n", False),
+    ("ancf/cli.py", "from ancf.reports import output\n", False),
+])
+def test_the_rule_sees_upward_imports_at_any_depth(rel, source, bad):
+    assert bool(layers.upward_imports(rel, source)) is bad
+
+
+def test_readme_layout_table_is_generated_from_the_tree():
+    text = (layers.ROOT / "README.md").read_text()
+    assert layers.BEGIN in text and layers.END in text
+    assert text == layers.readme_with_table(text), "run: python -m ancf.common.layers"
