@@ -35,6 +35,7 @@ OUR_CASES = {
     "pendulum-dop853": ("pendulum", {}),
     "pendulum-ref": ("pendulum", {"rtol": "1e-10"}),
     "belt": ("belt2d", {}),
+    "belt3d": ("belt3d", {}),
 }
 SHEAR_RIGID_KS = 1e9
 EXUDYN_REF_H = 1e-4
