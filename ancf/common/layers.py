@@ -13,10 +13,10 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 
-#: bottom to top; a path is a folder (its modules) or one file
-LAYERS = ("ancf/common", "analytic", "ancf/core", "ancf/solvers", "ancf/elements",
-          "ancf/models", "ancf/belts", "ancf/scenes", "ancf/study", "ancf/checks",
-          "ancf/reports", "ancf/cli.py")
+#: bottom to top; each layer is one or more paths, a path a folder (its modules) or a file
+LAYERS = (("ancf/common",), ("analytic",), ("ancf/core",), ("ancf/solvers",),
+          ("ancf/elements",), ("ancf/models",), ("ancf/belts",), ("ancf/scenes",),
+          ("ancf/study",), ("ancf/checks",), ("ancf/reports",), ("ancf/cli.py",))
 
 #: files outside every layer: the package itself (its ``__init__`` imports no project module)
 PACKAGE_FILES = ("ancf/__init__.py",)
@@ -34,10 +34,11 @@ def layer_of(name: str) -> int | None:
     """Rank of a dotted module name (0 = bottom), None outside every layer."""
     if name == "ancf":
         return 0  # the package's __init__: importing anything imports it
-    for rank, path in enumerate(LAYERS):
-        base = module_name(path if path.endswith(".py") else path + "/__init__.py")
-        if name == base or name.startswith(base + "."):
-            return rank
+    for rank, paths in enumerate(LAYERS):
+        for path in paths:
+            base = module_name(path if path.endswith(".py") else path + "/__init__.py")
+            if name == base or name.startswith(base + "."):
+                return rank
     return None
 
 
@@ -82,7 +83,7 @@ def upward_imports(rel: str, source: str) -> list[str]:
     for line, target in imports(source, name, rel.endswith("__init__.py")):
         rank = _target_rank(target)
         if rank is not None and own is not None and rank > own:
-            found.append(f"{rel}:{line} ({LAYERS[own]}) imports {target} ({LAYERS[rank]})")
+            found.append(f"{rel}:{line} (layer {own}) imports {target} (layer {rank})")
     return found
 
 
@@ -103,9 +104,9 @@ def layout_table(root: Path = ROOT) -> str:
     """The README's layout table, top layer first."""
     rows = ["| layer | path | what it holds | modules |", "|---|---|---|---|"]
     for rank in reversed(range(len(LAYERS))):
-        path = LAYERS[rank]
-        shown = path if path.endswith(".py") else path + "/"
-        rows.append(f"| {rank} | `{shown}` | {_doc(path, root)} | {_modules(path, root)} |")
+        for path in LAYERS[rank]:
+            shown = path if path.endswith(".py") else path + "/"
+            rows.append(f"| {rank} | `{shown}` | {_doc(path, root)} | {_modules(path, root)} |")
     return "\n".join(rows)
 
 
