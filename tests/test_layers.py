@@ -45,3 +45,12 @@ def test_readme_layout_table_is_generated_from_the_tree():
     text = (layers.ROOT / "README.md").read_text()
     assert layers.BEGIN in text and layers.END in text
     assert text == layers.readme_with_table(text), "run: python -m ancf.common.layers"
+
+
+def test_the_checkout_folders_are_found_wherever_a_module_sits(monkeypatch):
+    from ancf.common import paths
+    from ancf.study import references
+    monkeypatch.delenv("ANCF_CACHE", raising=False)
+    assert (paths.REPO / "ancf" / "common" / "paths.py").is_file()
+    assert (paths.REPORTS / "README.md").is_file()
+    assert references.cache_root() == paths.REPORTS / ".cache"

@@ -11,7 +11,9 @@ import ast
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+from ancf.common.paths import REPO
+
+ROOT = REPO
 
 #: bottom to top; each layer is one or more paths, a path a folder (its modules) or a file
 LAYERS = (("ancf/common",), ("analytic",), ("ancf/core",), ("ancf/solvers",),

@@ -15,7 +15,9 @@ from pathlib import Path
 
 import pandas as pd
 
-ROOT = Path(__file__).resolve().parents[2] / "reports"
+from ancf.common.paths import REPORTS
+
+ROOT = REPORTS
 
 
 @dataclass(frozen=True)

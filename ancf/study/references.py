@@ -36,6 +36,7 @@ from typing import Callable
 import numpy as np
 
 from ancf.elements.catalogue import ELEMENTS
+from ancf.common.paths import REPORTS
 
 #: Physics a scene may need / a model may provide.
 PHYSICS = ("axial", "bending", "shear", "large-rotation", "inertia", "contact", "3D")
@@ -65,7 +66,7 @@ class ReferenceFailed(RuntimeError):
 def cache_root() -> Path:
     """``$ANCF_CACHE`` or ``reports/.cache`` (gitignored)."""
     env = os.environ.get("ANCF_CACHE")
-    return Path(env) if env else Path(__file__).resolve().parents[1] / "reports" / ".cache"
+    return Path(env) if env else REPORTS / ".cache"
 
 
 def stable_hash(obj, n: int = 16) -> str:

@@ -17,6 +17,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from ancf.common.paths import REPORTS
+
 NUM, INT, STR, BOOL = "number", "integer", "string", "boolean"
 
 
@@ -302,7 +304,7 @@ def schemas_markdown() -> str:
 def main(argv=None) -> int:
     """``python -m ancf.study.schemas [FILE]``: write the Markdown (default reports/schemas.md)."""
     argv = sys.argv[1:] if argv is None else argv
-    out = Path(argv[0]) if argv else Path(__file__).resolve().parents[1] / "reports" / "schemas.md"
+    out = Path(argv[0]) if argv else REPORTS / "schemas.md"
     out.write_text(schemas_markdown())
     print(out)
     return 0

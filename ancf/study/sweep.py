@@ -45,6 +45,7 @@ import pandas as pd
 from ancf.study.references import ReferenceFailed, spec, stable_hash
 from ancf.common.threads import BLAS_ENV
 from ancf.common.params import InputError
+from ancf.common.paths import REPO
 
 STATUSES = ("ok", "not-converged", "failed", "timeout", "invalid", "worker-died")
 RETRY = ("failed", "timeout", "worker-died")
@@ -240,7 +241,7 @@ class _Runner:
     def __init__(self):
         self.err = tempfile.TemporaryFile()
         env = dict(os.environ, **_ENV)
-        root = str(Path(__file__).resolve().parents[1])
+        root = str(REPO)
         env["PYTHONPATH"] = root + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
         self.proc = subprocess.Popen([sys.executable, "-m", "ancf.study.sweep", "--worker"],
                                      stdin=subprocess.PIPE, stdout=subprocess.PIPE,
