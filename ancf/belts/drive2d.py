@@ -20,6 +20,7 @@ import scipy.sparse as sp
 
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact2d import contact_forces, contact_points, contact_state
+from ancf.belts.forces import Drive2D
 from ancf.elements.dufva2d import DufvaBelt2D
 from ancf.core.mesh import BeamMesh
 from ancf.core.pattern import ReducedPattern, scatter
@@ -138,7 +139,7 @@ class BeltDrive(PulleyDrive):
                        np.zeros((2, nel, 12)), np.zeros((2, nel, 12)), np.zeros(2))
         return float(U), Q, Kq
 
-    def kernel(self):
-        """The arrays of the compiled march (:mod:`ancf.belts.march`)."""
-        return (self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
-                self.centres, self.radii, self.prm, float(self.spec.inertia))
+    def kernel(self) -> Drive2D:
+        """The drive's compiled data (:mod:`ancf.belts.forces`)."""
+        return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
+                       self.centres, self.radii, self.prm, float(self.spec.inertia))
