@@ -31,15 +31,21 @@ SLOTS = ("r", "r_x", "r_y")
 
 
 @dataclass(frozen=True)
-class BeltSpec:
-    """Everything that defines a belt drive (SI units; see the belt2d scene)."""
+class DriveSpec:
+    """What every belt drive's spec starts with (SI units)."""
 
     path: TwoPulleyPath
     belt_length: float          # reference (unstretched) length L0, m
     n_elements: int
     E: float                    # Young's modulus, Pa
-    nu: float                   # Poisson's ratio (shear modulus only)
+    nu: float                   # Poisson's ratio (in 2D: the shear modulus only)
     rho: float                  # density, kg/m^3
+
+
+@dataclass(frozen=True)
+class BeltSpec(DriveSpec):
+    """Everything that defines a belt drive (SI units; see the belt2d scene)."""
+
     b: float                    # section width, m
     h: float                    # section height, m
     ks: float                   # shear correction factor
