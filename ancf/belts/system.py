@@ -84,32 +84,31 @@ def _prepare(system, k):
 
 @implements(system_residual, BeltSystem)
 def _residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r):
-    s = system
     n = x1.size - 1
-    corner, pairs = evaluate(x1, v1, s.tabs[:, k], s.drive, want_J, bp, gp, r, s.S, s.col, s.row)
+    corner, pairs = evaluate(x1, v1, system.tabs[:, k], system.drive, want_J, bp, gp, r,
+                             system.S, system.col, system.row)
     count[PAIRS] += pairs
-    r[:n] += banded.matvec(s.Mb, s.kl, acc1[:n])
-    r[n] += s.drive.inertia * acc1[n]
+    r[:n] += banded.matvec(system.Mb, system.kl, acc1[:n])
+    r[n] += system.drive.inertia * acc1[n]
     if want_J:
-        s.corner[0] = corner
+        system.corner[0] = corner
 
 
 @implements(system_factor, BeltSystem)
 def _factor(system, bp, pivoting):
-    s, S = system, system.S
-    S += s.Mb
-    if banded.lu(S, s.kl, s.piv, pivoting) != 0:
+    S = system.S
+    S += system.Mb
+    if banded.lu(S, system.kl, system.piv, pivoting) != 0:
         return False
-    s.u[:] = s.col
-    banded.solve(S, s.kl, s.piv, s.u)
-    s.corner[1] = s.drive.inertia + s.corner[0] - np.dot(s.row, s.u)
+    system.u[:] = system.col
+    banded.solve(S, system.kl, system.piv, system.u)
+    system.corner[1] = system.drive.inertia + system.corner[0] - np.dot(system.row, system.u)
     return True
 
 
 @implements(system_solve, BeltSystem)
 def _solve(system, d):
-    s = system
-    bordered_solve(s.S, s.kl, s.piv, s.u, s.row, s.corner[1], d)
+    bordered_solve(system.S, system.kl, system.piv, system.u, system.row, system.corner[1], d)
 
 
 @implements(system_norm, BeltSystem)

@@ -50,27 +50,24 @@ class ReducedSystem(NamedTuple):
 
 @implements(system_prepare, ReducedSystem)
 def _prepare(system, k):
-    s = system
-    s.gq[:] = s.g0
-    for j in range(s.presc.size):
-        s.gq[s.presc[j]] = s.gvals[k, j]
-    if s.presc.size:
-        s.inertial[:] = s.Mp @ s.gdd[k]
+    system.gq[:] = system.g0
+    for j in range(system.presc.size):
+        system.gq[system.presc[j]] = system.gvals[k, j]
+    if system.presc.size:
+        system.inertial[:] = system.Mp @ system.gdd[k]
 
 
 @implements(system_residual, ReducedSystem)
 def _residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r):
-    s = system
-    assemble_group(s.group, x1, s.gq, want_J, s.grad, s.K)
-    r[:] = banded.matvec(s.Mb, s.kl, acc1) - s.Qr + s.grad + s.inertial
+    assemble_group(system.group, x1, system.gq, want_J, system.grad, system.K)
+    r[:] = banded.matvec(system.Mb, system.kl, acc1) - system.Qr + system.grad + system.inertial
 
 
 @implements(system_factor, ReducedSystem)
 def _factor(system, bp, pivoting):
     """S = M_r + beta' K_r, always pivoted."""
-    s = system
-    s.S[:, :] = s.Mb + bp * s.K
-    return banded.lu(s.S, s.kl, s.piv, True) == 0
+    system.S[:, :] = system.Mb + bp * system.K
+    return banded.lu(system.S, system.kl, system.piv, True) == 0
 
 
 @implements(system_solve, ReducedSystem)
