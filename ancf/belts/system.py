@@ -35,8 +35,8 @@ from numba import njit
 from ancf.belts.forces import evaluate
 from ancf.common.dispatch import implements
 from ancf.solvers import banded
-from ancf.solvers.alpha_march import (system_converged, system_damped, system_factor,
-                                      system_norm, system_prepare, system_residual, system_solve)
+from ancf.solvers.alpha_march import (system_factor, system_prepare, system_residual,
+                                      system_solve, system_tests)
 
 PAIRS = 5  # the counter of contact pairs
 
@@ -111,17 +111,7 @@ def _solve(system, d):
     bordered_solve(system.S, system.kl, system.piv, system.u, system.row, system.corner[1], d)
 
 
-@implements(system_norm, BeltSystem)
-def _norm(system, y):
-    return np.max(np.abs(y[: y.size - 1]))
-
-
-@implements(system_converged, BeltSystem)
-def _converged(system, bp, dn, lam, d, x, x1, tol):
-    n = x.size - 1
-    return bp * dn <= tol * (1 + np.max(np.abs(x[:n]))) and bp * lam * abs(d[n]) <= tol
-
-
-@implements(system_damped, BeltSystem)
-def _damped(system):
-    return True
+@implements(system_tests, BeltSystem)
+def _tests(system):
+    """The belt coordinates, scaled at the step's start, damped Newton."""
+    return system.Mb.shape[0], True, True

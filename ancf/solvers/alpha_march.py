@@ -16,7 +16,9 @@ residual r(acc1) = M acc1 + f(q_{n+1}, q'_{n+1}, t_{n+1}):
 * the iteration matrix and its factors are kept across iterations and steps; they are
   refreshed (new matrix, new factors) when there are none, the step size changed, an
   increment fails to contract (|d_k| > REFRESH_RATIO |d_{k-1}|) or was damped;
-* converged when the system's test on beta' |d| holds (a position increment);
+* converged when beta' |d|_inf <= tol (1 + |q|_inf) over the system's first m
+  coordinates, q at the step's start or at the last full evaluation as the system
+  says, and beta' lam |d_i| <= tol for the others (a position increment);
 * a step that fails with kept factors is retried once with fresh ones (pivoted); one
   that fails with fresh factors ends the march with NEWTON_FAILED, the state at the
   step's start and no factors, and the caller takes it with smaller steps;
@@ -28,12 +30,11 @@ What belongs to the system (the record ``system``, a NamedTuple whose class choo
 the implementations at compile time, :mod:`ancf.common.dispatch`): the step's
 prescribed data (:func:`system_prepare`), residual and iteration matrix
 (:func:`system_residual`), factorisation (:func:`system_factor`) and solve
-(:func:`system_solve`), the norm of the coordinates the blow-up and convergence tests
-look at (:func:`system_norm`), the convergence test (:func:`system_converged`) and
-whether an increment is damped by backtracking (:func:`system_damped`: halved at most
-MAX_BACKTRACKS times until |r| decreases by the Armijo factor 1 - 1e-4 lam; this
-breaks the 2-cycles of belt points switching between sticking, sliding and no
-contact).
+(:func:`system_solve`), and (:func:`system_tests`) the coordinates the blow-up and
+convergence tests look at, the positions the convergence test scales by and whether
+an increment is damped by backtracking (halved at most MAX_BACKTRACKS times until |r|
+decreases by the Armijo factor 1 - 1e-4 lam; this breaks the 2-cycles of belt points
+switching between sticking, sliding and no contact).
 
 Counters ``count``: 0 residual evaluations, 1 iteration matrices, 2 factorisations,
 3 solves (= Newton iterations), 4 steps; entries past 4 belong to the system.
@@ -72,19 +73,10 @@ def system_solve(system, d):
     raise NotImplementedError("resolved at compile time by the type of system")
 
 
-def system_norm(system, y) -> float:
-    """Largest |y_i| over the coordinates the blow-up and convergence tests look at."""
-    raise NotImplementedError("resolved at compile time by the type of system")
-
-
-def system_converged(system, bp, dn, lam, d, x, x1, tol) -> bool:
-    """Convergence after the increment lam d (dn = lam |d| in :func:`system_norm`) from
-    the step's start x; x1 the positions of the last full residual evaluation."""
-    raise NotImplementedError("resolved at compile time by the type of system")
-
-
-def system_damped(system) -> bool:
-    """Whether Newton increments are damped by backtracking."""
+def system_tests(system):
+    """(m, from_start, damped): the blow-up and convergence tests look at the first m
+    coordinates; the convergence test scales by the positions at the step's start
+    (from_start) or at the last full evaluation; Newton increments are damped."""
     raise NotImplementedError("resolved at compile time by the type of system")
 
 
@@ -124,6 +116,15 @@ def _backtrack(system, acc1, d, st, h, k, cf, count, r, rt):
 
 
 @njit(cache=True)
+def _converged(bp, dn, lam, d, xs, m, tol):
+    """beta' dn <= tol (1 + |xs[:m]|_inf) and beta' lam |d_i| <= tol for i >= m."""
+    ok = bp * dn <= tol * (1 + np.max(np.abs(xs[:m])))
+    for i in range(m, d.size):
+        ok = ok and bp * lam * abs(d[i]) <= tol
+    return ok
+
+
+@njit(cache=True)
 def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
     """One step of size h ending at step time index k; True on convergence."""
     x, v, acc, a = st
@@ -132,7 +133,7 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
     system_prepare(system, k)
     acc1 = acc.copy()
     r, rt = np.zeros(acc.size), np.zeros(acc.size)
-    damped = system_damped(system)
+    m, from_start, damped = system_tests(system)
     refresh = fresh or hf[0] != h
     have_r, x1, d_prev = False, x, np.inf
     for _ in range(max_iter):
@@ -155,10 +156,10 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
             r[:] = rt
             have_r = True
         acc1 += lam * d
-        dn = lam * system_norm(system, d)
+        dn = lam * np.max(np.abs(d[:m]))
         if not np.isfinite(dn):
             return False
-        if system_converged(system, bp, dn, lam, d, x, x1, tol):
+        if _converged(bp, dn, lam, d, x if from_start else x1, m, tol):
             x1, v1, a1 = kinematics(acc1, st, h, cf)
             x[:] = x1
             v[:] = v1
@@ -201,7 +202,7 @@ def march(ts, k, k_stop, st, system, hf, cf, count, tol, max_iter, limit, max_st
         count[4] += 1
         if not np.all(np.isfinite(x)):
             return NON_FINITE, k
-        if system_norm(system, x) > limit:
+        if np.max(np.abs(x[: system_tests(system)[0]])) > limit:
             return BLOW_UP, k
         if slot[k] >= 0:
             out_x[slot[k]] = x
