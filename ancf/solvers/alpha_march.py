@@ -38,7 +38,7 @@ switching between sticking, sliding and no contact).
 
 Counters ``count``: 0 residual evaluations, 1 iteration matrices, 2 factorisations,
 3 solves (= Newton iterations), 4 steps; entries past 4 belong to the system.
-``st`` = (q, q', q'', a) is updated in place; ``hf`` [1] holds the step size the kept
+``st`` = (q, q', q'', a) is updated in place; ``hf`` (1,) holds the step size (s) the kept
 factors belong to (nan: none).
 """
 from __future__ import annotations
