@@ -23,7 +23,7 @@ import numpy as np
 from ancf.belts.contact2d import contact_forces
 from ancf.elements.dufva2d import gradient_tangent
 from ancf.solvers import banded
-from ancf.belts.assembly import gather
+from ancf.belts.forces import gather
 
 REPEATS = 300
 

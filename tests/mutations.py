@@ -61,7 +61,7 @@ MUTATIONS = [
      plus_1_percent("n_elements=4, E=", "2.07e7"), TD + "test_defaults_are_the_thesis_problem"),
     ("spinning beam E +1 %", "ancf/scenes/spinning_beam.py",
      plus_1_percent("n_elements=3, E=", "6.895e10"), TD + "test_spinning_beam_axial_extension_against_eq_2_36"),
-    ("opposing torque T_a helps the driven pulley", "ancf/belts/assembly.py",
+    ("opposing torque T_a helps the driven pulley", "ancf/belts/forces.py",
      ("fz[n] = -T[DRIVEN] + Ta", "fz[n] = -T[DRIVEN] - Ta"),
      TB + "test_span_tensions_carry_the_driven_torque"),
     ("driver ramp ends at 0.5 s (Eq. 3.29)", "ancf/belts/pulleys.py",

@@ -2,11 +2,11 @@
 error control, independent of the generalised-alpha march, for cross-checks and the
 speed-accuracy study.
 
-First-order form y = (x, v) of the equations of :mod:`ancf.belts.march`:
+First-order form y = (x, v) of the equations of :mod:`ancf.belts.system`:
 
     x' = v,    v' = -Mt^-1 f(x, v, t),    Mt = diag(M, I)
 
-with the same compiled forces (:func:`ancf.belts.forces.evaluate_any`; the mass
+with the same compiled forces (:func:`ancf.belts.forces.evaluate`; the mass
 matrix is factored once).  The Jacobian is exact and dense,
 ``[[0, I], [-Mt^-1 df/dx, -Mt^-1 df/dv]]``, its two blocks from two evaluations of
 the iteration-matrix assembly (beta' = 1, gamma' = 0 and the reverse).
@@ -19,13 +19,13 @@ import numpy as np
 from scipy.integrate import BDF
 
 from ancf.solvers import banded
-from ancf.belts.forces import evaluate_any
+from ancf.belts.forces import evaluate
 from ancf.solvers.result import DynamicResult
 
 
 class _FirstOrder:
     def __init__(self, drive):
-        self.d, self.mdl, self.n = drive, drive.kernel(), drive.n
+        self.d, self.drive, self.n = drive, drive.kernel(), drive.n
         self.kl = drive.pattern.kl
         self.M = drive.Mb.copy()
         self.piv = np.zeros(self.n, dtype=np.int64)
@@ -39,7 +39,7 @@ class _FirstOrder:
             c = np.ascontiguousarray(cols[: self.n, j])
             banded.solve(self.M, self.kl, self.piv, c)
             cols[: self.n, j] = c
-        cols[self.n] /= self.mdl[8]
+        cols[self.n] /= self.drive.inertia
         return F
 
     def _laws(self, t):
@@ -48,8 +48,8 @@ class _FirstOrder:
     def fun(self, t, y):
         m = self.n + 1
         f = np.zeros(m)
-        evaluate_any(y[:m], y[m:], self._laws(t), self.mdl, False, 0.0, 0.0, f, np.zeros((1, 1)),
-                     np.zeros(self.n), np.zeros(self.n))
+        evaluate(y[:m], y[m:], self._laws(t), self.drive, False, 0.0, 0.0, f, np.zeros((1, 1)),
+                 np.zeros(self.n), np.zeros(self.n))
         self.nfev += 1
         return np.concatenate([y[m:], -self._inv_mass(f)])
 
@@ -57,8 +57,8 @@ class _FirstOrder:
         """Dense d f / d(x or v) (bp, gp = 1, 0 or 0, 1)."""
         m, n = self.n + 1, self.n
         mat, col, row = self.d.pattern.zeros_matrix(), np.zeros(n), np.zeros(n)
-        corner, _ = evaluate_any(y[:m], y[m:], self._laws(t), self.mdl, True, bp, gp, np.zeros(m),
-                                 mat, col, row)
+        corner, _ = evaluate(y[:m], y[m:], self._laws(t), self.drive, True, bp, gp, np.zeros(m),
+                             mat, col, row)
         D = np.zeros((m, m))
         D[:n, :n] = self.d.pattern.as_csr(mat).toarray()
         D[:n, n], D[n, :n], D[n, n] = col, row, corner

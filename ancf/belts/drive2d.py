@@ -20,6 +20,7 @@ import scipy.sparse as sp
 
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact2d import contact_forces, contact_points, contact_state
+from ancf.belts.forces import Drive2D
 from ancf.elements.dufva2d import DufvaBelt2D
 from ancf.core.mesh import BeamMesh
 from ancf.core.pattern import ReducedPattern, scatter
@@ -30,15 +31,21 @@ SLOTS = ("r", "r_x", "r_y")
 
 
 @dataclass(frozen=True)
-class BeltSpec:
-    """Everything that defines a belt drive (SI units; see the belt2d scene)."""
+class DriveSpec:
+    """What every belt drive's spec starts with (SI units)."""
 
     path: TwoPulleyPath
     belt_length: float          # reference (unstretched) length L0, m
     n_elements: int
     E: float                    # Young's modulus, Pa
-    nu: float                   # Poisson's ratio (shear modulus only)
+    nu: float                   # Poisson's ratio (in 2D: the shear modulus only)
     rho: float                  # density, kg/m^3
+
+
+@dataclass(frozen=True)
+class BeltSpec(DriveSpec):
+    """Everything that defines a belt drive (SI units; see the belt2d scene)."""
+
     b: float                    # section width, m
     h: float                    # section height, m
     ks: float                   # shear correction factor
@@ -138,7 +145,7 @@ class BeltDrive(PulleyDrive):
                        np.zeros((2, nel, 12)), np.zeros((2, nel, 12)), np.zeros(2))
         return float(U), Q, Kq
 
-    def kernel(self):
-        """The arrays of the compiled march (:mod:`ancf.belts.march`)."""
-        return (self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
-                self.centres, self.radii, self.prm, float(self.spec.inertia))
+    def kernel(self) -> Drive2D:
+        """The drive's compiled data (:mod:`ancf.belts.forces`)."""
+        return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
+                       self.centres, self.radii, self.prm, float(self.spec.inertia))

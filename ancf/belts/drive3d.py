@@ -27,9 +27,10 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from ancf.belts.drive2d import PulleyDrive
+from ancf.belts.drive2d import DriveSpec, PulleyDrive
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
+from ancf.belts.forces import Drive3D
 from ancf.elements.plate36 import Plate36
 from ancf.core.pattern import ReducedPattern, scatter
 from ancf.belts.pulleys import driver_omega, driver_shift, opposing_torque
@@ -40,15 +41,9 @@ AXIS = np.array([0.0, 0.0, 1.0])    # pulley axes
 
 
 @dataclass(frozen=True)
-class Belt3DSpec:
+class Belt3DSpec(DriveSpec):
     """Everything that defines a 3D belt drive (SI units; see the belt3d scene)."""
 
-    path: TwoPulleyPath
-    belt_length: float          # reference (unstretched) length L0, m
-    n_elements: int
-    E: float                    # Young's modulus, Pa
-    nu: float                   # Poisson's ratio
-    rho: float                  # density, kg/m^3
     width: float                # belt width w, m
     h: float                    # thickness, m
     bending: bool               # Eq. 4.17 on (Model 1) or off (Model 2)
@@ -155,8 +150,8 @@ class Belt3DDrive(PulleyDrive):
                          np.zeros((2, nel, 36)), np.zeros((2, nel, 36)), np.zeros(2))
         return float(U), Q, Kq
 
-    def kernel(self):
-        """The arrays of the compiled march (:mod:`ancf.belts.march`)."""
-        return (self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
-                self.centres, self.radii, self.prm, float(self.spec.inertia), self.axes,
-                SHIFT.copy())
+    def kernel(self) -> Drive3D:
+        """The drive's compiled data (:mod:`ancf.belts.forces`)."""
+        return Drive3D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
+                       self.centres, self.radii, self.prm, float(self.spec.inertia), self.axes,
+                       SHIFT.copy())

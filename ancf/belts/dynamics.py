@@ -1,5 +1,6 @@
-"""Time integration of the 2D belt drive: set-up and bookkeeping around the compiled
-march of :mod:`ancf.belts.march`.
+"""Time integration of the belt drives: set-up and bookkeeping around the compiled
+generalised-alpha march (:mod:`ancf.solvers.alpha_march`) of a drive's system
+(:mod:`ancf.belts.system`).
 
 The steps are fixed (at most ``dt``, samples on steps, see
 :func:`ancf.solvers.generalized_alpha.step_times`); a step whose Newton iteration
@@ -15,9 +16,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ancf.belts.forces import evaluate
+from ancf.belts.system import PAIRS, belt_system
 from ancf.solvers import banded
-from ancf.belts.march import BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE, march
-from ancf.belts.forces import evaluate_any
+from ancf.solvers.alpha_march import BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE, march
 from ancf.solvers.generalized_alpha import AlphaOptions, step_times
 from ancf.solvers.result import DynamicResult
 
@@ -42,35 +44,33 @@ class _March:
 
     def __init__(self, drive, opt: BeltOptions, ts):
         self.drive, self.opt = drive, opt
-        self.mdl, self.kl, self.Mb = drive.kernel(), drive.pattern.kl, drive.Mb
-        n = drive.n
-        self.fs = (drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros(n),
-                   np.zeros(n), np.zeros(n), np.array([np.nan, np.nan]))
+        self.system = belt_system(drive, drive.laws(ts))
+        self.ts = ts
+        self.hf = np.array([np.nan])
         self.cf = np.array(AlphaOptions(rho_inf=opt.rho_inf).coefficients())
-        self.count = np.zeros(7, dtype=np.int64)
-        self.set_times(ts)
+        self.count = np.zeros(PAIRS + 1, dtype=np.int64)
 
     def set_times(self, ts):
         self.ts = ts
-        self.tabs = self.drive.laws(ts)
+        self.system = self.system._replace(tabs=self.drive.laws(ts))
 
     def initial_acceleration(self, x, v):
-        n = self.drive.n
+        s, n = self.system, self.drive.n
         f = np.zeros(n + 1)
-        evaluate_any(x, v, self.tabs[:, 0].copy(), self.mdl, False, 0.0, 0.0, f, np.zeros((1, 1)),
-                     np.zeros(n), np.zeros(n))
-        M = self.Mb.copy()
+        evaluate(x, v, s.tabs[:, 0].copy(), s.drive, False, 0.0, 0.0, f, np.zeros((1, 1)),
+                 np.zeros(n), np.zeros(n))
+        M = s.Mb.copy()
         piv = np.zeros(n, dtype=np.int64)
-        banded.lu(M, self.kl, piv, True)
+        banded.lu(M, s.kl, piv, True)
         a = -f
-        banded.solve(M, self.kl, piv, a[:n])
-        a[n] /= self.mdl[8]
+        banded.solve(M, s.kl, piv, a[:n])
+        a[n] /= s.drive.inertia
         return a
 
     def run(self, st, k, k_stop, slot, out_x, out_v, limit):
         o = self.opt
-        return march(self.ts, k, k_stop, st, self.fs, self.cf, self.mdl, self.Mb, self.kl, self.tabs,
-                     self.count, o.newton_tol, o.max_iter, limit, o.max_steps, slot, out_x, out_v)
+        return march(self.ts, k, k_stop, st, self.system, self.hf, self.cf, self.count,
+                     o.newton_tol, o.max_iter, limit, o.max_steps, slot, out_x, out_v)
 
 
 def _halved(m: _March, st, ta, tb, depth, limit) -> bool:
@@ -126,7 +126,7 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
     c = m.count
     res = DynamicResult(t_out[:reached], X[:reached], V[:reached], ok, msg, "generalized-alpha",
                         steps=int(c[4]), nfev=int(c[0]), njev=int(c[1]), nlu=int(c[2]),
-                        newton_iterations=int(c[5]), rejected_steps=rejected,
+                        newton_iterations=int(c[3]), rejected_steps=rejected,
                         cpu_time_s=time.process_time() - t0)
-    res.extra["contact_pairs"] = int(c[6])
+    res.extra["contact_pairs"] = int(c[PAIRS])
     return res

@@ -1,64 +1,152 @@
-"""Compiled force evaluations of the belt drives for :mod:`ancf.belts.march`.
+"""Compiled force evaluation of the belt drives: elastic and contact forces of the belt
+and the moment on the driven pulley, with the force part of the bordered iteration
+matrix of the march (:mod:`ancf.belts.system`).
 
-One function per model, chosen at compile time by :func:`evaluate` from the type of
-the model tuple (``kernel()`` of :class:`ancf.belts.drive2d.BeltDrive`, 9 entries, or of
-:class:`ancf.belts.drive3d.Belt3DDrive`, 11 entries: :mod:`ancf.belts.forces3d`),
-so the march is written once.
-Both return the residual forces ``fz`` (belt: dU/dz - Q_c; ``fz[n]``: -T_c + T_a of
-the driven pulley) at (x, v) and, if ``want_J``, the force part of the bordered
-iteration matrix: band ``mat`` = bp (K - dQ/dz) - gp dQ/dz' (without M), border
-``col`` / ``row`` and the corner's force part (returned with the number of
-element-pulley pairs the contact kernel evaluated).
+A drive reaches compiled code as named data, one record type per drive:
+:class:`Drive2D` (``kernel()`` of :class:`ancf.belts.drive2d.BeltDrive`: Dufva
+elements, :mod:`ancf.belts.contact2d`) and :class:`Drive3D` (of
+:class:`ancf.belts.drive3d.Belt3DDrive`: plate36 elements, :mod:`ancf.belts.contact3d`).
+:func:`evaluate` is written once; its element and contact kernels are chosen at
+compile time by the record's type (:func:`drive_forces`).
+
+:func:`evaluate` returns the residual forces ``fz`` at the system state (x, v): belt
+``dU/dz - Q_c`` (band numbering of the drive's pattern) and ``fz[n] = -T_c + T_a``
+of the driven pulley, and, if ``want_J``, the force part of the iteration matrix:
+band ``mat`` = bp (K - dQ_c/dz) - gp dQ_c/dz' (without M), border ``col`` = -gp
+dQ_c/dtheta' and ``row`` = -bp dT_c/dz - gp dT_c/dz', and the corner's force part
+-gp dT_c/dtheta' (returned with the number of element-pulley pairs the contact
+kernel evaluated).  bp, gp = 1, 0 or 0, 1 give df/dx and df/dv alone.
 
 ``laws`` are the pulley laws at the evaluation time: [omega_driver rad/s, T_a N m]
 in 2D, followed in 3D by the driver's displacement u (m) and its rate (m/s) along
-the model's shift direction (Eq. 4.46).
+the drive's ``shift`` direction (Eq. 4.46).
 """
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 from numba import njit
-from numba.extending import overload
 
 from ancf.belts.contact2d import contact_forces
-from ancf.elements import dufva2d
-from ancf.belts.assembly import _arrays, _combine, gather
+from ancf.belts.contact3d import contact_forces3d
+from ancf.common.dispatch import implements
+from ancf.core.pattern import scatter
+from ancf.elements import dufva2d, plate36
+
+DRIVEN = 1  # index of the driven pulley in the pulley arrays
+
+
+class Drive2D(NamedTuple):
+    """The compiled data of a 2D belt drive (SI units)."""
+
+    vidx: np.ndarray     # (nel, 12) element coordinates -> system positions
+    midx: np.ndarray     # (nel, 12, 12) element matrix entries -> band storage
+    element: tuple       # the Dufva elements' kernel data (DufvaBelt2D.kernel_data)
+    S0: np.ndarray       # contact points' shape functions
+    w: np.ndarray        # their weights (nel, ng), m
+    centres: np.ndarray  # pulley centres (2, 2), m
+    radii: np.ndarray    # pulley radii (2,), m
+    prm: np.ndarray      # [k_p, c_p, mu, nu_s] of the contact
+    inertia: float       # driven pulley's moment of inertia, kg m^2
+
+
+class Drive3D(NamedTuple):
+    """The compiled data of a 3D belt drive (SI units; fields as :class:`Drive2D`)."""
+
+    vidx: np.ndarray     # (nel, 36)
+    midx: np.ndarray     # (nel, 36, 36)
+    element: tuple       # the plate36 elements' kernel data (Plate36.kernel_data)
+    S0: np.ndarray
+    w: np.ndarray        # (nel, ng), m^2
+    centres: np.ndarray  # (2, 3), m
+    radii: np.ndarray
+    prm: np.ndarray
+    inertia: float
+    axes: np.ndarray     # pulley axes (2, 3)
+    shift: np.ndarray    # direction the driver is moved in (3,)
+
+
+def drive_forces(drive, E, V, laws, omegas, want_J, g, K, c):
+    """Add the elastic forces (g, and K if want_J) and the contact outputs c of the
+    elements with coordinates E and velocities V; returns the pairs evaluated."""
+    raise NotImplementedError("resolved at compile time by the type of drive")
+
+
+@implements(drive_forces, Drive2D)
+def _forces2d(drive, E, V, laws, omegas, want_J, g, K, c):
+    dufva2d.gradient_tangent(E, drive.element, want_J, g, K)
+    return contact_forces(E, V, drive.S0, drive.w, drive.centres, drive.radii, omegas, drive.prm,
+                          want_J, *c)
+
+
+@implements(drive_forces, Drive3D)
+def _forces3d(drive, E, V, laws, omegas, want_J, g, K, c):
+    """The driver's centre is moved by laws[2] along ``shift`` (at the rate laws[3])."""
+    plate36.gradient_tangent(E, drive.element, want_J, g, K)
+    o, odot = drive.centres.copy(), np.zeros_like(drive.centres)
+    o[0] += laws[2] * drive.shift
+    odot[0] = laws[3] * drive.shift
+    return contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas, odot,
+                            drive.prm, want_J, *c)
 
 
 @njit(cache=True)
-def evaluate2d(x, v, laws, mdl, want_J, bp, gp, fz, mat, col, row):
-    """The 2D belt drive (Dufva elements, :mod:`ancf.belts.contact2d`)."""
-    vidx, midx, eld, S0, w, centres, radii, prm, inertia = mdl
-    nel = vidx.shape[0]
-    E, V = np.empty((nel, 6, 2)), np.empty((nel, 6, 2))
-    gather(x, vidx, E, V, v)
-    g = np.zeros((nel, 12))
-    K = np.zeros((nel, 12, 12)) if want_J else np.zeros((0, 0, 0))
-    dufva2d.gradient_tangent(E, eld, want_J, g, K)
-    c = _arrays(nel, 12, radii.size, want_J)
+def gather(x, vidx, E, V, v):
+    """Element coordinates E and velocities V (nel, nshape, dim) from system vectors x, v."""
+    nel, nd = vidx.shape
+    dim = E.shape[2]
+    for e in range(nel):
+        for a in range(nd):
+            E[e, a // dim, a % dim] = x[vidx[e, a]]
+            V[e, a // dim, a % dim] = v[vidx[e, a]]
+
+
+@njit(cache=True)
+def _arrays(nel, nd, npul, want_J):
+    """Zeroed contact outputs: Q, Kq, Cv, Qw, T, dTq, dTv, dTw."""
+    nj = nel if want_J else 0
+    return (np.zeros((nel, nd)), np.zeros((nj, nd, nd)), np.zeros((nj, nd, nd)),
+            np.zeros((nj, npul, nd)), np.zeros(npul), np.zeros((npul, nj, nd)),
+            np.zeros((npul, nj, nd)), np.zeros(npul))
+
+
+@njit(cache=True)
+def _combine(g, K, c, vidx, midx, bp, gp, want_J, Ta, fz, mat, col, row):
+    """Elastic gradient g, K and contact outputs c into fz, mat, col, row; the corner."""
+    Q, Kq, Cv, Qw, T, dTq, dTv, dTw = c
+    nel, nd = g.shape
+    n = fz.size - 1
+    fz[:] = 0.0
+    g -= Q
+    if want_J:
+        mat[:, :] = 0.0
+        col[:] = 0.0
+        row[:] = 0.0
+        for e in range(nel):
+            for a in range(nd):
+                i = vidx[e, a]
+                col[i] -= gp * Qw[e, DRIVEN, a]
+                row[i] -= bp * dTq[DRIVEN, e, a] + gp * dTv[DRIVEN, e, a]
+                for b in range(nd):
+                    K[e, a, b] = bp * (K[e, a, b] - Kq[e, a, b]) - gp * Cv[e, a, b]
+    scatter(g, K, vidx, midx, fz, mat, want_J)
+    fz[n] = -T[DRIVEN] + Ta
+    return -gp * dTw[DRIVEN]
+
+
+@njit(cache=True)
+def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row):
+    """The residual forces and the force part of the iteration matrix (module docstring);
+    returns (corner, pairs)."""
+    nel, nd = drive.vidx.shape
+    dim = drive.centres.shape[1]
+    E, V = np.empty((nel, nd // dim, dim)), np.empty((nel, nd // dim, dim))
+    gather(x, drive.vidx, E, V, v)
+    g = np.zeros((nel, nd))
+    K = np.zeros((nel, nd, nd)) if want_J else np.zeros((0, 0, 0))
+    c = _arrays(nel, nd, drive.radii.size, want_J)
     omegas = np.array([laws[0], v[v.size - 1]])
-    pairs = contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J, *c)
-    return _combine(g, K, c, vidx, midx, bp, gp, want_J, laws[1], fz, mat, col, row), pairs
-
-
-def evaluate(x, v, laws, mdl, want_J, bp, gp, fz, mat, col, row):
-    """Dispatch to :func:`evaluate2d` or the 3D ``evaluate3d`` by the model tuple
-    (compiled callers only; from Python call :func:`evaluate_any`)."""
-    raise NotImplementedError("evaluate is resolved at compile time inside numba functions")
-
-
-@overload(evaluate)
-def _evaluate(x, v, laws, mdl, want_J, bp, gp, fz, mat, col, row):
-    if len(mdl) == 9:
-        return lambda x, v, laws, mdl, want_J, bp, gp, fz, mat, col, row: evaluate2d(
-            x, v, laws, mdl, want_J, bp, gp, fz, mat, col, row)
-    from ancf.belts.forces3d import evaluate3d  # the 3D model needs the 3D contact
-
-    return lambda x, v, laws, mdl, want_J, bp, gp, fz, mat, col, row: evaluate3d(
-        x, v, laws, mdl, want_J, bp, gp, fz, mat, col, row)
-
-
-@njit(cache=True)
-def evaluate_any(x, v, laws, mdl, want_J, bp, gp, fz, mat, col, row):
-    """:func:`evaluate` callable from Python."""
-    return evaluate(x, v, laws, mdl, want_J, bp, gp, fz, mat, col, row)
+    pairs = drive_forces(drive, E, V, laws, omegas, want_J, g, K, c)
+    return _combine(g, K, c, drive.vidx, drive.midx, bp, gp, want_J, laws[1], fz, mat, col,
+                    row), pairs

@@ -16,7 +16,6 @@ import numpy as np
 import scipy.sparse as sp
 from numba import njit
 
-from ancf.elements.green2d import GreenPlanar, gradient_tangent
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 
 #: band storage is used while it holds at most this many times the nonzeros
@@ -45,28 +44,12 @@ def scatter(ge, Ke, vidx, midx, vec, mat, want_K):
                         flat[j] += Ke[e, a, b]
 
 
-@njit(cache=True)
-def assemble_compiled(z, gq, mdl, want_K, grad, K):
-    """grad = T^T dU/dq at q = T z + gq and, if want_K, K = T^T (d2U/dq2) T, for one
-    planar Green-strain element group (``ReducedPattern.compiled``), in one call."""
-    qsel, zsel, dofmap, el, vidx, midx = mdl
-    E0, BX, BY, dX0, dY0, w, C, cidx = el
-    q = gq.copy()
-    for i in range(qsel.size):
-        q[qsel[i]] += z[zsel[i]]
-    nel, nd = dofmap.shape
-    E = np.empty((nel, nd // 2, 2))
-    for e in range(nel):
-        for a in range(nd):
-            E[e, a // 2, a % 2] = q[dofmap[e, a]]
-    ge = np.zeros((nel, nd))
-    Ke = np.zeros((nel, nd, nd)) if want_K else np.zeros((0, 0, 0))
-    gradient_tangent(E, E0, BX, BY, dX0, dY0, w, C, cidx, want_K, ge, Ke)
-    grad[:] = 0.0
-    if want_K:
-        K[:, :] = 0.0
-    scatter(ge, Ke, vidx, midx, grad, K, want_K)
-
+def assemble_group(group, z, gq, want_K, grad, K):
+    """grad = T^T dU/dq at q = T z + gq and, if want_K, K = T^T (d2U/dq2) T, for a compiled
+    element group (:meth:`ReducedPattern.compiled`), in one call from compiled code.
+    Implemented per group type by the element layer (:mod:`ancf.common.dispatch`;
+    the planar Green strains: :func:`ancf.elements.green2d.assemble_band`)."""
+    raise NotImplementedError("resolved at compile time by the type of group")
 
 
 def _selection_columns(T, n_dofs: int) -> np.ndarray:
@@ -140,15 +123,13 @@ class ReducedPattern:
         return np.searchsorted(self._keys, a * self.n + b)
 
     def compiled(self, assembly):
-        """The arrays of :func:`assemble_compiled` for a single planar Green-strain
-        group on band storage, or None (then :meth:`assemble` serves)."""
+        """The compiled element group of :func:`assemble_group` for a single group on band
+        storage, built by its strain model's ``band_group`` (the planar Green strains,
+        :mod:`ancf.elements.green2d`), or None (then :meth:`assemble` serves)."""
         grps = assembly.groups
-        if not self.band or len(grps) != 1 or getattr(grps[0].element, "strain", None) is not GreenPlanar:
-            return None
-        el, pts = grps[0].element, grps[0].element.points
-        vidx, midx = self.groups[0]
-        arrays = (pts.E0, pts.BX, pts.BY, pts.dX0, pts.dY0, pts.w, el.C, pts.cidx)
-        return (self.qsel, self.zsel, np.ascontiguousarray(grps[0].dofmap), arrays, vidx, midx)
+        strain = getattr(grps[0].element, "strain", None) if len(grps) == 1 else None
+        build = getattr(strain, "band_group", None)
+        return build(self, grps[0]) if self.band and build is not None else None
 
     # --- storage -----------------------------------------------------------------------
     def zeros_matrix(self) -> np.ndarray:

@@ -16,11 +16,21 @@ gradients ``u_x = sum_k BX_k (E_k - E0_k)`` (no cancellation at small strain),
 with ``G`` (3, 2n) the strain derivatives.  Element coordinates are ordered
 ``k * 2 + d`` (shape function k, component d).  Shapes: E, E0 (nel, n, 2);
 BX, BY (nel, nq, n); dX0, dY0 (nel, nq, 2); w (nel, nq); cidx (nq,).
+
+A single group of these elements on band storage is also a compiled group
+(:class:`GreenBand`, :meth:`ancf.core.pattern.ReducedPattern.compiled`): its reduced
+gradient and tangent are one call (:func:`assemble_band`), from the static Newton
+solver and the generalised-alpha march alike.
 """
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 from numba import njit
+
+from ancf.common.dispatch import implements
+from ancf.core.pattern import assemble_group, scatter
 
 
 @njit(cache=True)
@@ -105,6 +115,55 @@ def gradient_tangent(E, E0, BX, BY, dX0, dY0, w, C, cidx, want_K, g, K):
                     K[e, b, a] = K[e, a, b]
 
 
+class GreenBand(NamedTuple):
+    """One planar Green-strain element group in the numbering of a band
+    :class:`~ancf.core.pattern.ReducedPattern` (q = T z + g)."""
+
+    qsel: np.ndarray    # global coordinates that are independent ...
+    zsel: np.ndarray    # ... and their positions in z
+    dofmap: np.ndarray  # (nel, 2n) element DOF maps
+    E0: np.ndarray      # the arrays of gradient_tangent (module docstring)
+    BX: np.ndarray
+    BY: np.ndarray
+    dX0: np.ndarray
+    dY0: np.ndarray
+    w: np.ndarray
+    C: np.ndarray
+    cidx: np.ndarray
+    vidx: np.ndarray    # scatter targets of the pattern (ancf.core.pattern.scatter)
+    midx: np.ndarray
+
+
+def band_group(pattern, group) -> GreenBand:
+    """The :class:`GreenBand` of an assembly's element group on ``pattern``."""
+    el, pts = group.element, group.element.points
+    vidx, midx = pattern.groups[0]
+    return GreenBand(pattern.qsel, pattern.zsel, np.ascontiguousarray(group.dofmap), pts.E0,
+                     pts.BX, pts.BY, pts.dX0, pts.dY0, pts.w, el.C, pts.cidx, vidx, midx)
+
+
+@implements(assemble_group, GreenBand)
+def assemble_band(group, z, gq, want_K, grad, K):
+    """grad = T^T dU/dq at q = T z + gq (N) and, if want_K, K = T^T (d2U/dq2) T (N/m,
+    band storage)."""
+    q = gq.copy()
+    for i in range(group.qsel.size):
+        q[group.qsel[i]] += z[group.zsel[i]]
+    nel, nd = group.dofmap.shape
+    E = np.empty((nel, nd // 2, 2))
+    for e in range(nel):
+        for a in range(nd):
+            E[e, a // 2, a % 2] = q[group.dofmap[e, a]]
+    ge = np.zeros((nel, nd))
+    Ke = np.zeros((nel, nd, nd)) if want_K else np.zeros((0, 0, 0))
+    gradient_tangent(E, group.E0, group.BX, group.BY, group.dX0, group.dY0, group.w, group.C,
+                     group.cidx, want_K, ge, Ke)
+    grad[:] = 0.0
+    if want_K:
+        K[:, :] = 0.0
+    scatter(ge, Ke, group.vidx, group.midx, grad, K, want_K)
+
+
 class GreenPlanar:
     """Planar Green-Lagrange strains in the element's local frame, Voigt
     ``[eps_xx, eps_yy, 2 eps_xy]``, from the gradients ``r_x``, ``r_y`` (dim 2)."""
@@ -113,3 +172,4 @@ class GreenPlanar:
     voigt = 3
     energy = staticmethod(energy)
     gradient_tangent = staticmethod(gradient_tangent)
+    band_group = staticmethod(band_group)

@@ -201,7 +201,8 @@ def newton_iteration_time_ratio(n=16, repeats=30):
     side (interleaved) in one run; median over repeats."""
     progress("timing: Newton iteration, linear vs Omar-Shabana")
     from ancf.core.constraints import Elimination
-    from ancf.core.pattern import ReducedPattern, assemble_compiled
+    from ancf.core.pattern import ReducedPattern
+    from ancf.elements.green2d import assemble_band
     from ancf.solvers.linear import factor
     times = {}
     setups = {}
@@ -221,7 +222,7 @@ def newton_iteration_time_ratio(n=16, repeats=30):
         for el, (pat, mdl, g0, z) in setups.items():
             t0 = time.perf_counter()
             grad, K = np.zeros(pat.n), pat.zeros_matrix()
-            assemble_compiled(z, g0, mdl, True, grad, K)
+            assemble_band(mdl, z, g0, True, grad, K)
             factor(pat, K, overwrite=True).solve(grad)
             times[el].append(time.perf_counter() - t0)
     med = {el: float(np.median(v)) for el, v in times.items()}

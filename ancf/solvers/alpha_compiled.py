@@ -1,133 +1,92 @@
-"""Compiled step loop of the generalised-alpha scheme for the elimination form.
+"""The elimination form as a system of the compiled generalised-alpha march
+(:mod:`ancf.solvers.alpha_march`).
 
-Applies to a :class:`~ancf.solvers.dynamics.ReducedModel` with one element group
-and constant external forces (gravity), fixed, tied and prescribed (rheonomic)
-coordinates: the pendulum and the spinning beam.  The whole march over the step
-times runs in one numba call; the recurrence is that of
-:mod:`ancf.solvers.generalized_alpha` (same unknowns, residual and convergence
-test), with a modified Newton iteration:
+Applies to a :class:`~ancf.solvers.dynamics.ReducedModel` with one compiled element
+group (:meth:`ancf.core.pattern.ReducedPattern.compiled`) and constant external forces
+(gravity), fixed, tied and prescribed (rheonomic) coordinates: the pendulum and the
+spinning beam.  Unknowns: the independent coordinates z in the pattern's numbering
+(``ReducedPattern.order``); residual and iteration matrix
 
-* the iteration matrix ``S = M + beta' K`` and its band LU are kept across
-  iterations and steps;
-* they are refreshed (new tangent, new factorisation) when there is none yet, the
-  step size changed, or an increment fails to contract (|d_k| > 0.5 |d_{k-1}|);
-* a step that does not converge with a kept matrix is retried once with a fresh
-  one; if that fails too the march returns, and the Python stepper takes that
-  step with its step halving.
+    r = M_r z'' - Q_r + T^T dU/dq + T^T M g'',     S = M_r + beta' K_r
 
-The coordinates are those of the pattern (``ReducedPattern.order``).  Prescribed
-coordinates take their value at each step end from the tables ``gvals`` and
-their accelerations enter as ``T^T M g''`` = ``Mp @ gdd``.
+(K_r = T^T d2U/dq2 T, band storage, factored with pivoting).  Prescribed coordinates
+take their value at each step end from the table ``gvals``, their accelerations enter
+as ``Mp @ gdd``.  Plain Newton increments; converged when beta' |d|_inf <= tol (1 +
+|z|_inf) at the last evaluation (the test of :mod:`ancf.solvers.generalized_alpha`).
+A step the march cannot take goes to the Python stepper, which halves it.
 """
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
-from numba import njit
 
-from ancf.core.pattern import assemble_compiled
+from ancf.common.dispatch import implements
+from ancf.core.pattern import assemble_group
 from ancf.solvers import banded
-
-DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
-#: contraction ratio above which the kept iteration matrix is refreshed
-REFRESH_RATIO = 0.5
+from ancf.solvers.alpha_march import (system_factor, system_prepare, system_residual,
+                                      system_solve, system_tests)
 
 
-@njit(cache=True)
-def _step(h, t_index, st, fs, cf, mdl, sys, count, tol, max_iter, fresh):
-    """One step of size h ending at step time t_index; True on convergence.
-    st = (x, v, acc, a) updated in place; fs = (S, piv, h_factored)."""
-    x, v, acc, a = st
-    S, piv, hf = fs
-    am, af, gamma, beta = cf
-    Mb, kl, Qr, Mp, gdd, presc, gvals, g0 = sys
-    n = x.size
-    bp = h * h * beta * (1 - af) / (1 - am)
-    gq = g0.copy()
-    for j in range(presc.size):
-        gq[presc[j]] = gvals[t_index, j]
-    inertial = Mp @ gdd[t_index] if presc.size else np.zeros(n)
-    acc1 = acc.copy()
-    grad, K = np.zeros(n), np.zeros_like(Mb)
-    refresh = fresh or hf[0] != h
-    d_prev = np.inf
-    for _ in range(max_iter):
-        a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
-        x1 = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
-        assemble_compiled(x1, gq, mdl, refresh, grad, K)
-        count[0] += 1
-        r = banded.matvec(Mb, kl, acc1) - Qr + grad + inertial
-        if refresh:
-            count[1] += 1
-            S[:, :] = Mb + bp * K
-            count[2] += 1
-            if banded.lu(S, kl, piv, True) != 0:
-                hf[0] = np.nan
-                return False
-            hf[0] = h
-            refresh = False
-        d = -r
-        banded.solve(S, kl, piv, d)
-        count[3] += 1
-        acc1 += d
-        dn = np.max(np.abs(d))
-        if not np.isfinite(dn):
-            return False
-        if bp * dn <= tol * (1 + np.max(np.abs(x1))):
-            a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
-            x[:] = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
-            v[:] = v + h * ((1 - gamma) * a + gamma * a1)
-            acc[:] = acc1
-            a[:] = a1
-            return True
-        if dn > REFRESH_RATIO * d_prev:
-            refresh = True
-        d_prev = dn
-    return False
+class ReducedSystem(NamedTuple):
+    """Arrays of the elimination form (pattern numbering, SI units), with work storage."""
+
+    group: tuple         # the compiled element group
+    Mb: np.ndarray       # M_r, band storage, kg
+    kl: int              # half-bandwidth
+    Qr: np.ndarray       # T^T Q, constant loads, N
+    Mp: np.ndarray       # T^T M columns of the prescribed coordinates, kg
+    gdd: np.ndarray      # their accelerations at the step times (nts, npresc), m/s^2
+    presc: np.ndarray    # the prescribed coordinates (global numbering)
+    gvals: np.ndarray    # their values at the step times (nts, npresc), m
+    g0: np.ndarray       # g of q = T z + g at t = 0
+    gq: np.ndarray       # work: g at the step end
+    inertial: np.ndarray  # work: Mp @ gdd at the step end, N
+    grad: np.ndarray     # work: T^T dU/dq at the last evaluation, N
+    K: np.ndarray        # work: K_r at the last evaluation with want_J, N/m
+    S: np.ndarray        # work: the iteration matrix, then its band LU
+    piv: np.ndarray      # work: its pivots
 
 
-@njit(cache=True)
-def march(ts, k, st, fs, cf, mdl, sys, count, tol, max_iter, limit, max_steps, slot, out_x, out_v):
-    """Steps ts[k] -> ts[-1]; returns (status, step index reached).  States after the
-    steps with slot[i] >= 0 are stored in out_x/out_v[slot[i]]; at most max_steps
-    steps are counted in count[4]."""
-    x, v = st[0], st[1]
-    backup = (x.copy(), v.copy(), st[2].copy(), st[3].copy())
-    nsteps = ts.size - 1
-    while k < nsteps:
-        if count[4] >= max_steps:
-            return BUDGET, k
-        h = ts[k + 1] - ts[k]
-        for i in range(4):
-            backup[i][:] = st[i]
-        ok = _step(h, k + 1, st, fs, cf, mdl, sys, count, tol, max_iter, False)
-        if not ok:
-            for i in range(4):
-                st[i][:] = backup[i]
-            ok = _step(h, k + 1, st, fs, cf, mdl, sys, count, tol, max_iter, True)
-        if not ok:
-            for i in range(4):
-                st[i][:] = backup[i]
-            fs[2][0] = np.nan
-            return NEWTON_FAILED, k
-        k += 1
-        count[4] += 1
-        if not np.all(np.isfinite(x)):
-            return NON_FINITE, k
-        if np.max(np.abs(x)) > limit:
-            return BLOW_UP, k
-        if slot[k] >= 0:
-            out_x[slot[k]] = x
-            out_v[slot[k]] = v
-    return DONE, k
+@implements(system_prepare, ReducedSystem)
+def _prepare(system, k):
+    system.gq[:] = system.g0
+    for j in range(system.presc.size):
+        system.gq[system.presc[j]] = system.gvals[k, j]
+    if system.presc.size:
+        system.inertial[:] = system.Mp @ system.gdd[k]
+
+
+@implements(system_residual, ReducedSystem)
+def _residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r):
+    assemble_group(system.group, x1, system.gq, want_J, system.grad, system.K)
+    r[:] = banded.matvec(system.Mb, system.kl, acc1) - system.Qr + system.grad + system.inertial
+
+
+@implements(system_factor, ReducedSystem)
+def _factor(system, bp, pivoting):
+    """S = M_r + beta' K_r, always pivoted."""
+    system.S[:, :] = system.Mb + bp * system.K
+    return banded.lu(system.S, system.kl, system.piv, True) == 0
+
+
+@implements(system_solve, ReducedSystem)
+def _solve(system, d):
+    banded.solve(system.S, system.kl, system.piv, d)
+
+
+@implements(system_tests, ReducedSystem)
+def _tests(system):
+    """All coordinates, scaled at the last evaluation, plain Newton."""
+    return system.Mb.shape[0], False, False
 
 
 class CompiledAlpha:
-    """The arrays of the compiled march for one model (in its pattern's numbering);
+    """The system, coefficients and counters of the compiled march for one model;
     :meth:`applies` says whether the model can use it."""
 
     def __init__(self, model, opt, ts):
         asm, rheo, p = model.assembly, model.rheo, model.pattern
-        self.mdl = p.compiled(asm)
         presc = np.array(sorted({int(d) for dofs, _ in rheo.motions for d in dofs} | set(rheo.follow)),
                          dtype=np.int64)
         gvals = np.array([rheo.g(t)[presc] for t in ts]) if presc.size else np.zeros((ts.size, 0))
@@ -136,8 +95,12 @@ class CompiledAlpha:
         Mp = np.zeros((p.n, presc.size))
         np.add.at(Mp, p.zsel, Mcols[p.qsel])
         Q = model.forces.value(rheo.g0, np.zeros(asm.n_dofs), 0.0)
-        self.sys = (model.Mb, p.kl, p.reduce(Q), Mp, gdd, presc, gvals, np.array(rheo.g0, dtype=float))
-        self.fs = (p.zeros_matrix(), np.zeros(p.n, dtype=np.int64), np.array([np.nan]))
+        g0 = np.array(rheo.g0, dtype=float)
+        self.system = ReducedSystem(p.compiled(asm), model.Mb, p.kl, p.reduce(Q), Mp, gdd, presc,
+                                    gvals, g0, g0.copy(), np.zeros(p.n), np.zeros(p.n),
+                                    p.zeros_matrix(), p.zeros_matrix(),
+                                    np.zeros(p.n, dtype=np.int64))
+        self.hf = np.array([np.nan])
         self.cf = np.array(opt.coefficients())
         self.count = np.zeros(5, dtype=np.int64)
 

@@ -31,7 +31,8 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from ancf.solvers.alpha_compiled import BLOW_UP, BUDGET, DONE, NON_FINITE, CompiledAlpha, march
+from ancf.solvers.alpha_compiled import CompiledAlpha
+from ancf.solvers.alpha_march import BLOW_UP, BUDGET, DONE, NON_FINITE, march
 from ancf.solvers.result import DynamicResult, finish
 
 
@@ -263,8 +264,9 @@ def _run_compiled(model, st, s, t_out, ts, limit, opt):
     out_x[slot[0]], out_v[slot[0]] = state[0], state[1]
     k, ok, msg, reached = 0, True, "reached t_end", ts.size - 1
     while ok:
-        status, k = march(ts, k, state, ca.fs, ca.cf, ca.mdl, ca.sys, ca.count, opt.newton_tol,
-                          opt.max_iter, limit, opt.max_steps - st.steps, slot, out_x, out_v)
+        status, k = march(ts, k, ts.size - 1, state, ca.system, ca.hf, ca.cf, ca.count,
+                          opt.newton_tol, opt.max_iter, limit, opt.max_steps - st.steps, slot,
+                          out_x, out_v)
         if status == DONE:
             break
         ok, reached = False, k - 1
@@ -283,7 +285,7 @@ def _run_compiled(model, st, s, t_out, ts, limit, opt):
 
 def integrate_generalized_alpha(model, x0, v0, t_out, opt: AlphaOptions) -> DynamicResult:
     """Fixed-step generalised-alpha over the samples ``t_out`` (see :func:`step_times`);
-    compiled (:mod:`ancf.solvers.alpha_compiled`) where the model allows."""
+    compiled (:mod:`ancf.solvers.alpha_march`) where the model allows."""
     st, t_out = _Stepper(model, opt), np.asarray(t_out, dtype=float)
     limit = opt.q_limit * (1.0 + np.max(np.abs(x0)))
     count = np.zeros(5, dtype=np.int64)  # residuals, tangents, factorisations, iterations, steps

@@ -14,7 +14,7 @@ import numpy as np
 
 from numba import njit
 
-from ancf.core.pattern import ReducedPattern, assemble_compiled
+from ancf.core.pattern import ReducedPattern, assemble_group
 from ancf.solvers import banded
 from ancf.solvers.linear import Singular, factor, stability
 
@@ -58,7 +58,7 @@ def _roundoff_floor(k_inf: float, z) -> float:
 
 
 @njit(cache=True)
-def _newton_band(z, g, mdl, kl, lam, Qr, tol, xtol, max_iter, hist):
+def _newton_band(z, g, group, kl, lam, Qr, tol, xtol, max_iter, hist):
     """The iterations of :meth:`_Newton.run` in one compiled call, for a planar
     Green-strain group on band storage without force terms (tol = rtol |Qk|).
     Returns (z, status, iterations, |r|, factorisations); status 0 converged, 1 residual
@@ -68,7 +68,7 @@ def _newton_band(z, g, mdl, kl, lam, Qr, tol, xtol, max_iter, hist):
     piv = np.empty(n, dtype=np.int64)
     small, facts, rn = False, 0, 0.0
     for it in range(1, max_iter + 1):
-        assemble_compiled(z, g, mdl, True, grad, K)
+        assemble_group(group, z, g, True, grad, K)
         r = lam * Qr - grad
         rn = np.sqrt(np.dot(r, r))
         hist[it - 1] = rn
@@ -94,6 +94,12 @@ def _newton_band(z, g, mdl, kl, lam, Qr, tol, xtol, max_iter, hist):
     return z, 3, max_iter, rn, facts
 
 
+@njit(cache=True)
+def _assemble_group(group, z, g, grad, K):
+    """:func:`~ancf.core.pattern.assemble_group` with the tangent, called from Python."""
+    assemble_group(group, z, g, True, grad, K)
+
+
 class _Newton:
     """Newton iterations on the reduced system ``T^T (lam (Qk + Q(q)) - dU/dq) = 0``, assembled
     straight into the pattern's storage and solved by the pattern's solver."""
@@ -111,7 +117,7 @@ class _Newton:
         if self.compiled is None:
             return self.pattern.assemble(self.assembly, self.pattern.expand(z, self.g))
         grad, K = np.zeros(self.pattern.n), self.pattern.zeros_matrix()
-        assemble_compiled(z, self.g, self.compiled, True, grad, K)
+        _assemble_group(self.compiled, z, self.g, grad, K)
         return grad, K
 
     def _force(self, q, lam, K):

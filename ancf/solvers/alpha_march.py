@@ -1,0 +1,210 @@
+"""The compiled march of the generalised-alpha scheme, shared by every system that
+has one (the elimination form of beams, :mod:`ancf.solvers.alpha_compiled`; the belt
+drives, :mod:`ancf.belts.system`).
+
+Recurrence of :mod:`ancf.solvers.generalized_alpha` (Arnold & Brüls 2007): the unknown
+of a step t_n -> t_{n+1} = t_n + h is the acceleration acc1 = q''_{n+1}, and
+
+    a1 = ((1 - alpha_f) acc1 + alpha_f q''_n - alpha_m a_n) / (1 - alpha_m)
+    q_{n+1} = q_n + h q'_n + h^2 ((1/2 - beta) a_n + beta a1)
+    q'_{n+1} = q'_n + h ((1 - gamma) a_n + gamma a1)
+
+with beta' = h^2 beta (1 - alpha_f) / (1 - alpha_m), gamma' = h gamma (1 - alpha_f) /
+(1 - alpha_m) the derivatives of q_{n+1}, q'_{n+1} by acc1.  Modified Newton on the
+residual r(acc1) = M acc1 + f(q_{n+1}, q'_{n+1}, t_{n+1}):
+
+* the iteration matrix and its factors are kept across iterations and steps; they are
+  refreshed (new matrix, new factors) when there are none, the step size changed, an
+  increment fails to contract (|d_k| > REFRESH_RATIO |d_{k-1}|) or was damped;
+* converged when beta' |d|_inf <= tol (1 + |q|_inf) over the system's first m
+  coordinates, q at the step's start or at the last full evaluation as the system
+  says, and beta' lam |d_i| <= tol for the others (a position increment);
+* a step that fails with kept factors is retried once with fresh ones (pivoted); one
+  that fails with fresh factors ends the march with NEWTON_FAILED, the state at the
+  step's start and no factors, and the caller takes it with smaller steps;
+* the march also ends on the step budget (BUDGET), non-finite coordinates
+  (NON_FINITE) or coordinates above ``limit`` (BLOW_UP), and stores the states after
+  the steps it is asked to keep (``slot``).
+
+What belongs to the system (the record ``system``, a NamedTuple whose class chooses
+the implementations at compile time, :mod:`ancf.common.dispatch`): the step's
+prescribed data (:func:`system_prepare`), residual and iteration matrix
+(:func:`system_residual`), factorisation (:func:`system_factor`) and solve
+(:func:`system_solve`), and (:func:`system_tests`) the coordinates the blow-up and
+convergence tests look at, the positions the convergence test scales by and whether
+an increment is damped by backtracking (halved at most MAX_BACKTRACKS times until |r|
+decreases by the Armijo factor 1 - 1e-4 lam; this breaks the 2-cycles of belt points
+switching between sticking, sliding and no contact).
+
+Counters ``count``: 0 residual evaluations, 1 iteration matrices, 2 factorisations,
+3 solves (= Newton iterations), 4 steps; entries past 4 belong to the system.
+``st`` = (q, q', q'', a) is updated in place; ``hf`` (1,) holds the step size (s) the kept
+factors belong to (nan: none).
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
+#: contraction ratio above which the kept iteration matrix is refreshed
+REFRESH_RATIO = 0.5
+MAX_BACKTRACKS = 8  # trial lengths 1, 1/2, ... 1/128 of a Newton increment
+
+
+def system_prepare(system, k):
+    """Set the system's data of the step ending at step time index k."""
+    raise NotImplementedError("resolved at compile time by the type of system")
+
+
+def system_residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r):
+    """r = residual at (x1, v1, acc1) and step time index k; if want_J, the force part
+    of the iteration matrix (beta' bp, gamma' gp) into the system's storage."""
+    raise NotImplementedError("resolved at compile time by the type of system")
+
+
+def system_factor(system, bp, pivoting) -> bool:
+    """Factor the iteration matrix (pivoting asked for fresh factors); False if singular."""
+    raise NotImplementedError("resolved at compile time by the type of system")
+
+
+def system_solve(system, d):
+    """d = S^-1 d in place with the kept factors."""
+    raise NotImplementedError("resolved at compile time by the type of system")
+
+
+def system_tests(system):
+    """(m, from_start, damped): the blow-up and convergence tests look at the first m
+    coordinates; the convergence test scales by the positions at the step's start
+    (from_start) or at the last full evaluation; Newton increments are damped."""
+    raise NotImplementedError("resolved at compile time by the type of system")
+
+
+@njit(cache=True)
+def kinematics(acc1, st, h, cf):
+    """(q_{n+1}, q'_{n+1}, a_{n+1}) of the recurrence for the acceleration acc1."""
+    x, v, acc, a = st
+    am, af, gamma, beta = cf
+    a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
+    x1 = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
+    v1 = v + h * ((1 - gamma) * a + gamma * a1)
+    return x1, v1, a1
+
+
+@njit(cache=True)
+def _evaluate(system, acc1, st, h, k, cf, want_J, count, r):
+    """Residual at acc1 into r (and the iteration matrix if want_J); returns q_{n+1}."""
+    am, af, gamma, beta = cf
+    x1, v1, _ = kinematics(acc1, st, h, cf)
+    bp = h * h * beta * (1 - af) / (1 - am)
+    gp = h * gamma * (1 - af) / (1 - am)
+    system_residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r)
+    count[0] += 1
+    return x1
+
+
+@njit(cache=True)
+def _backtrack(system, acc1, d, st, h, k, cf, count, r, rt):
+    """Length lam of the damped increment; rt = residual at the last trial."""
+    rn, lam = np.sqrt(np.dot(r, r)), 1.0
+    for _ in range(MAX_BACKTRACKS):
+        _evaluate(system, acc1 + lam * d, st, h, k, cf, False, count, rt)
+        if np.sqrt(np.dot(rt, rt)) <= (1 - 1e-4 * lam) * rn:
+            break
+        lam *= 0.5
+    return lam
+
+
+@njit(cache=True)
+def _converged(bp, dn, lam, d, xs, m, tol):
+    """beta' dn <= tol (1 + |xs[:m]|_inf) and beta' lam |d_i| <= tol for i >= m."""
+    ok = bp * dn <= tol * (1 + np.max(np.abs(xs[:m])))
+    for i in range(m, d.size):
+        ok = ok and bp * lam * abs(d[i]) <= tol
+    return ok
+
+
+@njit(cache=True)
+def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
+    """One step of size h ending at step time index k; True on convergence."""
+    x, v, acc, a = st
+    am, af, gamma, beta = cf
+    bp = h * h * beta * (1 - af) / (1 - am)
+    system_prepare(system, k)
+    acc1 = acc.copy()
+    r, rt = np.zeros(acc.size), np.zeros(acc.size)
+    m, from_start, damped = system_tests(system)
+    refresh = fresh or hf[0] != h
+    have_r, x1, d_prev = False, x, np.inf
+    for _ in range(max_iter):
+        if not have_r:
+            x1 = _evaluate(system, acc1, st, h, k, cf, refresh, count, r)
+        if refresh:
+            count[1] += 1
+            count[2] += 1
+            if not system_factor(system, bp, fresh):
+                hf[0] = np.nan
+                return False
+            hf[0] = h
+            refresh = False
+        d = -r
+        system_solve(system, d)
+        count[3] += 1
+        lam = 1.0
+        if damped:
+            lam = _backtrack(system, acc1, d, st, h, k, cf, count, r, rt)
+            r[:] = rt
+            have_r = True
+        acc1 += lam * d
+        dn = lam * np.max(np.abs(d[:m]))
+        if not np.isfinite(dn):
+            return False
+        if _converged(bp, dn, lam, d, x if from_start else x1, m, tol):
+            x1, v1, a1 = kinematics(acc1, st, h, cf)
+            x[:] = x1
+            v[:] = v1
+            acc[:] = acc1
+            a[:] = a1
+            return True
+        if dn > REFRESH_RATIO * d_prev or lam < 1.0:
+            refresh = True
+            if have_r:
+                _evaluate(system, acc1, st, h, k, cf, True, count, r)
+        d_prev = dn
+    return False
+
+
+@njit(cache=True)
+def march(ts, k, k_stop, st, system, hf, cf, count, tol, max_iter, limit, max_steps, slot,
+          out_x, out_v):
+    """Steps ts[k] -> ts[k_stop] (s); returns (status, step index reached).  The states
+    after the steps i with slot[i] >= 0 go to out_x/out_v[slot[i]]; at most max_steps
+    steps are counted in count[4]."""
+    x, v = st[0], st[1]
+    backup = (x.copy(), v.copy(), st[2].copy(), st[3].copy())
+    while k < k_stop:
+        if count[4] >= max_steps:
+            return BUDGET, k
+        h = ts[k + 1] - ts[k]
+        for i in range(4):
+            backup[i][:] = st[i]
+        ok = _step(h, k + 1, st, system, hf, cf, count, tol, max_iter, False)
+        if not ok:
+            for i in range(4):
+                st[i][:] = backup[i]
+            ok = _step(h, k + 1, st, system, hf, cf, count, tol, max_iter, True)
+        if not ok:
+            for i in range(4):
+                st[i][:] = backup[i]
+            hf[0] = np.nan
+            return NEWTON_FAILED, k
+        k += 1
+        count[4] += 1
+        if not np.all(np.isfinite(x)):
+            return NON_FINITE, k
+        if np.max(np.abs(x[: system_tests(system)[0]])) > limit:
+            return BLOW_UP, k
+        if slot[k] >= 0:
+            out_x[slot[k]] = x
+            out_v[slot[k]] = v
+    return DONE, k
