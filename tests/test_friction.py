@@ -25,13 +25,13 @@ def _velocities(n, rng):
 
 def _force(law, v, Fn):
     f = np.zeros(v.size)
-    branch = law[0](v, np.linalg.norm(v), Fn, PRM, f)
+    branch = law[0](tuple(v), np.linalg.norm(v), Fn, PRM, f)
     return branch, f
 
 
 def _chain(law, branch, v, Fn, G, gF):
     D = np.zeros((v.size, G.shape[1]))
-    law[1](branch, v, np.linalg.norm(v), Fn, PRM, G, gF, D)
+    law[1](branch, tuple(v), np.linalg.norm(v), Fn, PRM, G, gF, D)
     return D
 
 

@@ -45,7 +45,7 @@ import numpy as np
 from numba import njit
 
 from ancf.belts import friction
-from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_derivatives, positive_lengths
+from ancf.belts.contact_common import BOUND_MARGIN, positive_lengths
 from ancf.elements._generated import cubic2d_S
 from ancf.core.quadrature import gauss01
 
@@ -89,36 +89,35 @@ def _may_touch(E, e, l, o0, o1, R):
 
 
 @njit(cache=True)
-def _point_law(a0, a1, v0, v1, R, om, prm, v, f):
+def _point_law(a0, a1, v0, v1, R, om, prm, f):
     """Contact law at one point, r - o = a (m), rdot = v0, v1 (m/s).  Returns |r - o|, d,
     F_n, v_t and the friction law's branch (0 out of contact or clamped); fills
-    v = [v_t] and f = [phi] (1,)."""
+    f = [phi] (1,)."""
     kp, cp = prm[0], prm[1]
     rho = np.hypot(a0, a1)
     n0, n1 = a0 / rho, a1 / rho
     d = R - rho
     vt = -n1 * v0 + n0 * v1 - om * R
-    v[0], f[0] = vt, 0.0
+    f[0] = 0.0
     Fn = kp * d - cp * (n0 * v0 + n1 * v1) if d >= 0.0 else 0.0
     if Fn <= 0.0:
         return rho, d, 0.0, vt, 0
-    return rho, d, Fn, vt, friction.force(v, abs(vt), Fn, prm, f)
+    return rho, d, Fn, vt, friction.force((vt,), abs(vt), Fn, prm, f)
 
 
 @njit(cache=True)
-def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, branch, v, f, prm, G, gF, Dphi, D):
+def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, gF, Dphi, D):
     """D (3, 5): derivatives of (f_0, f_1, tau = -phi |r - o|) with respect to
     (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0); G (1, 5), gF (5,)
     the derivatives of v_t and F_n, Dphi (1, 5) those of phi (scratch)."""
     kp, cp = prm[0], prm[1]
-    phi = f[0]
     n0, n1 = a0 / rho, a1 / rho
     t0, t1 = -n1, n0
     vn, vtt = n0 * v0 + n1 * v1, t0 * v0 + t1 * v1
     gF[0], gF[1] = -kp * n0 - cp * vtt / rho * t0, -kp * n1 - cp * vtt / rho * t1
     gF[2], gF[3], gF[4] = -cp * n0, -cp * n1, 0.0
     G[0, 0], G[0, 1], G[0, 2], G[0, 3], G[0, 4] = -vn / rho * t0, -vn / rho * t1, t0, t1, -R
-    friction.chain(branch, v, abs(v[0]), Fn, prm, G, gF, Dphi)
+    friction.chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi)
     n, t = (n0, n1), (t0, t1)
     for c in range(5):
         gphi = Dphi[0, c]
@@ -149,12 +148,15 @@ def _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw):
     for k in range(ns):
         sk = ww * S0[e, g, k]
         for d in range(2):
+            Qw[e, p, 2 * k + d] += sk * D[d, 4]
+            dTq[p, e, 2 * k + d] += sk * D[2, d]
+            dTv[p, e, 2 * k + d] += sk * D[2, 2 + d]
             for m in range(ns):
                 skm = sk * S0[e, g, m]
                 for c in range(2):
                     Kq[e, 2 * k + d, 2 * m + c] += skm * D[d, c]
                     Cv[e, 2 * k + d, 2 * m + c] += skm * D[d, 2 + c]
-    add_pulley_derivatives(S0, e, g, p, ww, D, Qw, dTq, dTv, dTw)
+    dTw[p] += ww * D[2, 4]
 
 
 @njit(cache=True)
@@ -172,7 +174,7 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
     """
     nel, ng = w.shape
     D, Dphi, G, gF = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5)), np.zeros(5)
-    v, f = np.zeros(1), np.zeros(1)
+    f = np.zeros(1)
     pairs = 0
     for e in range(nel):
         l = 0.0
@@ -186,7 +188,7 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
             for g in range(ng):
                 r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
                 a0, a1 = r0 - o0, r1 - o1
-                rho, _, Fn, _, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, v, f)
+                rho, _, Fn, vt, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, f)
                 if Fn <= 0.0:
                     continue
                 ww, phi = w[e, g], f[0]
@@ -197,7 +199,8 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
                     Q[e, 2 * k + 1] += ww * S0[e, g, k] * f1
                 T[p] -= ww * phi * rho
                 if want_J:
-                    _point_jacobian(a0, a1, v0, v1, R, rho, Fn, branch, v, f, prm, G, gF, Dphi, D)
+                    _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, gF,
+                                    Dphi, D)
                     _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw)
     return pairs
 
@@ -215,13 +218,13 @@ def contact_state(E, V, S0, centres, radii, omegas, prm):
     r = np.zeros((nel, ng, 2))
     d, Fn = np.zeros((nel, ng, npul)), np.zeros((nel, ng, npul))
     phi, vt = np.zeros((nel, ng, npul)), np.zeros((nel, ng, npul))
-    v, f = np.zeros(1), np.zeros(1)
+    f = np.zeros(1)
     for e in range(nel):
         for g in range(ng):
             r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
             r[e, g, 0], r[e, g, 1] = r0, r1
             for p in range(npul):
                 _, dd, F, vtp, _ = _point_law(r0 - centres[p, 0], r1 - centres[p, 1], v0, v1,
-                                              radii[p], omegas[p], prm, v, f)
+                                              radii[p], omegas[p], prm, f)
                 d[e, g, p], Fn[e, g, p], phi[e, g, p], vt[e, g, p] = dd, F, f[0], vtp
     return r, d, Fn, phi, vt

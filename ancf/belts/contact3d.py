@@ -48,7 +48,7 @@ import numpy as np
 from numba import njit
 
 from ancf.belts import friction
-from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_derivatives, positive_lengths
+from ancf.belts.contact_common import BOUND_MARGIN, positive_lengths
 from ancf.elements._generated import plate36_S
 from ancf.core.quadrature import gauss01
 
@@ -199,7 +199,7 @@ def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
     Fn = kp * d - cp * vn
     if Fn <= 0.0:
         return rho, d, 0.0, vsn, 1
-    return rho, d, Fn, vsn, friction.force(vs, vsn, Fn, prm, ft)
+    return rho, d, Fn, vsn, friction.force((vs[0], vs[1], vs[2]), vsn, Fn, prm, ft)
 
 
 @njit(cache=True)
@@ -224,7 +224,7 @@ def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, G, D)
             G[i, c] = -(nw * t[i] + tw * n[i]) * t[c] / rho
             G[i, 3 + c] = (1.0 if i == c else 0.0) - n[i] * n[c]
         G[i, 6] = -R * t[i]
-    friction.chain(branch, vs, vsn, Fn, prm, G, gF, D)  # D[:3] = d f_t
+    friction.chain(branch, (vs[0], vs[1], vs[2]), vsn, Fn, prm, G, gF, D)  # D[:3] = d f_t
     # + d(F_n n)
     for i in range(3):
         for c in range(7):
@@ -255,8 +255,7 @@ def _mid_surface(E, V, S0, e, q, r, v):
 
 @njit(cache=True)
 def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
-    """Add point q's terms to the omega and moment derivatives
-    (:func:`ancf.belts.contact_common.add_pulley_derivatives`), and its shape-function
+    """Add point q's terms to the omega and moment derivatives, and its shape-function
     products to the pair's buffer A (18, 78): for k <= m (pair index km),
     A[3 d + c, km] += w S_k S_m dF_d/dr_c and A[9 + 3 d + c, km] += w S_k S_m dF_d/drdot_c
     (the 3 x 3 blocks (k, m) and (m, k) of dQ/de, dQ/dedot are equal; :func:`_flush`).
@@ -265,6 +264,10 @@ def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
     km = 0
     for k in range(ns):
         sk = ww * S0[e, q, k]
+        for d in range(3):
+            Qw[e, p, 3 * k + d] += sk * D[d, 6]
+            dTq[p, e, 3 * k + d] += sk * D[3, d]
+            dTv[p, e, 3 * k + d] += sk * D[3, 3 + d]
         for m in range(k, ns):
             P[km] = sk * S0[e, q, m]
             km += 1
@@ -274,7 +277,7 @@ def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
             j = 3 * d + c if c < 3 else 6 + 3 * d + c
             for i in range(km):
                 A[j, i] += P[i] * dj
-    add_pulley_derivatives(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw)
+    dTw[p] += ww * D[3, 6]
 
 
 @njit(cache=True)

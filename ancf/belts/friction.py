@@ -4,7 +4,7 @@ law's exact derivatives; used by both contact kernels (:mod:`ancf.belts.contact2
 :mod:`ancf.belts.contact3d`), which supply the geometry (normal, tangent plane,
 penetration, sliding velocity) and chain the derivatives through r, rdot and omega.
 
-A law acts on the sliding velocity v (n,) in the tangent plane, m/s: n = 1 for the
+A law acts on the sliding velocity v (n-tuple) in the tangent plane, m/s: n = 1 for the
 planar kernel (v = v_t along t, Eq. 3.25), n = 3 for the plate (v = v_s, the sliding
 velocity with its normal part removed), its speed s = |v| (m/s) and the normal force
 F_n > 0 (N/m in 2D, N/m^2 in 3D).  It is a pair of compiled functions:
@@ -16,13 +16,18 @@ F_n > 0 (N/m in 2D, N/m^2 in 3D).  It is a pair of compiled functions:
 where ``branch`` is the law's own code for the piece it is on (the kernels report it),
 G (n, m) = dv/dx and gF (m,) = dF_n/dx are the derivatives of the law's arguments in
 the kernel's variables x, and ``prm`` = [k_p, c_p, mu, nu_s] is the drive's contact
-vector (a law reads what it needs from it).  The derivatives are those of the branch
-the point is on (exact away from the switching surfaces).
+vector (a law reads what it needs from it).  v is a tuple: its length is part of its
+type, so each kernel gets the law compiled for its dimension (loops of known length),
+and the law is compiled into the kernel's own code (``inline="always"``): a call per
+contact point costs measurable time.
+The derivatives are those of the branch the point is on (exact away from the
+switching surfaces).
 
 :data:`LAWS` maps a name to a law; :data:`LAW` names the one the kernels are compiled
 with, :func:`force` and :func:`chain` are its functions (numba binds them when it
 compiles the kernels).  A new law is one more pair of functions and one more row of
-:data:`LAWS`; tests/test_friction.py checks every row's derivatives.
+:data:`LAWS` (and :data:`LAW`, to compile the kernels with it); tests/test_friction.py
+checks every row's derivatives.
 """
 from __future__ import annotations
 
@@ -33,31 +38,31 @@ from numba import njit
 LINEAR, SATURATED = 2, 3
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def creep_rate_force(v, s, Fn, prm, f):
     """Tri-linear creep-rate law (Eq. 3.23, Fig. 3.3): f = -nu_s v while
     nu_s |v| <= mu F_n, else the Coulomb force -mu F_n v / |v| (mu = prm[2] -,
     nu_s = prm[3] kg/(m s) or kg/(m^2 s)).  Returns LINEAR or SATURATED."""
     mu, nu = prm[2], prm[3]
     if nu * s <= mu * Fn:
-        for i in range(v.size):
+        for i in range(len(v)):
             f[i] = -nu * v[i]
         return LINEAR
-    if v.size == 1:  # the direction v / |v| is sign(v), exactly
+    if len(v) == 1:  # the direction v / |v| is sign(v), exactly
         f[0] = -np.sign(v[0]) * mu * Fn
         return SATURATED
-    for i in range(v.size):
+    for i in range(len(v)):
         f[i] = -mu * Fn * v[i] / s
     return SATURATED
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def creep_rate_chain(branch, v, s, Fn, prm, G, gF, D):
     """Derivatives of :func:`creep_rate_force` chained through G, gF (see the module):
     linear, df/dv = -nu_s I, df/dF_n = 0; saturated, with u = v / s and g = mu F_n / s,
     df/dv = -g (I - u u^T), df/dF_n = -mu u."""
     mu, nu = prm[2], prm[3]
-    n, m = v.size, G.shape[1]
+    n, m = len(v), G.shape[1]
     if branch == LINEAR:
         for i in range(n):
             for c in range(m):
