@@ -31,7 +31,7 @@ def _force(law, v, Fn):
 
 def _chain(law, branch, v, Fn, G, gF):
     D = np.zeros((v.size, G.shape[1]))
-    law[1](branch, tuple(v), np.linalg.norm(v), Fn, PRM, G, gF, D)
+    law[1](branch, tuple(v), np.linalg.norm(v), Fn, PRM, G, tuple(gF), D)
     return D
 
 

@@ -106,16 +106,15 @@ def _point_law(a0, a1, v0, v1, R, om, prm, f):
 
 
 @njit(cache=True)
-def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, gF, Dphi, D):
+def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D):
     """D (3, 5): derivatives of (f_0, f_1, tau = -phi |r - o|) with respect to
-    (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0); G (1, 5), gF (5,)
-    the derivatives of v_t and F_n, Dphi (1, 5) those of phi (scratch)."""
+    (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0); G (1, 5) the
+    derivatives of v_t, Dphi (1, 5) those of phi (scratch)."""
     kp, cp = prm[0], prm[1]
     n0, n1 = a0 / rho, a1 / rho
     t0, t1 = -n1, n0
     vn, vtt = n0 * v0 + n1 * v1, t0 * v0 + t1 * v1
-    gF[0], gF[1] = -kp * n0 - cp * vtt / rho * t0, -kp * n1 - cp * vtt / rho * t1
-    gF[2], gF[3], gF[4] = -cp * n0, -cp * n1, 0.0
+    gF = (-kp * n0 - cp * vtt / rho * t0, -kp * n1 - cp * vtt / rho * t1, -cp * n0, -cp * n1, 0.0)
     G[0, 0], G[0, 1], G[0, 2], G[0, 3], G[0, 4] = -vn / rho * t0, -vn / rho * t1, t0, t1, -R
     friction.chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi)
     n, t = (n0, n1), (t0, t1)
@@ -173,7 +172,7 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
     number of (element, pulley) pairs whose Gauss points were evaluated.
     """
     nel, ng = w.shape
-    D, Dphi, G, gF = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5)), np.zeros(5)
+    D, Dphi, G = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5))
     f = np.zeros(1)
     pairs = 0
     for e in range(nel):
@@ -199,8 +198,8 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
                     Q[e, 2 * k + 1] += ww * S0[e, g, k] * f1
                 T[p] -= ww * phi * rho
                 if want_J:
-                    _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, gF,
-                                    Dphi, D)
+                    _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi,
+                                    D)
                     _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw)
     return pairs
 

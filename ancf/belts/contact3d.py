@@ -224,7 +224,8 @@ def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, G, D)
             G[i, c] = -(nw * t[i] + tw * n[i]) * t[c] / rho
             G[i, 3 + c] = (1.0 if i == c else 0.0) - n[i] * n[c]
         G[i, 6] = -R * t[i]
-    friction.chain(branch, (vs[0], vs[1], vs[2]), vsn, Fn, prm, G, gF, D)  # D[:3] = d f_t
+    gFt = (gF[0], gF[1], gF[2], gF[3], gF[4], gF[5], gF[6])
+    friction.chain(branch, (vs[0], vs[1], vs[2]), vsn, Fn, prm, G, gFt, D)  # D[:3] = d f_t
     # + d(F_n n)
     for i in range(3):
         for c in range(7):

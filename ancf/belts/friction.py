@@ -11,17 +11,16 @@ F_n > 0 (N/m in 2D, N/m^2 in 3D).  It is a pair of compiled functions:
 
     force(v, s, F_n, prm, f) -> branch     f (n,) friction force, N/m or N/m^2
     chain(branch, v, s, F_n, prm, G, gF, D)
-        D[i, c] = sum_j df_i/dv_j G[j, c] + df_i/dF_n gF[c],   i < n, c < G.shape[1]
+        D[i, c] = sum_j df_i/dv_j G[j, c] + df_i/dF_n gF[c],   i < n, c < m
 
 where ``branch`` is the law's own code for the piece it is on (the kernels report it),
-G (n, m) = dv/dx and gF (m,) = dF_n/dx are the derivatives of the law's arguments in
-the kernel's variables x, and ``prm`` = [k_p, c_p, mu, nu_s] is the drive's contact
-vector (a law reads what it needs from it).  v is a tuple: its length is part of its
-type, so each kernel gets the law compiled for its dimension (loops of known length),
-and the law is compiled into the kernel's own code (``inline="always"``): a call per
-contact point costs measurable time.
-The derivatives are those of the branch the point is on (exact away from the
-switching surfaces).
+G (n, m) = dv/dx and gF (m-tuple) = dF_n/dx are the derivatives of the law's arguments
+in the kernel's variables x, and ``prm`` = [k_p, c_p, mu, nu_s] is the drive's contact
+vector (a law reads what it needs from it).  v and gF are tuples: their lengths are part
+of their types, so each kernel gets the law compiled for its sizes (loops of known
+length), and the law is compiled into the kernel's own code (``inline="always"``): a
+call per contact point costs measurable time.  The derivatives are those of the branch
+the point is on (exact away from the switching surfaces).
 
 :data:`LAWS` maps a name to a law; :data:`LAW` names the one the kernels are compiled
 with, :func:`force` and :func:`chain` are its functions (numba binds them when it
@@ -62,7 +61,7 @@ def creep_rate_chain(branch, v, s, Fn, prm, G, gF, D):
     linear, df/dv = -nu_s I, df/dF_n = 0; saturated, with u = v / s and g = mu F_n / s,
     df/dv = -g (I - u u^T), df/dF_n = -mu u."""
     mu, nu = prm[2], prm[3]
-    n, m = len(v), G.shape[1]
+    n, m = len(v), len(gF)
     if branch == LINEAR:
         for i in range(n):
             for c in range(m):
