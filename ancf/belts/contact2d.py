@@ -24,9 +24,10 @@ normal force is clamped at zero (no tension across the contact).
 Friction law (our reading of Eq 3.23 and the tri-linear creep-rate law of Fig 3.3):
 the friction force per unit length grows linearly with the sliding velocity with
 slope nu_s (kg/(m s) = N s/m^2), through zero, and saturates at the Coulomb value
-mu |f_n| for |v_t| >= mu F_n / nu_s; the three lines are -mu F_n, -nu_s v_t and
-+mu F_n.  The surface speed of the pulley is omega R, as written in Eq 3.25 (R, not
-|r - o|).
+mu |f_n| for |v_t| > mu F_n / nu_s; the three lines are -mu F_n, -nu_s v_t and
++mu F_n.  The law (the tri-linear one, or another) is :mod:`ancf.belts.friction`'s, on
+v = [v_t]; this module supplies the geometry and the chain rule.  The surface speed of
+the pulley is omega R, as written in Eq 3.25 (R, not |r - o|).
 
 Generalised force (Eq 3.27) and pulley moment (Eq 3.26 integrand; the normal force
 passes through the centre and has no moment), Gauss quadrature over each element:
@@ -43,16 +44,14 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from ancf.belts import friction
+from ancf.belts.contact_common import BOUND_MARGIN, positive_lengths
 from ancf.elements._generated import cubic2d_S
 from ancf.core.quadrature import gauss01
 
 #: Gauss rules along the element the contact is integrated with (the force is not
 #: smooth, so more points than the stiffness needs; Eq 3.27 discussion).
 SUPPORTED_POINTS = (5, 7, 11)
-
-#: relative widening of the bounding disc, so that the rounding of the Gauss-point
-#: positions (a few ulps of the coordinates) cannot put a skipped point in contact.
-_BOUND_MARGIN = 1e3 * np.finfo(np.float64).eps
 
 
 def contact_points(lengths, gauss_points):
@@ -65,10 +64,7 @@ def contact_points(lengths, gauss_points):
     """
     if gauss_points not in SUPPORTED_POINTS:
         raise ValueError(f"gauss_points must be one of {SUPPORTED_POINTS} (got {gauss_points!r})")
-    l = np.asarray(lengths, dtype=float)
-    if l.ndim != 1 or not np.all(np.isfinite(l) & (l > 0)):
-        raise ValueError(f"lengths must be a 1-D array of positive finite lengths, m "
-                         f"(got {lengths!r})")
+    l = positive_lengths("lengths", lengths)
     xi, wg = gauss01(int(gauss_points))
     L = l[:, None]
     S0 = np.ascontiguousarray(cubic2d_S(xi[None, :] * L, 0.0, L))
@@ -89,40 +85,41 @@ def _may_touch(E, e, l, o0, o1, R):
     rb = max(np.hypot(p0x - cx, p0y - cy), np.hypot(p1x - cx, p1y - cy),
              np.hypot(p2x - cx, p2y - cy), np.hypot(p3x - cx, p3y - cy))
     dist = np.hypot(cx - o0, cy - o1)
-    return dist - rb <= R + _BOUND_MARGIN * (dist + rb + R)
+    return dist - rb <= R + BOUND_MARGIN * (dist + rb + R)
 
 
 @njit(cache=True)
-def _point_law(a0, a1, v0, v1, R, om, prm):
-    """Contact law at one point, r - o = a (m), rdot = v (m/s).  Returns |r - o|, d, F_n,
-    v_t, phi and the slopes of the active friction branch dphi/dv_t, dphi/dF_n."""
-    kp, cp, mu, nu = prm[0], prm[1], prm[2], prm[3]
+def _point_law(a0, a1, v0, v1, R, om, prm, f):
+    """Contact law at one point, r - o = a (m), rdot = v0, v1 (m/s).  Returns |r - o|, d,
+    F_n, v_t and the friction law's branch (0 out of contact or clamped); fills
+    f = [phi] (1,)."""
+    kp, cp = prm[0], prm[1]
     rho = np.hypot(a0, a1)
     n0, n1 = a0 / rho, a1 / rho
     d = R - rho
     vt = -n1 * v0 + n0 * v1 - om * R
+    f[0] = 0.0
     Fn = kp * d - cp * (n0 * v0 + n1 * v1) if d >= 0.0 else 0.0
     if Fn <= 0.0:
-        return rho, d, 0.0, vt, 0.0, 0.0, 0.0
-    if nu * abs(vt) < mu * Fn:
-        return rho, d, Fn, vt, -nu * vt, -nu, 0.0
-    s = np.sign(vt)
-    return rho, d, Fn, vt, -s * mu * Fn, 0.0, -s * mu
+        return rho, d, 0.0, vt, 0
+    return rho, d, Fn, vt, friction.force((vt,), abs(vt), Fn, prm, f)
 
 
 @njit(cache=True)
-def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, phi, dphi_v, dphi_F, prm, D):
+def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D):
     """D (3, 5): derivatives of (f_0, f_1, tau = -phi |r - o|) with respect to
-    (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0)."""
+    (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0); G (1, 5) the
+    derivatives of v_t, Dphi (1, 5) those of phi (scratch)."""
     kp, cp = prm[0], prm[1]
     n0, n1 = a0 / rho, a1 / rho
     t0, t1 = -n1, n0
     vn, vtt = n0 * v0 + n1 * v1, t0 * v0 + t1 * v1
     gF = (-kp * n0 - cp * vtt / rho * t0, -kp * n1 - cp * vtt / rho * t1, -cp * n0, -cp * n1, 0.0)
-    gv = (-vn / rho * t0, -vn / rho * t1, t0, t1, -R)
+    G[0, 0], G[0, 1], G[0, 2], G[0, 3], G[0, 4] = -vn / rho * t0, -vn / rho * t1, t0, t1, -R
+    friction.chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi)
     n, t = (n0, n1), (t0, t1)
     for c in range(5):
-        gphi = dphi_v * gv[c] + dphi_F * gF[c]
+        gphi = Dphi[0, c]
         for d in range(2):
             D[d, c] = n[d] * gF[c] + t[d] * gphi
         D[2, c] = -rho * gphi
@@ -175,7 +172,8 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
     number of (element, pulley) pairs whose Gauss points were evaluated.
     """
     nel, ng = w.shape
-    D = np.zeros((3, 5))
+    D, Dphi, G = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5))
+    f = np.zeros(1)
     pairs = 0
     for e in range(nel):
         l = 0.0
@@ -189,10 +187,10 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
             for g in range(ng):
                 r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
                 a0, a1 = r0 - o0, r1 - o1
-                rho, _, Fn, _, phi, dpv, dpF = _point_law(a0, a1, v0, v1, R, omegas[p], prm)
+                rho, _, Fn, vt, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, f)
                 if Fn <= 0.0:
                     continue
-                ww = w[e, g]
+                ww, phi = w[e, g], f[0]
                 f0 = (Fn * a0 - phi * a1) / rho
                 f1 = (Fn * a1 + phi * a0) / rho
                 for k in range(S0.shape[2]):
@@ -200,7 +198,8 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
                     Q[e, 2 * k + 1] += ww * S0[e, g, k] * f1
                 T[p] -= ww * phi * rho
                 if want_J:
-                    _point_jacobian(a0, a1, v0, v1, R, rho, Fn, phi, dpv, dpF, prm, D)
+                    _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi,
+                                    D)
                     _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw)
     return pairs
 
@@ -218,12 +217,13 @@ def contact_state(E, V, S0, centres, radii, omegas, prm):
     r = np.zeros((nel, ng, 2))
     d, Fn = np.zeros((nel, ng, npul)), np.zeros((nel, ng, npul))
     phi, vt = np.zeros((nel, ng, npul)), np.zeros((nel, ng, npul))
+    f = np.zeros(1)
     for e in range(nel):
         for g in range(ng):
             r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
             r[e, g, 0], r[e, g, 1] = r0, r1
             for p in range(npul):
-                _, dd, F, v, ph, _, _ = _point_law(r0 - centres[p, 0], r1 - centres[p, 1], v0, v1,
-                                                   radii[p], omegas[p], prm)
-                d[e, g, p], Fn[e, g, p], phi[e, g, p], vt[e, g, p] = dd, F, ph, v
+                _, dd, F, vtp, _ = _point_law(r0 - centres[p, 0], r1 - centres[p, 1], v0, v1,
+                                              radii[p], omegas[p], prm, f)
+                d[e, g, p], Fn[e, g, p], phi[e, g, p], vt[e, g, p] = dd, F, f[0], vtp
     return r, d, Fn, phi, vt

@@ -21,7 +21,8 @@ for a pulley of centre o (m), unit axis p, radius R (m), angular velocity omega
     f    = F_n n + f_t                          force per unit area on the plate, N/m^2
 
 The clamp F_n >= 0 and the tri-linear creep-rate law are those of :mod:`ancf.belts.contact2d`
-(there: why the clamp), the friction now a vector in the tangent plane; the linear
+(there: why the clamp), the friction now a vector in the tangent plane (the law is
+:mod:`ancf.belts.friction`'s, on v = v_s; this module supplies the geometry); the linear
 branch is smooth through v_s = 0, and the saturated branch has |v_s| > 0.  The
 surface speed is omega R (R, not |N|), as in Eq 3.25.
 
@@ -46,16 +47,13 @@ from math import comb
 import numpy as np
 from numba import njit
 
+from ancf.belts import friction
+from ancf.belts.contact_common import BOUND_MARGIN, positive_lengths
 from ancf.elements._generated import plate36_S
 from ancf.core.quadrature import gauss01
 
 #: n x n Gauss rules over each element's mid surface (the thesis uses 81 points).
 SUPPORTED_RULES = (25, 49, 81)
-
-#: relative widening of the bounding disc, so that the rounding of the point and
-#: control-point positions (a few ulps of the coordinates) cannot put a skipped point
-#: in contact.
-_BOUND_MARGIN = 1e3 * np.finfo(np.float64).eps
 
 
 def _bernstein_controls():
@@ -98,14 +96,8 @@ def contact_points3d(lengths, widths, rule):
     if rule not in SUPPORTED_RULES or isinstance(rule, bool):
         raise ValueError(f"contact_points3d: rule must be one of {SUPPORTED_RULES} "
                          f"(n x n Gauss points; got {rule!r})")
-    sides = []
-    for name, v in (("lengths", lengths), ("widths", widths)):
-        s = np.asarray(v, dtype=float)
-        if s.ndim != 1 or not np.all(np.isfinite(s) & (s > 0)):
-            raise ValueError(f"contact_points3d: {name} must be a 1-D array of positive "
-                             f"finite lengths, m (got {v!r})")
-        sides.append(s)
-    a, b = sides
+    a, b = (positive_lengths(name, v, "contact_points3d: ")
+            for name, v in (("lengths", lengths), ("widths", widths)))
     if a.shape != b.shape:
         raise ValueError(f"contact_points3d: lengths and widths differ in shape "
                          f"({a.shape} != {b.shape})")
@@ -165,7 +157,7 @@ def _may_touch(P, o, p, R, X):
         rb = max(rb, np.sqrt((X[i, 0] - c0) ** 2 + (X[i, 1] - c1) ** 2 + (X[i, 2] - c2) ** 2))
     dist = np.sqrt(c0 * c0 + c1 * c1 + c2 * c2)
     scale = dist + rb + R + big + abs(o[0]) + abs(o[1]) + abs(o[2])
-    return dist - rb <= R + _BOUND_MARGIN * scale
+    return dist - rb <= R + BOUND_MARGIN * scale
 
 
 @njit(cache=True)
@@ -179,8 +171,9 @@ def _unit_axis(axes, p, out):
 def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
     """Contact law at one point, a = r - o (m), vr = rdot - odot (m/s), unit axis p.
     Fills n, t, v_s, f_t (3,) and returns |N|, d, F_n, |v_s| and the branch:
-    0 out (d < 0), 1 clamped (F_n = 0), 2 linear, 3 saturated."""
-    kp, cp, mu, nu = prm[0], prm[1], prm[2], prm[3]
+    0 out (d < 0), 1 clamped (F_n = 0), else the friction law's (creep-rate: 2 linear,
+    3 saturated)."""
+    kp, cp = prm[0], prm[1]
     ap = a[0] * p[0] + a[1] * p[1] + a[2] * p[2]
     rho = 0.0
     for c in range(3):
@@ -206,13 +199,7 @@ def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
     Fn = kp * d - cp * vn
     if Fn <= 0.0:
         return rho, d, 0.0, vsn, 1
-    if nu * vsn <= mu * Fn:
-        for c in range(3):
-            ft[c] = -nu * vs[c]
-        return rho, d, Fn, vsn, 2
-    for c in range(3):
-        ft[c] = -mu * Fn * vs[c] / vsn
-    return rho, d, Fn, vsn, 3
+    return rho, d, Fn, vsn, friction.force((vs[0], vs[1], vs[2]), vsn, Fn, prm, ft)
 
 
 @njit(cache=True)
@@ -223,7 +210,7 @@ def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, G, D)
     dn/dr = t t^T / |N|, dt/dr = -n t^T / |N|, d|N|/dr = n^T;
     dF_n = -(k_p n + c_p (t . vr) t / |N|) . dr - c_p n . drdot;
     dv_s = -((n . w) t + (t . w) n) t^T / |N| dr + (I - n n^T) drdot - R t domega."""
-    kp, cp, mu, nu = prm[0], prm[1], prm[2], prm[3]
+    kp, cp = prm[0], prm[1]
     tv = t[0] * vr[0] + t[1] * vr[1] + t[2] * vr[2]
     nw = n[0] * vr[0] + n[1] * vr[1] + n[2] * vr[2]
     tw = tv - om * R
@@ -237,19 +224,8 @@ def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, G, D)
             G[i, c] = -(nw * t[i] + tw * n[i]) * t[c] / rho
             G[i, 3 + c] = (1.0 if i == c else 0.0) - n[i] * n[c]
         G[i, 6] = -R * t[i]
-    # D[:3] = d f_t
-    if branch == 2:
-        for i in range(3):
-            for c in range(7):
-                D[i, c] = -nu * G[i, c]
-    else:
-        s0, s1, s2 = vs[0] / vsn, vs[1] / vsn, vs[2] / vsn
-        s = (s0, s1, s2)
-        g = mu * Fn / vsn
-        for c in range(7):
-            sg = s0 * G[0, c] + s1 * G[1, c] + s2 * G[2, c]
-            for i in range(3):
-                D[i, c] = -mu * s[i] * gF[c] - g * (G[i, c] - s[i] * sg)
+    gFt = (gF[0], gF[1], gF[2], gF[3], gF[4], gF[5], gF[6])
+    friction.chain(branch, (vs[0], vs[1], vs[2]), vsn, Fn, prm, G, gFt, D)  # D[:3] = d f_t
     # + d(F_n n)
     for i in range(3):
         for c in range(7):

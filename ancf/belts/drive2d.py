@@ -64,7 +64,10 @@ class BeltSpec(DriveSpec):
 
 class PulleyDrive:
     """What the 2D and 3D belt drives share: a belt in the numbering of ``pattern``
-    (``n_dofs`` global coordinates) followed by the driven pulley's angle."""
+    (``n_dofs`` global coordinates) followed by the driven pulley's angle, and the contact
+    of its elements E (nel, nshape, dim) with the pulleys through the subclass's kernels
+    ``contact_state`` and ``contact_forces`` (staticmethods, the pulley arguments from
+    :meth:`pulleys_at_rest`)."""
 
     @property
     def n(self) -> int:
@@ -79,9 +82,28 @@ class PulleyDrive:
         """Global belt coordinates from a system vector."""
         return self.pattern.expand(np.asarray(x)[: self.n], np.zeros(self.n_dofs))
 
+    def penalty(self, E, want_J: bool):
+        """Frictionless, undamped contact at rest: (energy sum w k_p d^2/2 J, Q (nel, ndof) N,
+        dQ/de (nel, ndof, ndof) N/m or None), ndof = nshape dim."""
+        nel, nd, npul = E.shape[0], E.shape[1] * E.shape[2], self.radii.size
+        V, pulleys = np.zeros_like(E), self.pulleys_at_rest()
+        prm = np.array([self.spec.k_p, 0.0, 0.0, 0.0])
+        d = self.contact_state(E, V, self.S0, *pulleys, prm)[1]
+        U = 0.5 * self.spec.k_p * np.einsum("eg,egp->", self.w, np.maximum(d, 0.0) ** 2)
+        if not want_J:
+            return float(U), None, None
+        Q, Kq = np.zeros((nel, nd)), np.zeros((nel, nd, nd))
+        self.contact_forces(E, V, self.S0, self.w, *pulleys, prm, True, Q, Kq, np.zeros_like(Kq),
+                            np.zeros((nel, npul, nd)), np.zeros(npul), np.zeros((npul, nel, nd)),
+                            np.zeros((npul, nel, nd)), np.zeros(npul))
+        return float(U), Q, Kq
+
 
 class BeltDrive(PulleyDrive):
     """The assembled model of a :class:`BeltSpec`."""
+
+    contact_state = staticmethod(contact_state)
+    contact_forces = staticmethod(contact_forces)
 
     def __init__(self, spec: BeltSpec):
         self.spec = s = spec
@@ -124,26 +146,15 @@ class BeltDrive(PulleyDrive):
         """(nel, 6, 2) element coordinates from global belt coordinates q."""
         return np.ascontiguousarray(np.asarray(q)[self.dofmap].reshape(-1, 6, 2))
 
+    def pulleys_at_rest(self) -> tuple:
+        """The pulley arguments of the contact kernels, pulleys at rest: centres (2, 2) m,
+        radii (2,) m, omegas (2,) rad/s."""
+        return self.centres, self.radii, np.zeros(2)
+
     def fixed_dofs(self) -> list:
         """Node 0's coordinate along the path tangent (the larger component): the rigid
         sliding round frictionless pulleys (:mod:`ancf.belts.pretension`)."""
         return [self.mesh.dof(0, "r", int(np.argmax(np.abs(self.q0[2:4]))))]
-
-    def penalty(self, E, want_J: bool):
-        """Frictionless, undamped contact at rest: (energy sum w k_p d^2/2 J, Q (nel, 12) N,
-        dQ/de (nel, 12, 12) N/m or None)."""
-        nel = E.shape[0]
-        V, om = np.zeros_like(E), np.zeros(2)
-        prm = np.array([self.spec.k_p, 0.0, 0.0, 0.0])
-        _, d, _, _, _ = contact_state(E, V, self.S0, self.centres, self.radii, om, prm)
-        U = 0.5 * self.spec.k_p * np.einsum("eg,egp->", self.w, np.maximum(d, 0.0) ** 2)
-        if not want_J:
-            return float(U), None, None
-        Q, Kq = np.zeros((nel, 12)), np.zeros((nel, 12, 12))
-        contact_forces(E, V, self.S0, self.w, self.centres, self.radii, om, prm, True, Q, Kq,
-                       np.zeros_like(Kq), np.zeros((nel, 2, 12)), np.zeros(2),
-                       np.zeros((2, nel, 12)), np.zeros((2, nel, 12)), np.zeros(2))
-        return float(U), Q, Kq
 
     def kernel(self) -> Drive2D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""

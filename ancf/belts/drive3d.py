@@ -83,6 +83,9 @@ def laid_plate_belt(path: TwoPulleyPath, L0: float, n: int, width: float) -> np.
 class Belt3DDrive(PulleyDrive):
     """The assembled model of a :class:`Belt3DSpec`."""
 
+    contact_state = staticmethod(contact_state3d)
+    contact_forces = staticmethod(contact_forces3d)
+
     def __init__(self, spec: Belt3DSpec):
         self.spec = s = spec
         n = s.n_elements
@@ -133,22 +136,10 @@ class Belt3DDrive(PulleyDrive):
         along = int(np.argmax(np.abs(self.q0[3:5])))
         return [along, 2]
 
-    def penalty(self, E, want_J: bool):
-        """Frictionless, undamped contact at rest: (energy sum w k_p d^2/2 J, Q (nel, 36) N,
-        dQ/de (nel, 36, 36) N/m or None)."""
-        nel = E.shape[0]
-        V, om, cv = np.zeros_like(E), np.zeros(2), np.zeros((2, 3))
-        prm = np.array([self.spec.k_p, 0.0, 0.0, 0.0])
-        _, d, _, _, _, _ = contact_state3d(E, V, self.S0, self.centres, self.axes, self.radii, om,
-                                           cv, prm)
-        U = 0.5 * self.spec.k_p * np.einsum("eg,egp->", self.w, np.maximum(d, 0.0) ** 2)
-        if not want_J:
-            return float(U), None, None
-        Q, Kq = np.zeros((nel, 36)), np.zeros((nel, 36, 36))
-        contact_forces3d(E, V, self.S0, self.w, self.centres, self.axes, self.radii, om, cv, prm,
-                         True, Q, Kq, np.zeros_like(Kq), np.zeros((nel, 2, 36)), np.zeros(2),
-                         np.zeros((2, nel, 36)), np.zeros((2, nel, 36)), np.zeros(2))
-        return float(U), Q, Kq
+    def pulleys_at_rest(self) -> tuple:
+        """The pulley arguments of the contact kernels, pulleys at rest: centres (2, 3) m,
+        axes (2, 3), radii (2,) m, omegas (2,) rad/s, centre velocities (2, 3) m/s."""
+        return self.centres, self.axes, self.radii, np.zeros(2), np.zeros((2, 3))
 
     def kernel(self) -> Drive3D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""

@@ -71,9 +71,8 @@ from numba import njit
 
 from ancf.elements import _belt3d_generated as gen
 from ancf.elements import _generated as shape_gen
-from ancf.elements.basis import consistent_mass
 from ancf.elements.compiled_element import BeltElement, add_point_tangent
-from ancf.core.quadrature import RectangularSection, gauss01
+from ancf.core.quadrature import RectangularSection
 
 _NV = 25    # point variables of the density
 _NODE = 4   # shape functions per node: r, r_x, r_y, r_z
@@ -380,44 +379,15 @@ class DufvaBelt3D(BeltElement):
     slots = ("r", "r_x", "r_y", "r_z")
     schemes: dict = {}  # one rule: nx Gauss points along x, the section in closed form
     dim = 3
+    shape_xx = staticmethod(shape_gen.cubic3d_xx)
     kernel_energy = staticmethod(energy)
     kernel_gradient_tangent = staticmethod(gradient_tangent)
 
     def __init__(self, lengths, e0, section: RectangularSection, E, nu, rho=0.0,
                  alpha1=1.0, alpha2=1.0, ks=5.0 / 6.0, nx=5):
         G = self._setup(lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx)
+        # k of kernel_data(): E alpha1, E alpha2, ks G alpha2, E, G (Pa) and the section
+        # moments of section_coefficients
         self.coefficients = np.concatenate([[E * alpha1, E * alpha2, ks * G * alpha2, E, G],
                                             section_coefficients(section)])
         self._data = self._kernel_data()
-
-    def _kernel_data(self):
-        xi, wx = gauss01(self.nx)
-        l = self.lengths[:, None]
-        X, zero = xi[None, :] * l, np.zeros((1, xi.size))
-        BX = np.ascontiguousarray(self.shapes["x"](X, zero, zero, l))
-        BXX = np.ascontiguousarray(shape_gen.cubic3d_xx(X, zero, zero, l))
-        return (BX, BXX, xi, np.ascontiguousarray(wx[None, :] * l), self.lengths.copy(),
-                self.coefficients)
-
-    def kernel_data(self) -> tuple:
-        """The float64 arrays of :func:`energy` and :func:`gradient_tangent`:
-        (BX, BXX (nel, nx, 8) shape derivatives along the centre line (1/m, 1/m^2),
-        xi (nx,) Gauss points in [0, 1], wq (nel, nx) weights (m), lengths (nel,) m,
-        k (11,): E alpha1, E alpha2, ks G alpha2, E, G (Pa) and the section moments
-        of :func:`section_coefficients`)."""
-        return self._data
-
-    def mass(self) -> np.ndarray:
-        """Exact consistent mass matrices (nel, 24, 24), Eq. 2.26, kg."""
-        return consistent_mass(self.shapes, self.section, self.lengths, self.rho, self.dim)
-
-    def axial_force(self, e, xi) -> np.ndarray:
-        """Normal force N = E A alpha1 eps_l (Eq. 3.17), N, at local coordinates ``xi``
-        in [0, 1] of every element: (nel, len(xi))."""
-        xi = np.atleast_1d(np.asarray(xi, dtype=float))
-        l = self.lengths[:, None]
-        zero = np.zeros((1, xi.size))
-        B = self.shapes["x"](xi[None, :] * l, zero, zero, l)  # (nel, nxi, 8)
-        a = np.einsum("eqk,ekd->eqd", B, self._coords(e))
-        eps_l = 0.5 * (np.einsum("eqd,eqd->eq", a, a) - 1.0)
-        return self.E_mod * self.section.area * self.alpha1 * eps_l

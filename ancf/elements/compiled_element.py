@@ -8,7 +8,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ancf.elements.basis import family_shapes
+from ancf.core.quadrature import gauss01
+from ancf.elements.basis import consistent_mass, family_shapes
 
 _NO_TANGENT = np.zeros((0, 0, 0))
 
@@ -67,7 +68,9 @@ class CompiledElement:
 
 
 class BeltElement(CompiledElement):
-    """Dufva's belt elements (2D and 3D): the arguments they share, checked and stored."""
+    """Dufva's belt elements (2D and 3D): the arguments they share, checked and stored, and
+    what is computed from them alike.  Subclasses set ``family``, ``dim``, ``shape_xx``
+    (the family's generated second x-derivative) and ``coefficients``."""
 
     def _setup(self, lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx) -> float:
         """Check and store the common arguments; returns the shear modulus G (Pa)."""
@@ -85,3 +88,36 @@ class BeltElement(CompiledElement):
         self.section, self.rho, self.nx = section, float(rho), int(nx)
         self.E_mod, self.alpha1 = float(E), float(alpha1)
         return E / (2.0 * (1.0 + nu))
+
+    def _on_axis(self, fn, xi) -> np.ndarray:
+        """The generated evaluator ``fn`` (of X, Y[, Z], L) on the centre line of every
+        element, at local coordinates xi (nxi,) in [0, 1]: (nel, nxi, nshape)."""
+        l = self.lengths[:, None]
+        zero = np.zeros((1, xi.size))
+        return fn(xi[None, :] * l, *(zero,) * (self.dim - 1), l)
+
+    def _kernel_data(self):
+        xi, wx = gauss01(self.nx)
+        return (np.ascontiguousarray(self._on_axis(self.shapes["x"], xi)),
+                np.ascontiguousarray(self._on_axis(self.shape_xx, xi)), xi,
+                np.ascontiguousarray(wx[None, :] * self.lengths[:, None]), self.lengths.copy(),
+                self.coefficients)
+
+    def kernel_data(self) -> tuple:
+        """The float64 arrays of the element's kernels: (BX, BXX (nel, nx, nshape) shape
+        derivatives along the centre line (1/m, 1/m^2), xi (nx,) Gauss points in [0, 1],
+        wq (nel, nx) weights (m), lengths (nel,) m, k the density coefficients
+        (``coefficients``))."""
+        return self._data
+
+    def mass(self) -> np.ndarray:
+        """Exact consistent mass matrices (nel, ndof, ndof), Eq. 2.26, kg."""
+        return consistent_mass(self.shapes, self.section, self.lengths, self.rho, self.dim)
+
+    def axial_force(self, e, xi) -> np.ndarray:
+        """Normal force N = E A alpha1 eps_l (Eq. 3.17), N, at local coordinates ``xi``
+        in [0, 1] of every element: (nel, len(xi))."""
+        B = self._on_axis(self.shapes["x"], np.atleast_1d(np.asarray(xi, dtype=float)))
+        a = np.einsum("eqk,ekd->eqd", B, self._coords(e))
+        eps_l = 0.5 * (np.einsum("eqd,eqd->eq", a, a) - 1.0)
+        return self.E_mod * self.section.area * self.alpha1 * eps_l

@@ -37,9 +37,8 @@ from numba import njit
 
 from ancf.elements import _dufva_generated as gen
 from ancf.elements import _generated as shape_gen
-from ancf.elements.basis import consistent_mass
 from ancf.elements.compiled_element import BeltElement, add_point_tangent
-from ancf.core.quadrature import RectangularSection, gauss01
+from ancf.core.quadrature import RectangularSection
 
 _NODE = 6  # coordinates per node: r, r_x, r_y
 
@@ -179,6 +178,7 @@ class DufvaBelt2D(BeltElement):
     slots = ("r", "r_x", "r_y")
     schemes: dict = {}  # one rule: nx Gauss points along x, the section in closed form
     dim = 2
+    shape_xx = staticmethod(shape_gen.cubic2d_xx)
     kernel_energy = staticmethod(energy)
     kernel_gradient_tangent = staticmethod(gradient_tangent)
 
@@ -187,36 +187,7 @@ class DufvaBelt2D(BeltElement):
         G = self._setup(lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx)
         A = section.area
         I2, I4 = section.second_moment, section.b * section.h**5 / 80.0
+        # k of kernel_data(): density coefficients (N, N m^2, N m^4, N, N m^2, N)
         self.coefficients = np.array([E * alpha1 * A / 8, E * alpha2 * I2 / 2, E * alpha2 * I4 / 8,
                                       ks * G * alpha2 * A / 2, ks * G * alpha2 * I2 / 2, E * A / 2])
         self._data = self._kernel_data()
-
-    def _kernel_data(self):
-        xi, wx = gauss01(self.nx)
-        l = self.lengths[:, None]
-        X, zero = xi[None, :] * l, np.zeros((1, xi.size))
-        BX = np.ascontiguousarray(self.shapes["x"](X, zero, l))
-        BXX = np.ascontiguousarray(shape_gen.cubic2d_xx(X, zero, l))
-        return (BX, BXX, xi, np.ascontiguousarray(wx[None, :] * l), self.lengths.copy(),
-                self.coefficients)
-
-    def kernel_data(self) -> tuple:
-        """The float64 arrays of :func:`energy` and :func:`gradient_tangent`:
-        (BX, BXX (nel, nx, 6) shape derivatives along the centre line (1/m, 1/m^2),
-        xi (nx,) Gauss points in [0, 1], wq (nel, nx) weights (m), lengths (nel,) m,
-        k (6,) density coefficients (N, N m^2, N m^4, N, N m^2, N))."""
-        return self._data
-
-    def mass(self) -> np.ndarray:
-        """Exact consistent mass matrices (nel, 12, 12), Eq. 2.26, kg."""
-        return consistent_mass(self.shapes, self.section, self.lengths, self.rho, self.dim)
-
-    def axial_force(self, e, xi) -> np.ndarray:
-        """Normal force N = E A alpha1 eps_l (Eq. 3.17), N, at local coordinates ``xi``
-        in [0, 1] of every element: (nel, len(xi))."""
-        xi = np.atleast_1d(np.asarray(xi, dtype=float))
-        l = self.lengths[:, None]
-        B = self.shapes["x"](xi[None, :] * l, np.zeros((1, xi.size)), l)  # (nel, nxi, 6)
-        a = np.einsum("eqk,ekd->eqd", B, self._coords(e))
-        eps_l = 0.5 * (np.einsum("eqd,eqd->eq", a, a) - 1.0)
-        return self.E_mod * self.section.area * self.alpha1 * eps_l

@@ -22,12 +22,10 @@ import numpy as np
 
 from ancf.belts.drive2d import BeltDrive, BeltSpec
 from ancf.belts.post2d import sample, span_midpoint, span_tension, spans
-from ancf.common.inputs import MAX_STEPS, intervals
+from ancf.common.inputs import MAX_STEPS
 from ancf.scenes import belt_common as bc
 from ancf.common.params import Param
 from ancf.scenes.base import Scene, SceneResult
-from ancf.belts.dynamics import BeltOptions, simulate
-from ancf.belts.pretension import settle
 from ancf.belts.bdf import simulate_bdf
 
 INTEGRATORS = ("generalized-alpha", "bdf")
@@ -70,11 +68,6 @@ def spec(p: dict) -> BeltSpec:
                     p["omega_final"], p["Ta_max"])
 
 
-def times(p: dict) -> np.ndarray:
-    n = intervals(p["t_end"], p["output_dt"])
-    return np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
-
-
 def _steady_ratio(t, wd, wn, t_end) -> float | None:
     sel = (t >= t_end - STEADY_WINDOW) & (wd > 0)
     return float(np.mean(wn[sel]) / np.mean(wd[sel])) if sel.any() else None
@@ -110,37 +103,34 @@ def _midpoints(drive, res, p) -> dict:
     return {"mid_tight_y_m": mids["tight"], "mid_slack_y_m": mids["slack"]}
 
 
-def run(p: dict) -> SceneResult:
-    drive = BeltDrive(spec(p))
-    opt = BeltOptions(dt=p["dt"], rho_inf=p["rho_inf"], newton_tol=p["newton_tol"],
-                      max_steps=p["max_steps"])
-    x0, pre_iterations = None, 0
-    if p["start"] == "settled":
-        x0, pre = settle(drive)
-        pre_iterations = pre.iterations
-        if not pre.converged:
-            x0 = None
-    if p["integrator"] == "bdf":
+def _march(p: dict):
+    """march(drive, x0) of the chosen integrator (x0 None: the laid belt)."""
+    alpha = bc.alpha_march(p, "belt2d", PROGRESS_STEPS)
+
+    def march(drive, x0):
+        if p["integrator"] != "bdf":
+            return alpha(drive, x0)
         x0 = drive.state(drive.q0) if x0 is None else x0
-        res = simulate_bdf(drive, times(p), p["rtol"], p["atol"], x0, p["max_steps"])
-    else:
-        res = simulate(drive, times(p), opt, x0=x0, progress=bc.progress("belt2d", p, PROGRESS_STEPS))
-    if p["start"] == "settled" and not pre.converged:
-        res.converged, res.message = False, f"pre-tension: {pre.message}"
-    wd = np.asarray(drive.omega_driver(res.t), dtype=float)
-    wn = res.v[:, -1]
-    ok = res.converged
-    results = {"times": [float(t) for t in res.t], "omega_driver": [float(w) for w in wd],
-               "omega_driven": [float(w) for w in wn],
-               "omega_ratio_steady": _steady_ratio(res.t, wd, wn, p["t_end"]) if ok else None}
-    results.update(_midpoints(drive, res, p))
-    results.update(_at_end(drive, res, p) if ok else
+        return simulate_bdf(drive, bc.times(p), p["rtol"], p["atol"], x0, p["max_steps"])
+    return march
+
+
+def _results(p: dict):
+    """results_of(drive, res, wd, wn) of :func:`ancf.scenes.belt_common.run`."""
+    def results_of(drive, res, wd, wn) -> dict:
+        ok = res.converged
+        out = {"omega_ratio_steady": _steady_ratio(res.t, wd, wn, p["t_end"]) if ok else None}
+        out.update(_midpoints(drive, res, p))
+        out.update(_at_end(drive, res, p) if ok else
                    dict.fromkeys(("tension_tight_N", "tension_slack_N", "tension_tight_mean_N",
                                   "tension_slack_mean_N", "penetration_max_m", "contact_dofs",
                                   "total_dofs")))
-    results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
-                   contact_pairs=res.extra["contact_pairs"], pretension_iterations=pre_iterations)
-    return SceneResult(ok, res.message, results, extra={"result": res, "drive": drive})
+        return out
+    return results_of
+
+
+def run(p: dict) -> SceneResult:
+    return bc.run(BeltDrive(spec(p)), p, _march(p), _results(p), keep_unsettled=False)
 
 
 def prestretch(spec) -> float:

@@ -35,12 +35,11 @@ from ancf.belts.drive3d import Belt3DDrive, Belt3DSpec
 from ancf.belts.post3d import MEASURES, end_state
 from ancf.belts.path import TwoPulleyPath
 from ancf.belts.contact3d import SUPPORTED_RULES
-from ancf.common.inputs import MAX_STEPS, following, intervals
-from ancf.scenes.belt_common import check_belt_length, check_steps, march_params, progress
+from ancf.common.inputs import MAX_STEPS, following
+from ancf.scenes import belt_common as bc
+from ancf.scenes.belt_common import check_belt_length, check_steps, march_params
 from ancf.common.params import InputError, Param
 from ancf.scenes.base import Scene, SceneResult
-from ancf.belts.dynamics import BeltOptions, simulate
-from ancf.belts.pretension import settle
 
 #: Table 4.1 (n_elements, E, u0, T_i, bending: section 4.6's text)
 MODELS = {
@@ -160,11 +159,6 @@ def spec(p: dict) -> Belt3DSpec:
                       p["Ta_max"], TA_T1, p["u0"])
 
 
-def times(p: dict) -> np.ndarray:
-    n = intervals(p["t_end"], p["output_dt"])
-    return np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
-
-
 def _slip(t, wd, wn, window) -> float | None:
     sel = (t >= t[-1] - window - 1e-12) & (wd > 0)
     return float(1.0 - np.mean(wn[sel]) / np.mean(wd[sel])) if sel.any() else None
@@ -174,32 +168,22 @@ END_KEYS = ("T_tight_N", "T_slack_N", "v_tight", "v_slack", "tensions", "torque_
             "torques_from_tensions_Nm", "torque_from_friction_Nm", "penetration_max_m")
 
 
+def _results(p: dict):
+    """results_of(drive, res, wd, wn) of :func:`ancf.scenes.belt_common.run`."""
+    def results_of(drive, res, wd, wn) -> dict:
+        if not res.converged:
+            return {"slip_driven": None, **dict.fromkeys(END_KEYS)}
+        return {"slip_driven": _slip(res.t, wd, wn, p["steady_window"]),
+                **end_state(drive, res.q[-1], res.v[-1], float(res.t[-1]), p["strain_measure"])}
+    return results_of
+
+
 def run(p: dict) -> SceneResult:
     drive = Belt3DDrive(spec(p))
-    opt = BeltOptions(dt=p["dt"], rho_inf=p["rho_inf"], newton_tol=p["newton_tol"],
-                      max_steps=p["max_steps"])
-    x0, pre_iterations, pre = None, 0, None
-    if p["start"] == "settled":
-        x0, pre = settle(drive)
-        pre_iterations = pre.iterations
-    res = simulate(drive, times(p), opt, x0=x0, progress=progress("belt3d", p, PROGRESS_STEPS))
-    if pre is not None and not pre.converged:
-        res.converged, res.message = False, f"pre-tension: {pre.message}"
-    wd = np.asarray(drive.omega_driver(res.t), dtype=float)
-    wn = res.v[:, -1]
-    ok = res.converged
-    results = {"times": [float(t) for t in res.t], "omega_driver": [float(w) for w in wd],
-               "omega_driven": [float(w) for w in wn],
-               "slip_driven": _slip(res.t, wd, wn, p["steady_window"]) if ok else None}
-    if ok:
-        results.update(end_state(drive, res.q[-1], res.v[-1], float(res.t[-1]),
-                                 p["strain_measure"]))
-    else:
-        results.update(dict.fromkeys(END_KEYS))
-    results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
-                   contact_pairs=res.extra["contact_pairs"], pretension_iterations=pre_iterations,
-                   belt_length_m=drive.spec.belt_length, total_dofs=drive.n + 1)
-    return SceneResult(ok, res.message, results, extra={"result": res, "drive": drive})
+    out = bc.run(drive, p, bc.alpha_march(p, "belt3d", PROGRESS_STEPS), _results(p),
+                 keep_unsettled=True)
+    out.results.update(belt_length_m=drive.spec.belt_length, total_dofs=drive.n + 1)
+    return out
 
 
 SCENE = Scene(

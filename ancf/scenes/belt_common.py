@@ -1,14 +1,20 @@
-"""Shared pieces of the belt scenes (thesis chapter 3): the belt's parameters with
-Table 3.1 as defaults, their cross-field checks and the model builder.
+"""Shared pieces of the belt scenes (thesis chapters 3 and 4): the belt's parameters with
+Table 3.1 as defaults, their cross-field checks, the output times and the run of a
+drive (pre-tension, march, pulley speeds, statistics).
 """
 from __future__ import annotations
 
 import sys
 
-from ancf.belts.path import TwoPulleyPath
+import numpy as np
+
 from ancf.belts.contact2d import SUPPORTED_POINTS
-from ancf.common.inputs import MAX_STEPS, check_sampling, following
+from ancf.belts.dynamics import BeltOptions, simulate
+from ancf.belts.path import TwoPulleyPath
+from ancf.belts.pretension import settle
+from ancf.common.inputs import MAX_STEPS, check_sampling, following, intervals
 from ancf.common.params import InputError, Param
+from ancf.scenes.base import SceneResult
 
 #: Table 3.1
 R1, R2, X_CENTRE = 0.08125, 0.08125, 0.191441
@@ -121,3 +127,44 @@ def march_params(dt: float, dt_doc: str, t_end: float) -> tuple:
         Param("output_dt", following(0.005, "t_end"), float, "s", "sampling interval "
               "(default 0.005 s, at most t_end)", lo=0, lo_open=True, hi=10),
     )
+
+
+def times(p: dict) -> np.ndarray:
+    """Output times 0, output_dt, ... up to t_end (the last one t_end), s."""
+    n = intervals(p["t_end"], p["output_dt"])
+    return np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
+
+
+def alpha_march(p: dict, scene: str, min_steps: int):
+    """march(drive, x0): the generalised-alpha march of ``p``'s parameters from x0 (None:
+    the laid belt), with progress lines for runs of at least ``min_steps`` steps."""
+    opt = BeltOptions(dt=p["dt"], rho_inf=p["rho_inf"], newton_tol=p["newton_tol"],
+                      max_steps=p["max_steps"])
+    return lambda drive, x0: simulate(drive, times(p), opt, x0=x0,
+                                      progress=progress(scene, p, min_steps))
+
+
+def run(drive, p: dict, march, results_of, keep_unsettled: bool) -> SceneResult:
+    """A drive's run: the static pre-tension if ``p["start"]`` is 'settled', then
+    ``march(drive, x0)``; the results are the times, both pulley speeds (rad/s), the
+    scene's own ``results_of(drive, res, wd, wn)`` (dict) and the run statistics.  A
+    pre-tension that does not converge fails the run; the march starts from its last
+    state if ``keep_unsettled``, else from the laid belt."""
+    x0, pre = None, None
+    if p["start"] == "settled":
+        x0, pre = settle(drive)
+        if not (pre.converged or keep_unsettled):
+            x0 = None
+    res = march(drive, x0)
+    if pre is not None and not pre.converged:
+        res.converged, res.message = False, f"pre-tension: {pre.message}"
+    wd = np.asarray(drive.omega_driver(res.t), dtype=float)
+    wn = res.v[:, -1]
+    results = {"times": [float(t) for t in res.t], "omega_driver": [float(w) for w in wd],
+               "omega_driven": [float(w) for w in wn]}
+    results.update(results_of(drive, res, wd, wn))
+    results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
+                   contact_pairs=res.extra["contact_pairs"],
+                   pretension_iterations=0 if pre is None else pre.iterations)
+    return SceneResult(res.converged, res.message, results,
+                       extra={"result": res, "drive": drive})
