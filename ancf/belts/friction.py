@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit
+from numba.extending import overload
 
 #: branch codes of the creep-rate law (those of :func:`ancf.belts.contact3d.contact_state3d`)
 LINEAR, SATURATED = 2, 3
@@ -68,12 +69,25 @@ def creep_rate_chain(branch, v, s, Fn, prm, G, gF, D):
                 D[i, c] = -nu * G[i, c]
         return
     g = mu * Fn / s
+    u = direction(v, s)
     for c in range(m):
         ug = 0.0
         for j in range(n):
-            ug += v[j] / s * G[j, c]
+            ug += u[j] * G[j, c]
         for i in range(n):
-            D[i, c] = -mu * (v[i] / s) * gF[c] - g * (G[i, c] - v[i] / s * ug)
+            D[i, c] = -mu * u[i] * gF[c] - g * (G[i, c] - u[i] * ug)
+
+
+def direction(v, s):
+    """v / s as a tuple of v's length (compiled callers only)."""
+    raise NotImplementedError("resolved at compile time by the length of v")
+
+
+@overload(direction, inline="always")
+def _direction(v, s):
+    return {1: lambda v, s: (v[0] / s,),
+            2: lambda v, s: (v[0] / s, v[1] / s),
+            3: lambda v, s: (v[0] / s, v[1] / s, v[2] / s)}.get(v.count)
 
 
 #: name -> (force, chain)
