@@ -12,7 +12,7 @@ drifts).  One BLAS thread, OPENBLAS_CORETYPE / OPENBLAS_L2_SIZE unset, as in
 :mod:`benchmarks.peers`.  CPU time is each scene's ``cpu_time_s`` (the solve in a warm
 process) and Exudyn's solve call.
 
-Writes ``trees.md`` and ``trees.json`` (keys: ``started``, ``machine``, ``trees``
+Writes ``trees.md`` and ``trees.json`` (``--name`` another stem; keys: ``started``, ``machine``, ``trees``
 (path and commit of each side), ``repeats``, ``cases``: rows ``{case, n, before,
 after, exudyn, after_over_before, after_over_before_paired, before_over_exudyn,
 after_over_exudyn}``, each side ``{cpu_s, cpu_s_samples, converged}``).
@@ -113,6 +113,7 @@ def main(argv=None) -> int:
     ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--case", action="append", help="only these cases (worker case names)")
     ap.add_argument("--out", type=Path, default=ROOT / "reports" / "benchmarks")
+    ap.add_argument("--name", default="trees", help="file stem of the outputs (default trees)")
     args = ap.parse_args(argv)
     env = peers.worker_env()
     trees = {"before": args.before.resolve(), "after": args.after.resolve()}
@@ -129,9 +130,9 @@ def main(argv=None) -> int:
     for w in [*workers.values(), *([exudyn] if exudyn else [])]:
         w.close()
     args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / "trees.json").write_text(json.dumps(out, indent=1) + "\n")
-    (args.out / "trees.md").write_text(markdown(out))
-    print(args.out / "trees.md")
+    (args.out / f"{args.name}.json").write_text(json.dumps(out, indent=1) + "\n")
+    (args.out / f"{args.name}.md").write_text(markdown(out))
+    print(args.out / f"{args.name}.md")
     return 0
 
 
