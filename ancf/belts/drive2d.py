@@ -24,7 +24,7 @@ from ancf.belts.forces import Drive2D
 from ancf.elements.dufva2d import DufvaBelt2D
 from ancf.core.mesh import BeamMesh
 from ancf.core.pattern import ReducedPattern, scatter
-from ancf.belts.pulleys import driver_omega, opposing_torque
+from ancf.belts.pulleys import SPEED_LAWS, T0, T1, TORQUE_LAWS, law
 from ancf.core.quadrature import RectangularSection
 
 SLOTS = ("r", "r_x", "r_y")
@@ -60,6 +60,8 @@ class BeltSpec(DriveSpec):
     inertia: float              # driven pulley moment of inertia, kg m^2
     omega_final: float          # driver's final angular velocity, rad/s (Eq. 3.29)
     Ta_max: float               # final opposing torque, N m (Eq. 3.30)
+    driver_law: str = "ramp"    # the driver's speed law (ancf.belts.pulleys.SPEED_LAWS)
+    torque_law: str = "cosine-ramp"  # the load torque law (TORQUE_LAWS)
 
 
 class PulleyDrive:
@@ -122,12 +124,14 @@ class BeltDrive(PulleyDrive):
         self.centres = np.array([s.path.O1, s.path.O2], dtype=float)
         self.radii = np.array([s.path.R1, s.path.R2])
         self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
+        self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
+        self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
 
     def omega_driver(self, t):
-        return driver_omega(t, self.spec.omega_final)
+        return self.speed_law(t, self.spec.omega_final, T0, T1)
 
     def torque(self, t):
-        return opposing_torque(t, self.spec.Ta_max)
+        return self.torque_law(t, self.spec.Ta_max, T0, T1)
 
     def laws(self, t) -> np.ndarray:
         """Pulley laws (2, len(t)) of the march: driver omega (rad/s), T_a (N m)."""

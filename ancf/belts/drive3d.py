@@ -33,7 +33,7 @@ from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_sta
 from ancf.belts.forces import Drive3D
 from ancf.elements.plate36 import Plate36
 from ancf.core.pattern import ReducedPattern, scatter
-from ancf.belts.pulleys import driver_omega, driver_shift, opposing_torque
+from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS, driver_shift, law
 
 PER_NODE = 9  # r, r_x, r_y, 3 components each
 SHIFT = np.array([-1.0, 0.0, 0.0])  # direction the driver is moved in (Eq. 4.46)
@@ -60,6 +60,8 @@ class Belt3DSpec(DriveSpec):
     Ta_t1: float                # end of the torque ramp, s (Eq. 4.47: 1.0)
     u0: float                   # driver displacement, m (Eq. 4.46; 0: none)
     ng: int = 4                 # Gauss points per direction of the elastic forces
+    driver_law: str = "ramp"    # the driver's speed law (ancf.belts.pulleys.SPEED_LAWS)
+    torque_law: str = "cosine-ramp"  # the load torque law (TORQUE_LAWS)
 
 
 def ring_dofmap(n: int) -> np.ndarray:
@@ -106,12 +108,14 @@ class Belt3DDrive(PulleyDrive):
         self.axes = np.array([AXIS, AXIS])
         self.radii = np.array([s.path.R1, s.path.R2])
         self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
+        self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
+        self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
 
     def omega_driver(self, t):
-        return driver_omega(t, self.spec.omega_final, self.spec.t0, self.spec.t1)
+        return self.speed_law(t, self.spec.omega_final, self.spec.t0, self.spec.t1)
 
     def torque(self, t):
-        return opposing_torque(t, self.spec.Ta_max, self.spec.t0, self.spec.Ta_t1)
+        return self.torque_law(t, self.spec.Ta_max, self.spec.t0, self.spec.Ta_t1)
 
     def laws(self, t) -> np.ndarray:
         """Pulley laws (4, len(t)): driver omega (rad/s), T_a (N m), driver shift u (m)

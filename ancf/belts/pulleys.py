@@ -15,6 +15,12 @@ Eq. 4.47 prints T_a = 1 - cos(pi t / 1.0) for 0.05 < t <= 1.0 and 2 for 0.6 < t;
 branches overlap on (0.6, 1.0].  We take the middle branch up to 1.0 s (first match
 as printed): it is Eq. 3.30 with t1 = 1.0 s and T_max = 2 N m, continuous at 1.0 s,
 whereas the 0.6 of the last branch would jump from 1.69 to 2 N m (it is Model 1's t1).
+
+A drive names its driver's speed law and its load torque law (``driver_law``,
+``torque_law`` of its spec); :data:`SPEED_LAWS` and :data:`TORQUE_LAWS` map the names
+to functions ``law(t, final, t0, t1)`` of the time (s, an array) that are 0 up to
+``t0`` and ``final`` from ``t1`` on.  A new law is one function and one row here;
+tests/test_pulley_laws.py holds every row to that contract.
 """
 from __future__ import annotations
 
@@ -34,6 +40,20 @@ def opposing_torque(t, Ta_max: float, t0: float = T0, t1: float = T1) -> np.ndar
     t = np.asarray(t, dtype=float)
     ramp = 0.5 * Ta_max * (1.0 - np.cos(np.pi * t / t1))
     return np.where(t <= t0, 0.0, np.where(t <= t1, ramp, Ta_max))
+
+
+#: driver speed laws, name -> omega(t, omega_final, t0, t1), rad/s
+SPEED_LAWS = {"ramp": driver_omega}
+#: load torque laws, name -> T_a(t, Ta_max, t0, t1), N m
+TORQUE_LAWS = {"cosine-ramp": opposing_torque}
+
+
+def law(table: dict, name: str, field: str):
+    """The law called ``name`` in ``table``; ValueError naming the spec ``field`` and the
+    allowed names otherwise."""
+    if name not in table:
+        raise ValueError(f"{field} = {name!r} is not a law; allowed: {', '.join(table)}")
+    return table[name]
 
 
 def driver_shift(t, u0: float, t0: float = T0) -> tuple:

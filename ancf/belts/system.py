@@ -113,5 +113,5 @@ def _solve(system, d):
 
 @implements(system_tests, BeltSystem)
 def _tests(system):
-    """The belt coordinates, scaled at the step's start, damped Newton."""
-    return system.Mb.shape[0], True, True
+    """The belt coordinates, scaled at the step's start, damped Newton, velocities read."""
+    return system.Mb.shape[0], True, True, True

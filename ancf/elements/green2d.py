@@ -146,22 +146,22 @@ def band_group(pattern, group) -> GreenBand:
 def assemble_band(group, z, gq, want_K, grad, K):
     """grad = T^T dU/dq at q = T z + gq (N) and, if want_K, K = T^T (d2U/dq2) T (N/m,
     band storage)."""
+    qsel, zsel, dofmap, E0, BX, BY, dX0, dY0, w, C, cidx, vidx, midx = group
     q = gq.copy()
-    for i in range(group.qsel.size):
-        q[group.qsel[i]] += z[group.zsel[i]]
-    nel, nd = group.dofmap.shape
+    for i in range(qsel.size):
+        q[qsel[i]] += z[zsel[i]]
+    nel, nd = dofmap.shape
     E = np.empty((nel, nd // 2, 2))
     for e in range(nel):
         for a in range(nd):
-            E[e, a // 2, a % 2] = q[group.dofmap[e, a]]
+            E[e, a // 2, a % 2] = q[dofmap[e, a]]
     ge = np.zeros((nel, nd))
     Ke = np.zeros((nel, nd, nd)) if want_K else np.zeros((0, 0, 0))
-    gradient_tangent(E, group.E0, group.BX, group.BY, group.dX0, group.dY0, group.w, group.C,
-                     group.cidx, want_K, ge, Ke)
+    gradient_tangent(E, E0, BX, BY, dX0, dY0, w, C, cidx, want_K, ge, Ke)
     grad[:] = 0.0
     if want_K:
         K[:, :] = 0.0
-    scatter(ge, Ke, group.vidx, group.midx, grad, K, want_K)
+    scatter(ge, Ke, vidx, midx, grad, K, want_K)
 
 
 class GreenPlanar:

@@ -77,8 +77,9 @@ def _solve(system, d):
 
 @implements(system_tests, ReducedSystem)
 def _tests(system):
-    """All coordinates, scaled at the last evaluation, plain Newton."""
-    return system.Mb.shape[0], False, False
+    """All coordinates, scaled at the last evaluation, plain Newton, no velocities (the
+    elimination form's forces depend on positions only)."""
+    return system.Mb.shape[0], False, False, False
 
 
 class CompiledAlpha:

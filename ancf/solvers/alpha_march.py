@@ -74,28 +74,30 @@ def system_solve(system, d):
 
 
 def system_tests(system):
-    """(m, from_start, damped): the blow-up and convergence tests look at the first m
-    coordinates; the convergence test scales by the positions at the step's start
-    (from_start) or at the last full evaluation; Newton increments are damped."""
+    """(m, from_start, damped, moving): the blow-up and convergence tests look at the
+    first m coordinates; the convergence test scales by the positions at the step's start
+    (from_start) or at the last full evaluation; Newton increments are damped; the
+    residual depends on the velocities (else they are not formed during the iteration)."""
     raise NotImplementedError("resolved at compile time by the type of system")
 
 
 @njit(cache=True)
-def kinematics(acc1, st, h, cf):
-    """(q_{n+1}, q'_{n+1}, a_{n+1}) of the recurrence for the acceleration acc1."""
+def kinematics(acc1, st, h, cf, moving=True):
+    """(q_{n+1}, q'_{n+1}, a_{n+1}) of the recurrence for the acceleration acc1 (without
+    ``moving``, q'_n stands in for q'_{n+1}: a residual that does not read it)."""
     x, v, acc, a = st
     am, af, gamma, beta = cf
     a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
     x1 = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
-    v1 = v + h * ((1 - gamma) * a + gamma * a1)
+    v1 = v + h * ((1 - gamma) * a + gamma * a1) if moving else v
     return x1, v1, a1
 
 
 @njit(cache=True)
-def _evaluate(system, acc1, st, h, k, cf, want_J, count, r):
+def _evaluate(system, acc1, st, h, k, cf, want_J, count, r, moving):
     """Residual at acc1 into r (and the iteration matrix if want_J); returns q_{n+1}."""
     am, af, gamma, beta = cf
-    x1, v1, _ = kinematics(acc1, st, h, cf)
+    x1, v1, _ = kinematics(acc1, st, h, cf, moving)
     bp = h * h * beta * (1 - af) / (1 - am)
     gp = h * gamma * (1 - af) / (1 - am)
     system_residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r)
@@ -104,11 +106,11 @@ def _evaluate(system, acc1, st, h, k, cf, want_J, count, r):
 
 
 @njit(cache=True)
-def _backtrack(system, acc1, d, st, h, k, cf, count, r, rt):
+def _backtrack(system, acc1, d, st, h, k, cf, count, r, rt, moving):
     """Length lam of the damped increment; rt = residual at the last trial."""
     rn, lam = np.sqrt(np.dot(r, r)), 1.0
     for _ in range(MAX_BACKTRACKS):
-        _evaluate(system, acc1 + lam * d, st, h, k, cf, False, count, rt)
+        _evaluate(system, acc1 + lam * d, st, h, k, cf, False, count, rt, moving)
         if np.sqrt(np.dot(rt, rt)) <= (1 - 1e-4 * lam) * rn:
             break
         lam *= 0.5
@@ -133,12 +135,12 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
     system_prepare(system, k)
     acc1 = acc.copy()
     r, rt = np.zeros(acc.size), np.zeros(acc.size)
-    m, from_start, damped = system_tests(system)
+    m, from_start, damped, moving = system_tests(system)
     refresh = fresh or hf[0] != h
     have_r, x1, d_prev = False, x, np.inf
     for _ in range(max_iter):
         if not have_r:
-            x1 = _evaluate(system, acc1, st, h, k, cf, refresh, count, r)
+            x1 = _evaluate(system, acc1, st, h, k, cf, refresh, count, r, moving)
         if refresh:
             count[1] += 1
             count[2] += 1
@@ -152,10 +154,13 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
         count[3] += 1
         lam = 1.0
         if damped:
-            lam = _backtrack(system, acc1, d, st, h, k, cf, count, r, rt)
+            lam = _backtrack(system, acc1, d, st, h, k, cf, count, r, rt, moving)
             r[:] = rt
             have_r = True
-        acc1 += lam * d
+        if lam == 1.0:
+            acc1 += d
+        else:
+            acc1 += lam * d
         dn = lam * np.max(np.abs(d[:m]))
         if not np.isfinite(dn):
             return False
@@ -169,7 +174,7 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
         if dn > REFRESH_RATIO * d_prev or lam < 1.0:
             refresh = True
             if have_r:
-                _evaluate(system, acc1, st, h, k, cf, True, count, r)
+                _evaluate(system, acc1, st, h, k, cf, True, count, r, moving)
         d_prev = dn
     return False
 

@@ -32,7 +32,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ancf.solvers.alpha_compiled import CompiledAlpha
-from ancf.solvers.alpha_march import BLOW_UP, BUDGET, DONE, NON_FINITE, march
+from ancf.solvers.alpha_march import BLOW_UP, BUDGET, DONE, NON_FINITE, kinematics, march
 from ancf.solvers.result import DynamicResult, finish
 
 
@@ -75,6 +75,7 @@ class _Stepper:
     def __init__(self, model, opt: AlphaOptions):
         self.model, self.opt = model, opt
         self.am, self.af, self.gamma, self.beta = opt.coefficients()
+        self.cf = np.array(opt.coefficients())
         con = model.constraints
         self.m = 0 if con is None else con.m
         self.nfev = self.nlu = self.iters = self.steps = self.rejected = 0
@@ -87,11 +88,9 @@ class _Stepper:
         return _State(x0, v0, acc, acc.copy(), lam)
 
     def _kinematics(self, s: _State, acc, h):
-        am, af = self.am, self.af
-        a = ((1 - af) * acc + af * s.acc - am * s.a) / (1 - am)
-        x = s.x + h * s.v + h * h * ((0.5 - self.beta) * s.a + self.beta * a)
-        v = s.v + h * ((1 - self.gamma) * s.a + self.gamma * a)
-        return x, v, a
+        """(q, q', a) at the step's end for the acceleration acc: the compiled march's
+        recurrence (:func:`ancf.solvers.alpha_march.kinematics`)."""
+        return kinematics(acc, (s.x, s.v, s.acc, s.a), h, self.cf)
 
     def step(self, s: _State, t1, h) -> _State:
         """One step of size h ending at t1; raises _Failed."""
