@@ -2,7 +2,7 @@
 ``ancf sweep SCENE --grid k=v1,v2``, ``ancf recommend SCENE --tol TOL``.
 
 ``--json`` prints one JSON object ``{scene, params, converged, message, results,
-cpu_time_s}``.  Exit codes: 0 ok, 2 bad input (one line on stderr naming the
+cpu_time_s, compile_cpu_s, warnings}``.  Exit codes: 0 ok, 2 bad input (one line on stderr naming the
 field and its allowed range), 3 no convergence (the JSON is still printed).
 """
 from __future__ import annotations

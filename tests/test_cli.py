@@ -1,7 +1,8 @@
 """The CLI contract: `ancf scenes`, `ancf run SCENE --set k=v --json`, `ancf analytic NAME`.
 
-JSON keys: scene, params, converged, message, results, cpu_time_s.  Exit codes:
-0 ok, 2 bad input (one line on stderr naming the field and its range), 3 no convergence.
+JSON keys: scene, params, converged, message, results, cpu_time_s, compile_cpu_s,
+warnings.  Exit codes: 0 ok, 2 bad input (one line on stderr naming the field and its
+range), 3 no convergence.
 """
 import json
 import subprocess
@@ -11,7 +12,8 @@ import pytest
 
 from ancf.cli import main
 
-KEYS = {"scene", "params", "converged", "message", "results", "cpu_time_s", "warnings"}
+KEYS = {"scene", "params", "converged", "message", "results", "cpu_time_s", "compile_cpu_s",
+        "warnings"}
 
 
 def _run(capsys, *argv):
