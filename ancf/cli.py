@@ -8,6 +8,7 @@ field and its allowed range), 3 no convergence (the JSON is still printed).
 from __future__ import annotations
 
 import argparse
+import gc
 import math
 import signal
 import sys
@@ -174,14 +175,18 @@ def main(argv=None) -> int:
         code = _dispatch(args)
     for w in noted:
         print(f"warning: {w}", file=sys.stderr)
+    if argv is None:  # the command line: the process ends next; its final garbage collections
+        gc.freeze()   # would walk every object numba loaded (0.1 s CPU), to free nothing
     return code
 
 
 def _dispatch(args) -> int:
     try:
-        if args.cmd == "run":  # scenes only: no sympy, pandas, dask or matplotlib
-            from ancf.scenes import SCENES
-            return _run(SCENES, "run", args)
+        if args.cmd == "run":  # this scene's modules only: no sympy, pandas, dask or matplotlib
+            from ancf.scenes import MODULES, scene
+            if args.name not in MODULES:
+                raise InputError(f"run: unknown name {args.name!r}; allowed: {', '.join(MODULES)}")
+            return _run({args.name: scene(args.name)}, "run", args)
         scenes, refs = _registries()
         if args.cmd == "scenes":
             _list(scenes, "Scenes (ancf run NAME):")
