@@ -135,8 +135,8 @@ def main(argv=None) -> int:
     ap = _Parser(prog="ancf", description="ANCF benchmark suite")
     sub = ap.add_subparsers(dest="cmd", required=True)
     sub.add_parser("scenes", help="list the scenes and their parameters")
-    for cmd, what in (("run", "scene"), ("analytic", "analytic reference")):
-        p = sub.add_parser(cmd, help=f"run a {what}")
+    for cmd, what in (("run", "a scene"), ("analytic", "an analytic reference")):
+        p = sub.add_parser(cmd, help=f"run {what}")
         p.add_argument("name")
         p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter")
         p.add_argument("--json", action="store_true", help="print one JSON object")

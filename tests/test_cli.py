@@ -95,3 +95,13 @@ def test_console_entry_point_runs_as_module():
                           capture_output=True, text=True, check=False)
     assert proc.returncode == 0, proc.stderr
     assert json.loads(proc.stdout)["results"]["elongation_m"] > 0
+
+
+def test_help_lists_every_command_in_plain_words(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--help"])
+    text = capsys.readouterr().out
+    assert exc.value.code == 0
+    for cmd in ("scenes", "run", "analytic", "sweep", "recommend"):
+        assert f"\n    {cmd} " in text
+    assert "run an analytic reference" in text and " a analytic" not in text
