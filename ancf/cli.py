@@ -43,6 +43,36 @@ def _list(registry, title):
             print(f"      {p.name:14s} default {d:>22s} {p.unit:4s} {p.allowed()}  {p.doc}")
 
 
+def _scenes() -> int:
+    """``ancf scenes``: the listing is a function of the sources alone, so it is kept beside
+    numba's cache, in the directory named by the hash of the sources (:mod:`ancf`): the
+    first listing of a source tree imports every scene and reference (a second), later
+    ones read the text.  Any source edit starts a new directory, so it is never stale."""
+    import io
+    import os
+    from contextlib import redirect_stdout
+
+    from ancf import numba_cache_dir
+    path = numba_cache_dir() / "scenes.txt"
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        scenes, refs = _registries()
+        with redirect_stdout(io.StringIO()) as buf:
+            _list(scenes, "Scenes (ancf run NAME):")
+            _list(refs, "\nAnalytic references (ancf analytic NAME):")
+        text = buf.getvalue()
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            tmp = path.with_name(f".{path.name}.{os.getpid()}")
+            tmp.write_text(text, encoding="utf-8")
+            os.replace(tmp, path)
+        except OSError:
+            pass  # a read-only cache: list without keeping
+    sys.stdout.write(text)
+    return 0
+
+
 def _run(registry, kind, args) -> int:
     if args.name not in registry:
         raise InputError(f"{kind}: unknown name {args.name!r}; allowed: {', '.join(registry)}")
@@ -187,16 +217,14 @@ def _dispatch(args) -> int:
             if args.name not in MODULES:
                 raise InputError(f"run: unknown name {args.name!r}; allowed: {', '.join(MODULES)}")
             return _run({args.name: scene(args.name)}, "run", args)
-        scenes, refs = _registries()
         if args.cmd == "scenes":
-            _list(scenes, "Scenes (ancf run NAME):")
-            _list(refs, "\nAnalytic references (ancf analytic NAME):")
-            return 0
+            return _scenes()
         if args.cmd == "sweep":
             return _sweep(args)
         if args.cmd == "recommend":
             return _recommend(args)
-        return _run(scenes if args.cmd == "run" else refs, args.cmd, args)
+        from ancf.scenes.analytic import REFERENCES  # the references alone: no kernel
+        return _run(REFERENCES, args.cmd, args)
     except InputError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

@@ -117,3 +117,21 @@ def test_numba_cache_follows_the_sources(tmp_path):
     assert ancf.numba_cache_dir(tmp_path) == first and first.parent.name == "ancf-bench"
     (tmp_path / "a.py").write_text("x = 2\n")
     assert ancf.numba_cache_dir(tmp_path) != first
+
+
+def test_scenes_listing_is_kept_for_the_sources(tmp_path):
+    """``ancf scenes`` lists from the scenes the first time in a source tree, and from the
+    text kept beside numba's cache after that: the same text, no scene or numba loaded."""
+    import os
+    code = ("import sys\nfrom ancf import cli\ncli.main(['scenes'])\n"
+            "print(sorted(m for m in sys.modules if m.startswith(('ancf.scenes', 'numba'))),"
+            " file=sys.stderr)\n")
+    env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path)}
+    runs = [subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                           cwd=ROOT, env=env, timeout=300) for _ in range(2)]
+    assert all(p.returncode == 0 for p in runs), runs[0].stderr
+    first, second = runs
+    assert first.stdout == second.stdout and "Scenes (ancf run NAME):" in first.stdout
+    assert "ancf.scenes.cantilever" in first.stderr.splitlines()[-1]
+    assert second.stderr.strip().splitlines()[-1] == "[]"
+    assert list(tmp_path.glob("ancf-bench/*/scenes.txt"))
