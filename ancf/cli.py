@@ -83,7 +83,9 @@ def _run(registry, kind, args) -> int:
         print(dumps(out))
     else:
         print(f"{out['scene']}: {'converged' if out['converged'] else 'NOT CONVERGED'} "
-              f"({out['message']}), cpu {out['cpu_time_s']:.3f} s")
+              f"({out['message']}), cpu {out['cpu_time_s']:.3f} s"
+              + (f" (+ {out['compile_cpu_s']:.3f} s compiling or loading kernels)"
+                 if out.get("compile_cpu_s") else ""))
         for k, v in out["results"].items():
             if not isinstance(v, list):
                 print(f"  {k} = {v}")
