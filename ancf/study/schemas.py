@@ -2,7 +2,7 @@
 --json``: one per scene and per analytic reference, generated from declarations.
 
 The top level is the same for all (``scene``, ``params``, ``converged``, ``message``,
-``results``, ``cpu_time_s``, ``warnings``); ``params`` follows the scene's parameter
+``results``, ``cpu_time_s``, ``compile_cpu_s``, ``warnings``); ``params`` follows the scene's parameter
 declarations (:class:`ancf.scenes.base.Param`); ``results`` follows :data:`RESULTS` below,
 the one place where a result key is declared: its JSON type, whether it is always present
 and whether it is ``null`` when the run does not converge.  Result keys not declared are
@@ -234,7 +234,11 @@ def schema(name: str) -> dict:
     command, sc = registries()[name]
     props = {"scene": {"type": STR, "const": name}, "params": _params_schema(sc),
              "converged": {"type": BOOL}, "message": {"type": STR},
-             "results": _result_schema(RESULTS[name]), "cpu_time_s": {"type": NUM},
+             "results": _result_schema(RESULTS[name]), "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
+                            "compiling or loading numba kernels"},
+             "compile_cpu_s": {"type": NUM, "description": "process CPU seconds spent compiling "
+                               "numba kernels or loading them from numba's cache during the run "
+                               "(0 when all were loaded before)"},
              "warnings": {"type": "array", "items": {"type": STR},
                           "description": "accuracy warnings, empty when none"}}
     return {"$schema": "https://json-schema.org/draft/2020-12/schema",
@@ -286,7 +290,9 @@ def schemas_markdown() -> str:
              "schema per `ancf run SCENE --json` and `ancf analytic NAME --json`; the suite "
              "validates every scene's and reference's default run against it "
              "(`tests/test_schemas.py`). Top level: `scene`, `params` (every parameter used), "
-             "`converged`, `message`, `results`, `cpu_time_s`, `warnings` (a list of strings, "
+             "`converged`, `message`, `results`, `cpu_time_s` (the run's process CPU seconds "
+             "without compiling or loading numba kernels), `compile_cpu_s` (those), "
+             "`warnings` (a list of strings, "
              "empty when none). Result keys marked nullable are `null` where the run did not "
              "converge; optional keys are absent when the solver did not get that far.\n"]
     for name, (command, _) in registries().items():
