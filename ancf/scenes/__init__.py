@@ -2,7 +2,8 @@
 (``base``: ``Scene``, ``SceneResult``); ``analytic`` exposes the references of
 ``analytic/`` the same way (``ancf analytic NAME``); ``accuracy`` the per-scene
 accuracy warnings; ``beam_static``, ``beam_dynamic`` and ``belt_common`` the builders
-the scenes share.
+the scenes share; ``frames`` the deformed geometry of a finished run per output step and
+``vtk`` its ParaView output (``--vtk``).
 
 ``SCENES`` is built on first use, so that importing ``ancf.scenes.base`` loads no
 scene, solver or element.
