@@ -42,7 +42,9 @@ def __getattr__(name):
     if name not in API:
         raise AttributeError(f"module 'ancf' has no attribute {name!r}")
     from ancf import api
-    return getattr(api, name)
+    # ``scenes``: once loaded, the package ``ancf.scenes`` is found first (it is callable
+    # and lists the scenes, as ``ancf.api.scenes`` does); return it then, for one identity
+    return globals()[name] if name in globals() else getattr(api, name)
 
 
 def __dir__():

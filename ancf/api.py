@@ -71,6 +71,7 @@ from pathlib import Path
 
 import numpy as np
 
+import ancf.scenes  # noqa: F401 - cheap (loads no scene); makes ``ancf.scenes`` the callable package
 from ancf.common.params import InputError
 from ancf.common.strict_json import dumps
 
@@ -181,9 +182,17 @@ class Result:
         """Write the run as a ParaView time series, ``directory/SCENE.pvd`` plus one
         ``.vtu`` per output step (what ``ancf run SCENE --vtk DIR`` writes); returns the
         ``.pvd`` path.  Raises InputError for a result without a mesh."""
-        from ancf.scenes.vtk import check_directory, write
+        from ancf.scenes.vtk import check_directory, write_run
         check_directory(directory)
-        return write(self.frames(per_element), directory, self.scene)
+        return write_run(self.scene, self.extra, directory, per_element)[0]
+
+
+def _as_set(value):
+    """A number as the text ``--set`` would carry (``repr``: exact for floats), so that the
+    parsed values and the messages of bad ones are the command line's; others unchanged."""
+    if isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool):
+        return repr(float(value)) if isinstance(value, (float, np.floating)) else str(int(value))
+    return value
 
 
 def _execute(command: str, name: str, overrides, params: dict, vtk=None) -> Result:
@@ -194,7 +203,7 @@ def _execute(command: str, name: str, overrides, params: dict, vtk=None) -> Resu
         from ancf.scenes.analytic import REFERENCES as registry
     if not isinstance(name, str) or name not in registry:
         raise InputError(f"{command}: unknown name {name!r}; allowed: {', '.join(registry)}")
-    sets = {**dict(overrides or {}), **params}
+    sets = {k: _as_set(v) for k, v in {**dict(overrides or {}), **params}.items()}
     sc = registry[name]
     if vtk is not None:  # bad input first, then the directory, then the run
         from ancf.scenes.vtk import check_directory
@@ -236,6 +245,8 @@ def scenes() -> list[dict]:
     """Every scene (``command`` ``"run"``) and analytic reference (``"analytic"``) with its
     one-line description and parameters: ``{name: {default, unit, allowed, doc}}``
     (``default`` is None where it depends on other parameters), as ``ancf scenes`` lists.
+    ``ancf.scenes`` is also the package of the scenes, made callable: ``ancf.scenes()`` and
+    ``ancf.api.scenes()`` are the same list.
 
     >>> import ancf
     >>> info = {s["name"]: s for s in ancf.scenes()}
@@ -246,16 +257,8 @@ def scenes() -> list[dict]:
     >>> info["cantilever"]["params"]["n_elements"]["allowed"]
     'an integer in [1, 4096]'
     """
-    from ancf.scenes import SCENES
-    from ancf.scenes.analytic import REFERENCES
-    out = []
-    for command, registry in (("run", SCENES), ("analytic", REFERENCES)):
-        for name, sc in registry.items():
-            out.append({"command": command, "name": name, "doc": sc.doc, "params": {
-                p.name: {"default": None if callable(p.default) else p.default,
-                         "depends_on_others": callable(p.default), "unit": p.unit,
-                         "allowed": p.allowed(), "doc": p.doc} for p in sc.params}})
-    return out
+    from ancf.scenes import catalogue
+    return catalogue()
 
 
 def _grid(scene: str, grid) -> list | dict | None:

@@ -61,3 +61,11 @@ def write(frames, directory, name: str) -> Path:
     pvd = path / f"{name}.pvd"
     pvd.write_text(pvd_text(entries))
     return pvd
+
+
+def write_run(scene: str, extra: dict, directory, per_element: int = 8) -> tuple[Path, int]:
+    """Write a finished run of ``scene`` (its ``SceneResult.extra``); returns (the ``.pvd``
+    path, the number of steps)."""
+    from ancf.scenes.frames import frames as frames_of
+    frames = frames_of(scene, extra, per_element)
+    return write(frames, directory, scene), len(frames)
