@@ -181,7 +181,14 @@ class Result:
     def write_vtk(self, directory, per_element: int = 8) -> Path:
         """Write the run as a ParaView time series, ``directory/SCENE.pvd`` plus one
         ``.vtu`` per output step (what ``ancf run SCENE --vtk DIR`` writes); returns the
-        ``.pvd`` path.  Raises InputError for a result without a mesh."""
+        ``.pvd`` path.  Raises InputError for a result without a mesh.
+
+        >>> import ancf, pathlib, tempfile
+        >>> with tempfile.TemporaryDirectory() as d:
+        ...     pvd = ancf.run("cantilever", n_elements=2).write_vtk(d)
+        ...     sorted(p.name for p in pathlib.Path(d).iterdir()), pvd.name
+        (['cantilever.pvd', 'cantilever_00000.vtu'], 'cantilever.pvd')
+        """
         from ancf.scenes.vtk import check_directory, write_run
         check_directory(directory)
         return write_run(self.scene, self.extra, directory, per_element)[0]

@@ -121,6 +121,12 @@ def test_belt3d_has_axial_force_speed_and_contact_pressure(tmp_path):
     f = m.point_data["axial_force_N"]
     assert f.min() > 0 and np.median(f) == pytest.approx(r.params["T_i"], rel=0.2)
     assert m.point_data["contact_pressure_N_m2"].max() > 0
+    # the API's arrays of the same run: the belt's nodes, two per station of the ring
+    assert r.reference_nodes.shape == r.nodes.shape == (2 * n, 3)
+    assert r.node_history.shape == (len(r.times), 2 * n, 3)
+    assert np.array_equal(r.node_history[-1], r.nodes)
+    at_nodes = m.points.reshape(n, PER_ELEMENT // 2, 2, 3)[:, 0].reshape(2 * n, 3)
+    assert np.allclose(at_nodes, r.nodes, rtol=0, atol=1e-12)
 
 
 @pytest.mark.parametrize("how", ["file", "under-file", "unwritable", "uncreatable"])
