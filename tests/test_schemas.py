@@ -102,6 +102,7 @@ def test_validate_refuses_swapped_arguments_and_accepts_a_name():
     with pytest.raises(KeyError, match="allowed"):
         validate(out, "run nope")
     # sub-schemas still validate parts of an output
-    res = sch["properties"]["results"]
-    assert validate({"tip_x": 1.0, "tip_y": 2.0}, res) == [] or "missing key" in validate(
-        {"tip_x": 1.0, "tip_y": 2.0}, res)[0]
+    tip = sch["properties"]["results"]["properties"]["tip_x"]
+    assert validate(1.0, tip) == [] and validate("1.0", tip) != []
+    assert any("missing key 'tip_y'" in e for e in validate({"tip_x": 1.0},
+                                                              sch["properties"]["results"]))

@@ -53,13 +53,17 @@ def write(frames, directory, name: str) -> Path:
     path = check_directory(directory)
     width = max(5, len(str(len(frames) - 1)))
     entries = []
-    for i, fr in enumerate(frames):
-        fname = f"{name}_{i:0{width}d}.vtu"
-        mesh = meshio.Mesh(fr.points, fr.cells, point_data=fr.point_data)
-        meshio.write(path / fname, mesh, file_format="vtu")
-        entries.append((float(fr.time), fname))
     pvd = path / f"{name}.pvd"
-    pvd.write_text(pvd_text(entries))
+    try:
+        for i, fr in enumerate(frames):
+            fname = f"{name}_{i:0{width}d}.vtu"
+            mesh = meshio.Mesh(fr.points, fr.cells, point_data=fr.point_data)
+            meshio.write(path / fname, mesh, file_format="vtu")
+            entries.append((float(fr.time), fname))
+        pvd.write_text(pvd_text(entries))
+    except OSError as exc:  # a full disk, a directory removed under the run
+        raise InputError(f"--vtk {str(directory)!r}: cannot write "
+                         f"({exc.strerror or exc})") from None
     return pvd
 
 
