@@ -54,7 +54,8 @@ def _run(registry, kind, args) -> int:
     if vtk is not None:
         from ancf.scenes.vtk import write_run
         pvd, steps = write_run(args.name, res.extra, vtk)
-        print(f"vtk: wrote {pvd} ({steps} step{'s' if steps != 1 else ''})", file=sys.stderr)
+        if not args.json:  # stdout stays one JSON object; stderr errors and warnings only
+            print(f"vtk: wrote {pvd} ({steps} step{'s' if steps != 1 else ''})")
     for w in out["warnings"]:
         print(f"warning: {w}", file=sys.stderr)
     if args.json:
