@@ -11,6 +11,8 @@ line prints after ``error:``):
 >>> beam = ancf.run("cantilever", n_elements=4)
 >>> beam.converged, beam.params["n_elements"], beam.params["h"]
 (True, 4, 0.1)
+>>> beam  # doctest: +ELLIPSIS
+<ancf.Result run cantilever: converged (...); results: newton_iterations, ..., tip_x, tip_y, ...>
 >>> sorted(k for k in ("tip_x", "tip_y") if k in beam.results)
 ['tip_x', 'tip_y']
 
@@ -97,6 +99,11 @@ class Result:
     warnings: list
     extra: dict = field(default_factory=dict, repr=False)
     _json: dict = field(default_factory=dict, repr=False)
+
+    def __repr__(self) -> str:  # short: the results may hold long time histories
+        return (f"<ancf.Result {self.command} {self.scene}: "
+                f"{'converged' if self.converged else 'NOT CONVERGED'} ({self.message}); "
+                f"results: {', '.join(self.results)}>")
 
     # --- the JSON -------------------------------------------------------------------
     def to_json(self, **kw) -> str:
