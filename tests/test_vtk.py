@@ -191,3 +191,28 @@ def test_run_with_vtk_loads_meshio_and_without_does_not(tmp_path):
                            text=True, timeout=300, cwd=os.path.dirname(os.path.dirname(__file__)))
         assert p.returncode == 0, p.stderr
         assert p.stderr.strip().splitlines()[-1] == loaded
+
+
+@pytest.mark.parametrize("scene, kw", [
+    ("simply-supported", {"element": "omar-shabana", "n_elements": 4}),
+    ("cantilever", {"n_elements": 3}),
+    ("beam3d-cantilever", {"element": "belt3d", "n_elements": 2, "load_angle_deg": 45}),
+    ("beam3d-cantilever", {"n_elements": 2, "load_angle_deg": 45}),
+    ("spinning-beam", {"element": "omar-shabana", "t_end": 0.1, "mean_window": 0.05}),
+    ("belt-free-static", {"n_elements": 10}),
+])
+def test_the_sampled_centreline_passes_through_the_nodes(scene, kw):
+    r = ancf.run(scene, **kw)
+    states = r.node_history if r.times is not None else r.nodes[None]
+    frames = r.frames()
+    assert len(frames) == len(states)
+    for fr, nodes in zip(frames, states):
+        d = nodes.shape[1]
+        assert np.allclose(fr.points[::PER_ELEMENT, :d], nodes, rtol=0, atol=1e-12)
+        assert np.all(fr.points[:, d:] == 0)
+    # between the nodes the element's own shape functions: cubic along the axis for the
+    # elements with r_x (off the chord), linear for the others (on it)
+    last = frames[-1].points  # deformed (a dynamic run starts straight)
+    chord = 0.5 * (last[0] + last[PER_ELEMENT])
+    cubic = kw.get("element") in ("omar-shabana", "belt3d") or scene == "belt-free-static"
+    assert np.allclose(last[PER_ELEMENT // 2], chord, rtol=0, atol=1e-12) is not cubic
