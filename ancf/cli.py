@@ -76,7 +76,17 @@ def _scenes() -> int:
 def _run(registry, kind, args) -> int:
     if args.name not in registry:
         raise InputError(f"{kind}: unknown name {args.name!r}; allowed: {', '.join(registry)}")
-    out, _ = registry[args.name].execute(_parse_sets(args.set))
+    vtk = getattr(args, "vtk", None)
+    if vtk is not None:  # --vtk: the input, then the directory, checked before the run
+        from ancf.scenes.vtk import check_directory
+        registry[args.name].resolve(_parse_sets(args.set))
+        check_directory(vtk)
+    out, res = registry[args.name].execute(_parse_sets(args.set))
+    if vtk is not None:
+        from ancf.scenes.vtk import write_run
+        pvd, steps = write_run(args.name, res.extra, vtk)
+        if not args.json:  # stdout stays one JSON object; stderr errors and warnings only
+            print(f"vtk: wrote {pvd} ({steps} step{'s' if steps != 1 else ''})")
     for w in out["warnings"]:
         print(f"warning: {w}", file=sys.stderr)
     if args.json:
@@ -172,6 +182,9 @@ def main(argv=None) -> int:
         p.add_argument("name")
         p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter")
         p.add_argument("--json", action="store_true", help="print one JSON object")
+    sub.choices["run"].add_argument(
+        "--vtk", metavar="DIR", help="write the deformed mesh as a ParaView time series: "
+        "DIR/SCENE.pvd and one .vtu per output step")
     p = sub.add_parser("sweep", help="run the cartesian product of parameter values")
     p.add_argument("name")
     p.add_argument("--grid", action="append", metavar="KEY=V1,V2,...",

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-HEAVY = ("sympy", "pandas", "dask", "matplotlib")
+HEAVY = ("sympy", "pandas", "dask", "matplotlib", "meshio")
 
 
 @pytest.mark.parametrize("argv", [["run", "cantilever", "--json"],
