@@ -1,5 +1,10 @@
 """ancf-bench: the Absolute Nodal Coordinate Formulation for beams, plates and belt drives.
 
+The Python API (``ancf.run``, ``ancf.analytic``, ``ancf.scenes``, ``ancf.sweep``,
+``ancf.recommend``, ``ancf.Result``, ``ancf.InputError``) lives in :mod:`ancf.api`, loaded on
+first use by the module ``__getattr__`` below: importing ``ancf`` (every command and every
+numba worker process does) stays cheap.
+
 Numba's on-disk cache is invalidated only when a compiled function's own file changes,
 not when a function it calls (and compiles in) does: after editing ``contact3d.py`` the
 belt march would keep running the old contact kernel from its cache.  So the cache
@@ -27,3 +32,20 @@ def numba_cache_dir(root: Path | None = None) -> Path:
 
 
 os.environ.setdefault("NUMBA_CACHE_DIR", str(numba_cache_dir()))
+
+
+#: the names of the Python API (:mod:`ancf.api`), loaded on first use
+API = ("run", "analytic", "scenes", "sweep", "recommend", "Result", "InputError")
+
+
+def __getattr__(name):
+    if name not in API:
+        raise AttributeError(f"module 'ancf' has no attribute {name!r}")
+    from ancf import api
+    # ``scenes``: once loaded, the package ``ancf.scenes`` is found first (it is callable
+    # and lists the scenes, as ``ancf.api.scenes`` does); return it then, for one identity
+    return globals()[name] if name in globals() else getattr(api, name)
+
+
+def __dir__():
+    return sorted(set(globals()) | set(API))

@@ -1,7 +1,8 @@
 """The CLI contract: `ancf scenes`, `ancf run SCENE --set k=v --json`, `ancf analytic NAME`.
 
-JSON keys: scene, params, converged, message, results, cpu_time_s.  Exit codes:
-0 ok, 2 bad input (one line on stderr naming the field and its range), 3 no convergence.
+JSON keys: scene, params, converged, message, results, cpu_time_s, compile_cpu_s,
+warnings.  Exit codes: 0 ok, 2 bad input (one line on stderr naming the field and its
+range), 3 no convergence.
 """
 import json
 import subprocess
@@ -11,7 +12,8 @@ import pytest
 
 from ancf.cli import main
 
-KEYS = {"scene", "params", "converged", "message", "results", "cpu_time_s", "warnings"}
+KEYS = {"scene", "params", "converged", "message", "results", "cpu_time_s", "compile_cpu_s",
+        "warnings"}
 
 
 def _run(capsys, *argv):
@@ -93,3 +95,13 @@ def test_console_entry_point_runs_as_module():
                           capture_output=True, text=True, check=False)
     assert proc.returncode == 0, proc.stderr
     assert json.loads(proc.stdout)["results"]["elongation_m"] > 0
+
+
+def test_help_lists_every_command_in_plain_words(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--help"])
+    text = capsys.readouterr().out
+    assert exc.value.code == 0
+    for cmd in ("scenes", "run", "analytic", "sweep", "recommend"):
+        assert f"\n    {cmd} " in text
+    assert "run an analytic reference" in text and " a analytic" not in text

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-HEAVY = ("sympy", "pandas", "dask", "matplotlib")
+HEAVY = ("sympy", "pandas", "dask", "matplotlib", "meshio")
 
 
 @pytest.mark.parametrize("argv", [["run", "cantilever", "--json"],
@@ -22,6 +22,46 @@ def test_run_imports_no_heavy_library(argv):
                        timeout=300)
     assert p.returncode == 0, p.stderr
     assert p.stderr.strip().splitlines()[-1] == "[]"
+
+
+def _loaded_after(argv, prefixes) -> list:
+    """Modules starting with one of ``prefixes`` loaded by ``cli.main(argv)`` in a fresh process."""
+    code = ("import sys\nfrom ancf import cli\ntry:\n    cli.main(%r)\nexcept SystemExit:\n    pass\n"
+            "print(sorted(m for m in sys.modules if m.startswith(%r)), file=sys.stderr)\n"
+            ) % (argv, tuple(prefixes))
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
+                       timeout=300)
+    return eval(p.stderr.strip().splitlines()[-1])
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["run", "--help"], ["run"]])
+def test_help_loads_no_numerics(argv):
+    """``ancf --help`` (and argparse's errors) is argparse alone: no numba, numpy or scipy."""
+    assert _loaded_after(argv, ("numba", "numpy", "scipy", "ancf.scenes")) == []
+
+
+def test_run_loads_its_scene_only():
+    """``ancf run cantilever`` imports the cantilever's modules: no other scene, no belt
+    element or model, no analytic reference, and none of scipy's modules that load
+    scipy.linalg (csgraph, sparse.linalg) on a band pattern."""
+    loaded = _loaded_after(["run", "cantilever", "--json"],
+                           ("ancf.scenes.", "ancf.belts", "ancf.elements.belt3d",
+                            "ancf.elements.dufva2d", "analytic", "scipy.sparse.csgraph",
+                            "scipy.sparse.linalg"))
+    assert "ancf.scenes.cantilever" in loaded  # the probe sees the scene it ran
+    assert [m for m in loaded if not m.startswith("ancf.scenes.")] == []
+    assert set(loaded) == {"ancf.scenes.cantilever", "ancf.scenes.base", "ancf.scenes.accuracy",
+                           "ancf.scenes.beam_static"}
+
+
+def test_scene_table_names_every_scene():
+    """ancf.scenes.MODULES (what ``ancf run`` imports by name) matches the scenes' own names."""
+    import ancf.scenes as scenes
+    assert list(scenes.SCENES) == list(scenes.MODULES)
+    assert all(scenes.scene(n).name == n for n in scenes.MODULES)
+    mods = {p.stem for p in (ROOT / "ancf" / "scenes").glob("*.py")
+            if "SCENE = Scene(" in p.read_text()}
+    assert mods == set(scenes.MODULES.values())
 
 
 def _module_name(path: Path) -> str:
@@ -77,3 +117,21 @@ def test_numba_cache_follows_the_sources(tmp_path):
     assert ancf.numba_cache_dir(tmp_path) == first and first.parent.name == "ancf-bench"
     (tmp_path / "a.py").write_text("x = 2\n")
     assert ancf.numba_cache_dir(tmp_path) != first
+
+
+def test_scenes_listing_is_kept_for_the_sources(tmp_path):
+    """``ancf scenes`` lists from the scenes the first time in a source tree, and from the
+    text kept beside numba's cache after that: the same text, no scene or numba loaded."""
+    import os
+    code = ("import sys\nfrom ancf import cli\ncli.main(['scenes'])\n"
+            "print(sorted(m for m in sys.modules if m.startswith(('ancf.scenes', 'numba'))),"
+            " file=sys.stderr)\n")
+    env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path)}
+    runs = [subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                           cwd=ROOT, env=env, timeout=300) for _ in range(2)]
+    assert all(p.returncode == 0 for p in runs), runs[0].stderr
+    first, second = runs
+    assert first.stdout == second.stdout and "Scenes (ancf run NAME):" in first.stdout
+    assert "ancf.scenes.cantilever" in first.stderr.splitlines()[-1]
+    assert second.stderr.strip().splitlines()[-1] == "[]"
+    assert list(tmp_path.glob("ancf-bench/*/scenes.txt"))

@@ -21,9 +21,24 @@ def test_no_module_imports_from_a_layer_above_its_own():
     assert found == [], "\n".join(found)
 
 
-def test_the_package_init_imports_no_project_module():
+def test_the_package_init_imports_only_the_top_layer_lazily():
     for f in layers.PACKAGE_FILES:
-        assert layers.imports((layers.ROOT / f).read_text(), "ancf", True) == []
+        assert layers.package_init_violations((layers.ROOT / f).read_text()) == []
+
+
+@pytest.mark.parametrize("source, bad", [
+    ("import os\n", False),
+    ("def __getattr__(name):\n    from ancf import api\n    return getattr(api, name)\n", False),
+    ("def __getattr__(name):\n    import ancf.api\n", False),
+    ("from ancf import api\n", True),                      # eager: every import pays for it
+    ("import ancf.api\n", True),
+    ("def __getattr__(name):\n    from ancf.scenes import SCENES\n", True),  # not the top layer
+    ("def __getattr__(name):\n    from ancf.common import params\n", True),
+    ("def helper():\n    from ancf import api\n", True),  # lazy, but not in __getattr__
+    ("if True:\n    from ancf import cli\n", True),
+])
+def test_the_package_init_rule_can_fail(source, bad):
+    assert bool(layers.package_init_violations(source)) is bad
 
 
 @pytest.mark.parametrize("rel, source, bad", [
@@ -36,6 +51,11 @@ def test_the_package_init_imports_no_project_module():
     ("ancf/belts/path.py", "from ..scenes import base\n", True),
     ("analytic/bechtel.py", "from ancf.common.params import Param\nimport ancf\n", False),
     ("ancf/cli.py", "from ancf.reports import output\n", False),
+    ("ancf/api.py", "def f():\n    from ancf.study.sweep import run_sweep\n", False),
+    ("ancf/scenes/vtk.py", "from ancf import api\n", True),
+    ("ancf/study/sweep.py", "def f():\n    import ancf.api\n", True),
+    ("ancf/__init__.py", "from ancf import api\n", True),
+    ("ancf/__init__.py", "def __getattr__(name):\n    from ancf import api\n", False),
 ])
 def test_the_rule_sees_upward_imports_at_any_depth(rel, source, bad):
     assert bool(layers.upward_imports(rel, source)) is bad

@@ -69,3 +69,40 @@ def test_the_validator_rejects_what_the_schema_forbids():
 def test_published_schemas_are_the_generated_ones():
     path = Path(__file__).resolve().parents[1] / "reports" / "schemas.md"
     assert path.read_text() == schemas_markdown(), "run `python -m ancf.study.schemas`"
+
+
+def test_schema_names_as_the_readme_writes_them():
+    from ancf.study.schemas import SchemaNameError, names
+    assert schema("run cantilever") == schema("cantilever") == schema("ancf run cantilever")
+    assert schema("analytic reissner")["title"] == "ancf analytic reissner --json"
+    assert schema("analytic reissner")["properties"]["scene"]["const"] == "reissner"
+    assert set(names()) == {f"{c} {n}" for n, (c, _) in registries().items()}
+    for bad in ("run reissner", "analytic cantilever", "run", "cantilever beam", "nope"):
+        with pytest.raises(KeyError) as exc:  # the old exception type still catches it
+            schema(bad)
+        assert isinstance(exc.value, (SchemaNameError, ValueError))
+        text = str(exc.value)
+        assert repr(bad) in text and "run cantilever" in text and "analytic reissner" in text
+        assert not text.startswith('"')  # a message, not a KeyError's quoted repr
+
+
+def test_validate_refuses_swapped_arguments_and_accepts_a_name():
+    sch = schema("run cantilever")
+    out = {"scene": "cantilever", "params": {}, "converged": True, "message": "",
+           "results": {}, "cpu_time_s": 0.0, "warnings": []}
+    errors = validate(out, sch)  # missing params and results: violations, not an exception
+    assert errors and all(e.startswith("$.") for e in errors)
+    assert validate(out, "run cantilever") == errors
+    with pytest.raises(TypeError, match="first argument is a schema"):
+        validate(sch, out)
+    with pytest.raises(TypeError, match="no JSON Schema keywords"):
+        validate(out, out)
+    with pytest.raises(TypeError, match="not a dict"):
+        validate(out, 3)
+    with pytest.raises(KeyError, match="allowed"):
+        validate(out, "run nope")
+    # sub-schemas still validate parts of an output
+    tip = sch["properties"]["results"]["properties"]["tip_x"]
+    assert validate(1.0, tip) == [] and validate("1.0", tip) != []
+    assert any("missing key 'tip_y'" in e for e in validate({"tip_x": 1.0},
+                                                              sch["properties"]["results"]))

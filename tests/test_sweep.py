@@ -18,6 +18,7 @@ import pytest
 
 from ancf.cli import main
 from ancf.common.params import InputError
+from ancf.study.cost import with_work
 from ancf.study.sweep import expand, journal_path, parse_grid, read_rows, run_sweep
 
 # 2 elements x 2 schemes x 8 element counts x 2 heights x 2 Poisson ratios = 128 runs
@@ -77,6 +78,14 @@ def test_sweep_interrupted_and_resumed_without_recomputing(interrupted_and_resum
         assert col in final
     assert (final["reference"] == "reissner").all()
     assert final["error"].between(0, 1.5).all()
+    # the counted work recommend ranks by, one per row, and the closing line on stderr
+    assert np.array_equal(final["work"].values, with_work(final.drop(columns="work"))["work"].values)
+    assert np.isfinite(final["work"]).all() and final["work"].nunique() > N_RUNS // 4
+    assert (final["compile_cpu_s"] >= 0).all()
+    last = stderr.strip().splitlines()[-1]
+    assert last.startswith(f"sweep cantilever: {N_RUNS} rows in ")
+    assert (f": {N_RUNS} converged, 0 not converged, 0 failed; {N_RUNS - len(before)} run now in "
+            in last), last
 
 
 def test_resume_of_a_finished_sweep_runs_nothing(workdir, interrupted_and_resumed):
@@ -112,8 +121,11 @@ def test_failures_are_rows_and_do_not_stop_the_others(workdir):
              {"element": ["omar-shabana"], "integration": ["report-fix"]},  # invalid pair
              {"n_elements": [4096], "element": ["omar-shabana"], "stability_check": ["off"]},
              {"F": [-5e6], "load_steps": [1], "max_iterations": [1]}]  # cannot converge
+    msgs = []
     df = run_sweep("cantilever", grids, out=out, workers=2, time_limit=0.5, progress=False,
-                   log=lambda m: None)
+                   log=msgs.append)
+    assert ": 2 converged, 1 not converged, 2 failed (" in msgs[-1]
+    assert "invalid 1" in msgs[-1] and "timeout 1" in msgs[-1] and "; 5 run now in" in msgs[-1]
     by = {(r["element"], r["integration"], r["n_elements"], r["max_iterations"]): r
           for _, r in df.iterrows()}
     assert len(df) == 5
@@ -126,6 +138,8 @@ def test_failures_are_rows_and_do_not_stop_the_others(workdir):
     nc = df[df["status"] == "not-converged"]
     assert len(nc) == 1 and "No convergence" in nc["message"].iloc[0]
     assert df.loc[df["status"] != "ok", "error"].isna().all()
+    assert df.loc[df["status"].isin(["invalid", "timeout"]), "work"].isna().all()  # no counters
+    assert (df.loc[df["status"].isin(["ok", "not-converged"]), "work"] > 0).all()
     # a rerun skips every recorded row, failures included, unless asked to retry them
     msgs = []
     run_sweep("cantilever", grids, out=out, workers=1, time_limit=0.5, progress=False,

@@ -18,9 +18,11 @@ ROOT = REPO
 #: bottom to top; each layer is one or more paths, a path a folder (its modules) or a file
 LAYERS = (("ancf/common",), ("analytic",), ("ancf/core",), ("ancf/solvers",),
           ("ancf/elements",), ("ancf/models",), ("ancf/belts",), ("ancf/scenes",),
-          ("ancf/study",), ("ancf/checks",), ("ancf/reports",), ("ancf/cli.py",))
+          ("ancf/study",), ("ancf/checks",), ("ancf/reports",), ("ancf/cli.py", "ancf/api.py"))
 
-#: files outside every layer: the package itself (its ``__init__`` imports no project module)
+#: files outside every layer: the package itself, whose ``__init__`` imports nothing of the
+#: project at module level and only the top layer lazily, inside its module ``__getattr__``
+#: (``ancf.run`` etc. load ``ancf.api`` on first use; see :func:`package_init_violations`)
 PACKAGE_FILES = ("ancf/__init__.py",)
 
 BEGIN, END = "<!-- layers: begin (python -m ancf.common.layers) -->", "<!-- layers: end -->"
@@ -78,7 +80,10 @@ def _target_rank(target: str) -> int | None:
 
 
 def upward_imports(rel: str, source: str) -> list[str]:
-    """One line per import in file ``rel`` of a layer above the file's own."""
+    """One line per import in file ``rel`` of a layer above the file's own (the package
+    ``__init__``: per :func:`package_init_violations`)."""
+    if rel in PACKAGE_FILES:
+        return package_init_violations(source)
     name = module_name(rel)
     own = layer_of(name)
     found = []
@@ -86,6 +91,30 @@ def upward_imports(rel: str, source: str) -> list[str]:
         rank = _target_rank(target)
         if rank is not None and own is not None and rank > own:
             found.append(f"{rel}:{line} (layer {own}) imports {target} (layer {rank})")
+    return found
+
+
+def package_init_violations(source: str) -> list[str]:
+    """One line per project import of the package ``__init__`` that is not a lazy import of
+    the top layer inside its module-level ``__getattr__`` (the cheap ``import ancf``)."""
+    tree = ast.parse(source)
+    lazy = set()
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef) and node.name == "__getattr__":
+            lazy |= {id(n) for n in ast.walk(node)}
+    top = len(LAYERS) - 1
+    found = []
+    for node in ast.walk(tree):
+        if not isinstance(node, (ast.Import, ast.ImportFrom)):
+            continue
+        for line, target in imports(ast.unparse(node), "ancf", True):
+            rank = _target_rank(target)
+            if id(node) not in lazy:
+                found.append(f"ancf/__init__.py:{node.lineno} imports {target} outside "
+                             "__getattr__ (import ancf must stay cheap)")
+            elif rank != top:
+                found.append(f"ancf/__init__.py:{node.lineno} imports {target} (layer {rank}); "
+                             f"only the top layer ({', '.join(LAYERS[top])}) may be loaded lazily")
     return found
 
 

@@ -16,7 +16,6 @@ import numpy as np
 import scipy.sparse as sp
 from numba import njit
 
-from scipy.sparse.csgraph import reverse_cuthill_mckee
 
 #: band storage is used while it holds at most this many times the nonzeros
 BAND_FILL_LIMIT = 8.0
@@ -97,6 +96,7 @@ class ReducedPattern:
         natural = np.arange(self.n)
         if self.n == 0 or _bandwidth(r, c, natural) * 3 < 64:
             return natural
+        from scipy.sparse.csgraph import reverse_cuthill_mckee  # loads scipy.linalg: ~0.1 s
         g = sp.csr_matrix((np.ones(r.size), (r, c)), shape=(self.n, self.n))
         perm = reverse_cuthill_mckee(g, symmetric_mode=True)
         order = np.empty(self.n, dtype=np.int64)

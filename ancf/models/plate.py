@@ -47,6 +47,14 @@ def simply_supported_centre(n: int, a: float, b: float, h: float, E: float, nu: 
                             p: float, ng: int = 4) -> float:
     """Centre deflection (m, along +z = along a positive pressure p, Pa) of an n x n mesh
     (n even) of the simply supported a x b plate."""
+    m, u = simply_supported(n, a, b, h, E, nu, p, ng)
+    return float(u[m.dof(m.node(n // 2, n // 2), "r", 2)])
+
+
+def simply_supported(n: int, a: float, b: float, h: float, E: float, nu: float,
+                     p: float, ng: int = 4) -> tuple:
+    """(mesh, displacements u (n_dofs,) from the flat reference) of an n x n mesh of the
+    simply supported a x b plate under the pressure p (Pa, along +z)."""
     m = PlateMesh(a, b, n, n)
     fixed = in_plane(m)
     for k in range(m.n_nodes):
@@ -54,8 +62,7 @@ def simply_supported_centre(n: int, a: float, b: float, h: float, E: float, nu: 
         fixed |= {m.dof(k, "r", 2)} if on_x or on_y else set()
         fixed |= {m.dof(k, "r_y", 2)} if on_x else set()
         fixed |= {m.dof(k, "r_x", 2)} if on_y else set()
-    u = _linear_solve(m, assembly(m, h, E, nu, ng), fixed, m.pressure_load(p))
-    return float(u[m.dof(m.node(n // 2, n // 2), "r", 2)])
+    return m, _linear_solve(m, assembly(m, h, E, nu, ng), fixed, m.pressure_load(p))
 
 
 def edge_load(m: PlateMesh, P: float) -> np.ndarray:

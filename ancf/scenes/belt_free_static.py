@@ -101,7 +101,8 @@ def run(p: dict) -> SceneResult:
         results.update(radius_mean_m=None, radius_max_dev_m=None)
     shapes = [curve(mesh, pat.expand(z, g)) for z in out.iterates]
     return SceneResult(out.converged, out.message, results,
-                       extra={"shapes": shapes, "residuals": out.residuals, "mesh": mesh, "q": q})
+                       extra={"shapes": shapes, "residuals": out.residuals, "mesh": mesh, "q": q,
+                              "q0": q0})
 
 
 SCENE = Scene(

@@ -10,14 +10,15 @@ matrix raises :class:`Singular`.  :func:`stability` counts the negative and zero
 eigenvalues of a symmetric tangent by inertia (Sylvester's law: negative pivots of
 an LDL^T of ``K - s I``), at any size, and finds the lowest eigenvalue by
 bisection on those counts.
+
+scipy's sparse solvers (and the scipy.linalg they import) load on the first CSR
+pattern only: band patterns, the common case, do not need them.
 """
 from __future__ import annotations
 
 import warnings
 
 import numpy as np
-import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 
 from ancf.solvers import banded
 
@@ -57,6 +58,7 @@ class _SparseLU:
         with warnings.catch_warnings():
             warnings.simplefilter("error")
             try:
+                import scipy.sparse.linalg as spla
                 self.lu = spla.splu(A.tocsc())
             except (RuntimeError, Warning) as exc:
                 raise Singular(str(exc)) from None
@@ -78,6 +80,8 @@ def factor(pattern, data, overwrite=False):
 
 
 def _sparse_count_below(A, shift) -> int:
+    import scipy.sparse as sp
+    import scipy.sparse.linalg as spla
     S = (A - shift * sp.identity(A.shape[0], format="csr")).tocsc()
     with warnings.catch_warnings():
         warnings.simplefilter("error")
@@ -99,6 +103,7 @@ def _counter(pattern, data):
 def _top(pattern, data) -> float:
     if pattern.band:
         return float(banded.largest_magnitude(data, pattern.kl, 40))
+    import scipy.sparse.linalg as spla
     return float(abs(spla.eigsh(pattern.as_csr(data), k=1, which="LM",
                                 return_eigenvectors=False)[0]))
 

@@ -48,6 +48,9 @@ coordinates per node.  Their weights are the static table's, not refitted.  belt
 generalised-alpha runs keep the ``alpha`` table: on the 38 runs of its report grid the
 seconds per work unit scatter by 8 % median / 17 % at the 90th percentile (one cold
 first run 1.8x), as good as a refit (NNLS: 8 % / 17 %), so no belt table was added.
+(That cold first run included loading the compiled kernels from numba's cache; a run's
+``cpu_time_s`` now leaves compiling and loading out, as ``compile_cpu_s``, so :func:`calibrate`
+fits the solves alone.)
 
 Missing counters degrade gracefully: static runs use ``tangent_evaluations`` and
 ``factorizations`` when the solver reports them, else ``newton_iterations``; a run whose

@@ -2,7 +2,7 @@
 --json``: one per scene and per analytic reference, generated from declarations.
 
 The top level is the same for all (``scene``, ``params``, ``converged``, ``message``,
-``results``, ``cpu_time_s``, ``warnings``); ``params`` follows the scene's parameter
+``results``, ``cpu_time_s``, ``compile_cpu_s``, ``warnings``); ``params`` follows the scene's parameter
 declarations (:class:`ancf.scenes.base.Param`); ``results`` follows :data:`RESULTS` below,
 the one place where a result key is declared: its JSON type, whether it is always present
 and whether it is ``null`` when the run does not converge.  Result keys not declared are
@@ -229,17 +229,79 @@ def registries() -> dict:
             **{n: ("analytic", s) for n, s in REFERENCES.items()}}
 
 
+class SchemaNameError(KeyError, ValueError):
+    """An unknown schema name; the message lists the allowed ones (a ``KeyError``, as
+    before, and a ``ValueError``; printed without ``KeyError``'s quotes)."""
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else ""
+
+
+def names() -> list[str]:
+    """Every schema name in the README's form: ``run SCENE`` and ``analytic NAME``."""
+    return [f"{command} {n}" for n, (command, _) in registries().items()]
+
+
+def _lookup(name: str) -> tuple[str, str, object]:
+    """(command, bare name, Scene) of ``run SCENE``, ``analytic NAME`` (also with a leading
+    ``ancf``) or the bare ``SCENE`` / ``NAME``."""
+    regs = registries()
+    words = name.split() if isinstance(name, str) else []
+    if words[:1] == ["ancf"]:
+        words = words[1:]
+    if len(words) == 2 and words[0] in ("run", "analytic"):
+        command, bare = words
+    elif len(words) == 1:
+        command, bare = None, words[0]
+    else:
+        command, bare = None, None
+    if bare in regs and command in (None, regs[bare][0]):
+        return regs[bare][0], bare, regs[bare][1]
+    raise SchemaNameError(f"schema: unknown name {name!r}; allowed: {', '.join(names())} "
+                          "(or the bare scene or reference name)")
+
+
 def schema(name: str) -> dict:
-    """The JSON schema of ``ancf run|analytic NAME --json``."""
-    command, sc = registries()[name]
+    """The JSON schema of ``ancf run|analytic NAME --json``; ``name`` as the README writes
+    it (``"run cantilever"``, ``"analytic reissner"``) or bare (``"cantilever"``).  An
+    unknown name raises :class:`SchemaNameError` (a ``KeyError``) listing the allowed ones."""
+    command, name, sc = _lookup(name)
     props = {"scene": {"type": STR, "const": name}, "params": _params_schema(sc),
              "converged": {"type": BOOL}, "message": {"type": STR},
-             "results": _result_schema(RESULTS[name]), "cpu_time_s": {"type": NUM},
+             "results": _result_schema(RESULTS[name]), "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
+                            "compiling or loading numba kernels"},
+             "compile_cpu_s": {"type": NUM, "description": "process CPU seconds spent compiling "
+                               "numba kernels or loading them from numba's cache during the run "
+                               "(0 when all were loaded before)"},
              "warnings": {"type": "array", "items": {"type": STR},
                           "description": "accuracy warnings, empty when none"}}
     return {"$schema": "https://json-schema.org/draft/2020-12/schema",
             "title": f"ancf {command} {name} --json", "type": "object", "properties": props,
             "required": list(props), "additionalProperties": False}
+
+
+#: the JSON Schema keywords this module writes and :func:`validate` understands
+KEYWORDS = frozenset(("$schema", "title", "type", "properties", "required",
+                      "additionalProperties", "items", "const", "description"))
+
+
+def _check_schema(sch, value) -> dict:
+    """``sch`` as a schema dict (a name is looked up), or a TypeError saying what is wrong
+    (above all: the output and the schema passed the wrong way round)."""
+    if isinstance(sch, str):
+        return schema(sch)
+    swapped = isinstance(value, dict) and "$schema" in value
+    if not isinstance(sch, dict):
+        raise TypeError(f"validate(value, schema): the schema is a {type(sch).__name__}, not a "
+                        "dict or a schema name")
+    unknown = sorted(set(sch) - KEYWORDS)
+    if swapped or unknown:
+        why = ("the first argument is a schema" if swapped
+               else f"the second argument has key(s) {', '.join(map(repr, unknown[:3]))} that "
+                    "are no JSON Schema keywords")
+        raise TypeError(f"validate(value, schema): {why}; call validate(output, schema(name)), "
+                        "the output first")
+    return sch
 
 
 _CHECK = {NUM: lambda v: isinstance(v, (int, float)) and not isinstance(v, bool),
@@ -249,8 +311,17 @@ _CHECK = {NUM: lambda v: isinstance(v, (int, float)) and not isinstance(v, bool)
           "object": lambda v: isinstance(v, dict)}
 
 
-def validate(value, sch: dict, path: str = "$") -> list[str]:
-    """Violations of ``sch`` by ``value`` (empty when valid), one line each with its path."""
+def validate(value, sch, path: str = "$") -> list[str]:
+    """Violations of ``sch`` by ``value`` (empty when valid), one line each with its path.
+
+    ``sch`` is a schema (:func:`schema`) or its name (``"run cantilever"``).  Arguments
+    passed the wrong way round (``validate(schema, output)``) raise a TypeError instead of
+    passing silently.
+    """
+    return _validate(value, _check_schema(sch, value), path)
+
+
+def _validate(value, sch: dict, path: str) -> list[str]:
     types = sch.get("type")
     types = [types] if isinstance(types, str) else types
     if types and not any(_CHECK[t](value) for t in types):
@@ -263,12 +334,12 @@ def validate(value, sch: dict, path: str = "$") -> list[str]:
         errors += [f"{path}: missing key {k!r}" for k in sch.get("required", ()) if k not in value]
         for k, v in value.items():
             if k in props:
-                errors += validate(v, props[k], f"{path}.{k}")
+                errors += _validate(v, props[k], f"{path}.{k}")
             elif sch.get("additionalProperties") is False:
                 errors.append(f"{path}: undeclared key {k!r}")
     if isinstance(value, list) and "items" in sch:
         for i, v in enumerate(value):
-            errors += validate(v, sch["items"], f"{path}[{i}]")
+            errors += _validate(v, sch["items"], f"{path}[{i}]")
     return errors
 
 
@@ -286,7 +357,9 @@ def schemas_markdown() -> str:
              "schema per `ancf run SCENE --json` and `ancf analytic NAME --json`; the suite "
              "validates every scene's and reference's default run against it "
              "(`tests/test_schemas.py`). Top level: `scene`, `params` (every parameter used), "
-             "`converged`, `message`, `results`, `cpu_time_s`, `warnings` (a list of strings, "
+             "`converged`, `message`, `results`, `cpu_time_s` (the run's process CPU seconds "
+             "without compiling or loading numba kernels), `compile_cpu_s` (those), "
+             "`warnings` (a list of strings, "
              "empty when none). Result keys marked nullable are `null` where the run did not "
              "converge; optional keys are absent when the solver did not get that far.\n"]
     for name, (command, _) in registries().items():

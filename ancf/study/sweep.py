@@ -7,10 +7,14 @@ combination in worker processes, one row per run, into a Parquet or CSV file:
   parameters (one column each, all values used), ``status`` (``ok``, ``not-converged``,
   ``failed``, ``timeout``, ``invalid``, ``worker-died``), ``converged``, ``message``,
   ``error`` against the scene's reference (:mod:`ancf.study.references`), ``reference``,
-  ``cpu_time_s`` (process CPU time of the run), ``wall_time_s``, ``steps`` (load steps
-  or time steps), ``iterations`` (Newton iterations), ``session`` (which invocation
-  computed it) and the scalar results as ``res_<name>`` (list results: their last value
-  as ``res_<name>_final``);
+  ``cpu_time_s`` (process CPU time of the run, without compiling or loading numba
+  kernels), ``compile_cpu_s`` (that compiling and loading), ``wall_time_s``, ``steps``
+  (load steps or time steps), ``iterations`` (Newton iterations), ``work`` (the run's
+  counted work, :mod:`ancf.study.cost`: what ``recommend`` ranks by; NaN when the
+  results carry no counters), ``session`` (which invocation computed it) and the scalar
+  results as ``res_<name>`` (list results: their last value as ``res_<name>_final``);
+* the sweep ends with one line on stderr: rows, converged, not converged, failed and the
+  time taken;
 * runs are deterministic (one BLAS thread per worker) and resumable: every finished row
   is appended at once to ``FILE.journal.jsonl``; a new call with the same file skips the
   keys already there (``retry_failed`` reruns failed / timed-out ones) and the journal is
@@ -42,6 +46,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ancf.study.cost import row_counts, work
 from ancf.study.references import ReferenceFailed, spec, stable_hash
 from ancf.common.threads import BLAS_ENV
 from ancf.common.params import InputError
@@ -147,8 +152,8 @@ def _base_row(task: dict) -> dict:
     row = {"key": task["key"], "scene": task["scene"]}
     row.update(task.get("params") or task.get("overrides") or {})
     row.update(status=None, converged=False, message="", error=float("nan"),
-               reference=task["reference"], cpu_time_s=float("nan"), wall_time_s=float("nan"),
-               steps=None, iterations=None)
+               reference=task["reference"], cpu_time_s=float("nan"),
+               compile_cpu_s=float("nan"), wall_time_s=float("nan"), steps=None, iterations=None)
     return row
 
 
@@ -178,7 +183,8 @@ def run_case(task: dict) -> dict:
     wall = time.perf_counter() - t0
     res = out["results"] or {}
     row.update(converged=bool(out["converged"]), message=out["message"],
-               cpu_time_s=float(out["cpu_time_s"]), wall_time_s=wall)
+               cpu_time_s=float(out["cpu_time_s"]),
+               compile_cpu_s=float(out.get("compile_cpu_s", float("nan"))), wall_time_s=wall)
     row["steps"] = res.get("steps", res.get("load_steps_taken"))
     row["iterations"] = res.get("newton_iterations")
     for k, v in res.items():
@@ -516,8 +522,26 @@ def _check_out(out) -> Path:
 
 
 _FRONT = ("key", "scene")
-_BACK = ("status", "converged", "message", "error", "reference", "cpu_time_s", "wall_time_s",
-         "steps", "iterations", "session")
+_BACK = ("status", "converged", "message", "error", "reference", "cpu_time_s", "compile_cpu_s",
+         "wall_time_s", "steps", "iterations", "work", "session")
+
+
+def _with_work(df: pd.DataFrame) -> pd.DataFrame:
+    """``df`` with its ``work`` column (re)computed from each row's parameters and counters
+    (:func:`ancf.study.cost.with_work` also adds a column per counted feature)."""
+    return df.assign(work=[work(row_counts(r)) for _, r in df.iterrows()])
+
+
+def summary(df: pd.DataFrame, scene: str, out, seconds: float, session: str) -> str:
+    """The closing line of a sweep: rows, converged, not converged, failed, time."""
+    st = df["status"].value_counts().to_dict() if len(df) else {}
+    failed = {k: v for k, v in st.items() if k not in ("ok", "not-converged")}
+    mine = df[df["session"] == session] if "session" in df else df.iloc[0:0]
+    cpu = float(pd.to_numeric(mine["cpu_time_s"], errors="coerce").sum()) if len(mine) else 0.0
+    kinds = f" ({', '.join(f'{k} {v}' for k, v in failed.items())})" if failed else ""
+    return (f"sweep {scene}: {len(df)} rows in {out}: {st.get('ok', 0)} converged, "
+            f"{st.get('not-converged', 0)} not converged, {sum(failed.values())} failed{kinds}; "
+            f"{len(mine)} run now in {seconds:.1f} s wall ({cpu:.2f} s CPU in the runs)")
 
 
 def _order(df: pd.DataFrame, param_names, keys_in_order) -> pd.DataFrame:
@@ -530,7 +554,9 @@ def _order(df: pd.DataFrame, param_names, keys_in_order) -> pd.DataFrame:
     df = df[cols]
     for c in ("converged",):
         df[c] = df[c].astype(bool)
-    for c in ("error", "cpu_time_s", "wall_time_s"):
+    for c in ("error", "cpu_time_s", "compile_cpu_s", "wall_time_s", "work"):
+        if c not in df:  # rows written before the column existed
+            df[c] = float("nan")
         df[c] = pd.to_numeric(df[c], errors="coerce").astype(float)
     return df
 
@@ -579,6 +605,7 @@ def run_sweep(scene: str, grids=None, *, out, fixed: dict | None = None,
     log(f"sweep {scene}: {len(tasks)} runs, {n_done} already in {out.name}, {len(todo)} to run "
         f"on {where}; reference {ref.name}; time limit {time_limit:g} s per run")
 
+    t_start = time.perf_counter()
     session = f"{time.strftime('%Y%m%dT%H%M%S')}-{os.getpid()}"
     jp = journal_path(out)
     jp.parent.mkdir(parents=True, exist_ok=True)
@@ -602,12 +629,11 @@ def run_sweep(scene: str, grids=None, *, out, fixed: dict | None = None,
             gen.close()
         df = read_rows(out)
         if len(df):
-            df = _order(df, [p.name for p in SCENES[scene].params], keys)
+            df = _order(_with_work(df), [p.name for p in SCENES[scene].params], keys)
             _write_table(df, out)
         if jp.exists():
             jp.unlink()
-    counts = df["status"].value_counts().to_dict() if len(df) else {}
-    log(f"sweep {scene}: {len(df)} rows in {out} ({', '.join(f'{k} {v}' for k, v in counts.items())})")
+    log(summary(df, scene, out, time.perf_counter() - t_start, session))
     return df
 
 
