@@ -22,7 +22,7 @@ from ancf.study.cost import calibrate, counts, with_work, work
 from ancf.study.references import cache_root, model_physics, spec, stable_hash
 from ancf.study.selection import WORK_TIE, cheapest_first
 from ancf.common.params import InputError
-from ancf.study.sweep import read_rows, rows_for, run_sweep
+from ancf.study.sweep import check_table, read_rows, rows_for, run_sweep
 
 MODEL_KEYS = ("element", "integration", "n_elements", "integrator", "rtol", "atol", "dt",
               "load_steps")
@@ -93,6 +93,24 @@ def _restrict(grids, fixed_knobs: dict):
     return out
 
 
+def check_data(data) -> None:
+    """``--data`` checked before anything runs: an existing, readable sweep file (one line
+    naming the path and what is wrong)."""
+    path = Path(data)
+    if not path.exists():
+        anc = path.parent
+        while str(anc) not in ("", ".", "/") and not anc.exists():
+            anc = anc.parent
+        if anc.exists() and not anc.is_dir():
+            raise InputError(f"--data {str(data)!r}: no such file ({str(anc)!r} is a file, "
+                             "not a directory)")
+        raise InputError(f"--data {str(data)!r}: no such file")
+    if path.suffix not in (".parquet", ".csv"):
+        raise InputError(f"--data {str(data)!r}: the file name must end in .parquet or .csv "
+                         "(a file written by `ancf sweep`)")
+    check_table(path, "--data")
+
+
 def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: str | None = None,
               data=None, workers: int | None = None, scheduler=None, time_limit: float = 300.0,
               progress: bool = True, log=None) -> dict:
@@ -114,8 +132,7 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
 
     if data is not None:
         source = str(data)
-        if not Path(data).exists():
-            raise InputError(f"--data {source!r}: no such file")
+        check_data(data)
         df = read_rows(data)
         if len(df) and "reference" in df:
             df = df[df["reference"].astype(str) == ref.name]

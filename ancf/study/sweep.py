@@ -77,6 +77,9 @@ def parse_grid(scene: str, items) -> dict:
         if k not in params:
             raise InputError(f"{k}: unknown parameter of scene {scene!r}; allowed: "
                              f"{', '.join(params)}")
+        if k in grid:
+            raise InputError(f"--grid {k}: given twice; allowed: one --grid per parameter "
+                             f"(list every value in it: {k}=v1,v2,...)")
         vals = [s.strip() for s in (v.split(";") if ";" in v else v.split(",")) if s.strip()]
         if not vals:
             raise InputError(f"--grid {item!r}: no values")
@@ -514,10 +517,66 @@ def _write_table(df: pd.DataFrame, path: Path) -> None:
     os.replace(tmp, path)
 
 
+SWEEP_COLUMNS = ("key", "status")  # every sweep file has them
+
+
+def check_table(path, what: str = "--out") -> pd.DataFrame:
+    """The rows of an existing sweep file, or InputError (one line naming ``what`` and the
+    path) when it cannot be read or is not a sweep file (no ``key`` / ``status`` column)."""
+    path = Path(path)
+    if path.is_dir():
+        raise InputError(f"{what} {str(path)!r}: is a directory; allowed: a .parquet or .csv file")
+    try:
+        df = _read_table(path)
+    except pd.errors.EmptyDataError:
+        raise InputError(f"{what} {str(path)!r}: the file is empty, not a sweep file") from None
+    except PermissionError:
+        raise InputError(f"{what} {str(path)!r}: the file cannot be read (permission "
+                         "denied)") from None
+    except Exception as exc:  # noqa: BLE001 - pyarrow / parser errors: not the format
+        kind = "Parquet" if path.suffix == ".parquet" else "CSV"
+        first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+        raise InputError(f"{what} {str(path)!r}: not a readable {kind} file ({first[:200]})") from None
+    missing = [c for c in SWEEP_COLUMNS if c not in df]
+    if missing:
+        raise InputError(f"{what} {str(path)!r}: not a sweep file (no {', '.join(missing)} "
+                         f"column{'s' if len(missing) > 1 else ''}); allowed: a file written by "
+                         "`ancf sweep`" + (", or a new file name" if what == "--out" else ""))
+    return df
+
+
 def _check_out(out) -> Path:
+    """``out`` as a Path, checked before any run: its suffix, a writable place for it
+    (every existing ancestor a directory, the nearest one writable) and, when it exists, a
+    readable sweep file of the same format.  Errors: one line naming the path."""
     out = Path(out)
     if out.suffix not in (".parquet", ".csv"):
         raise InputError(f"--out {str(out)!r}: the file name must end in .parquet or .csv")
+    parent = out.parent if str(out.parent) else Path(".")
+    anc = parent
+    while not anc.exists():
+        if anc.is_symlink() or anc == anc.parent:
+            break
+        anc = anc.parent
+    if anc.exists() and not anc.is_dir():
+        raise InputError(f"--out {str(out)!r}: {str(anc)!r} is a file, not a directory")
+    if not anc.exists():
+        raise InputError(f"--out {str(out)!r}: no existing directory to create it in")
+    try:  # a real write, not os.access: root, read-only mounts and /proc answer honestly
+        parent.mkdir(parents=True, exist_ok=True)
+        fd, probe = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".probe", dir=parent)
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        raise InputError(f"--out {str(out)!r}: cannot write in {str(parent)!r} "
+                         f"({exc.strerror or exc})") from None
+    if out.exists() or out.is_symlink():
+        if out.is_dir():
+            raise InputError(f"--out {str(out)!r}: is a directory; allowed: a .parquet or .csv "
+                             "file")
+        if not os.access(out, os.W_OK) and os.access(out, os.F_OK):
+            raise InputError(f"--out {str(out)!r}: the file is not writable")
+        check_table(out, "--out")
     return out
 
 
