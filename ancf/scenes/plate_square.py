@@ -35,6 +35,10 @@ def params() -> tuple:
 
 
 def check(p: dict) -> None:
+    try:  # derived quantities in double precision (the Navier reference and the stiffness)
+        navier_plate.check_magnitudes(p["a"], p["a"], p["h"], p["E"], p["nu"], p["p"])
+    except ValueError as exc:
+        raise InputError(str(exc)) from None
     if p["n_elements"] % 2:
         raise InputError(f"n_elements = {p['n_elements']} is out of range; allowed: an even "
                          "integer in [2, 128] (the centre must be a node)")
