@@ -220,9 +220,45 @@ def run_case(task: dict) -> dict:
     return row
 
 
+PARENT_ENV = "ANCF_SWEEP_PARENT"  # the driver's pid, given to its workers
+WATCH_S = 0.5  # the watchdog's polling interval (s)
+
+
+def _die_with_parent(parent: int | None, pdeathsig: bool = True) -> None:
+    """End this worker when its driver ends, however it ends (even SIGKILL): Linux's
+    ``prctl(PR_SET_PDEATHSIG, SIGKILL)``, and on every platform a daemon thread that
+    ends the process once its parent is no longer ``parent`` (reparented: the driver
+    died), checked every WATCH_S seconds, also while the main thread computes.  (The
+    driver also closes the worker's stdin, whose end of file stops the task loop.)
+    ``ANCF_SWEEP_PDEATHSIG=0`` in a worker's environment leaves the watchdog alone (so
+    that the tests can check it on its own)."""
+    if parent is None:
+        return
+    if pdeathsig and sys.platform.startswith("linux"):
+        try:
+            import ctypes
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(1, signal.SIGKILL, 0, 0, 0)  # 1 = PR_SET_PDEATHSIG
+        except (OSError, AttributeError):
+            pass
+    if os.getppid() != parent:  # died before the prctl took effect
+        os._exit(1)
+
+    def watch():
+        while True:
+            time.sleep(WATCH_S)
+            if os.getppid() != parent:
+                os._exit(1)
+    threading.Thread(target=watch, name="ancf-parent-watchdog", daemon=True).start()
+
+
 def _worker_main() -> int:
     """``python -m ancf.study.sweep --worker``: read tasks (JSON lines) on stdin, write rows on
-    the original stdout; anything the scenes print goes to stderr."""
+    the original stdout; anything the scenes print goes to stderr.  Ends with its driver
+    (:func:`_die_with_parent`)."""
+    parent = os.environ.get(PARENT_ENV)
+    _die_with_parent(int(parent) if parent and parent.isdigit() else None,
+                     pdeathsig=os.environ.get("ANCF_SWEEP_PDEATHSIG", "1") != "0")
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the driver decides when to stop
     out = os.fdopen(os.dup(1), "w")
     os.dup2(2, 1)
@@ -252,6 +288,7 @@ class _Runner:
         env = dict(os.environ, **_ENV)
         root = str(REPO)
         env["PYTHONPATH"] = root + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
+        env[PARENT_ENV] = str(os.getpid())
         self.proc = subprocess.Popen([sys.executable, "-m", "ancf.study.sweep", "--worker"],
                                      stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                      stderr=self.err, env=env, start_new_session=True)
