@@ -19,7 +19,8 @@ import numpy as np
 import pandas as pd
 
 from ancf.study.cost import calibrate, counts, with_work, work
-from ancf.study.references import cache_root, model_physics, spec, stable_hash
+from ancf.study.references import (ReferenceFailed, cache_root, model_physics, spec,
+                                   stable_hash)
 from ancf.study.selection import WORK_TIE, cheapest_first
 from ancf.common.params import InputError
 from ancf.study.sweep import check_table, read_rows, rows_for, run_sweep
@@ -111,6 +112,32 @@ def check_data(data) -> None:
     check_table(path, "--data")
 
 
+def check_reference(scene: str, ref, params: dict) -> None:
+    """Before any run: an analytic reference must exist for these physical parameters
+    (e.g. Bechtel's belt cannot transmit more than its largest torque); else InputError
+    naming why.  Self-references (a much finer model) are not run here: a failure of
+    theirs shows in the rows and the message."""
+    if ref.kind != "analytic":
+        return
+    try:
+        ref.values(params)
+    except (ReferenceFailed, ValueError) as exc:
+        raise InputError(f"reference {ref.name} of scene {scene!r} does not exist for these "
+                         f"parameters, so no run can be scored: {exc}") from None
+
+
+def _missing_reference(df) -> str | None:
+    """Why the reference is missing, when converged rows have no error because of it."""
+    if not len(df) or "message" not in df:
+        return None
+    conv = df[df["status"] == "ok"]
+    msgs = conv["message"].astype(str)
+    miss = msgs[msgs.str.contains("reference unavailable: ", regex=False)]
+    if not len(miss):
+        return None
+    return miss.iloc[0].split("reference unavailable: ", 1)[1]
+
+
 def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: str | None = None,
               data=None, workers: int | None = None, scheduler=None, time_limit: float = 300.0,
               progress: bool = True, log=None) -> dict:
@@ -129,6 +156,7 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     physical = s.physical(base)
     fixed_knobs = {k: base[k] for k in fixed if k in s.knobs}
     names = [p.name for p in sc.params]
+    check_reference(scene, ref, base)
 
     if data is not None:
         source = str(data)
@@ -233,6 +261,12 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
             lines.append(f"{scene}: tolerance {tol:g} not reached against {ref.name} by any of "
                          f"{len(df)} runs; the most accurate: {b['model']} with error "
                          f"{b['error']:.3g} at {b['cpu_time_s']:.3g} s.")
+        elif (why := _missing_reference(df)) is not None:
+            n_conv = int((df["status"] == "ok").sum())
+            lines.append(f"{scene}: no error could be computed: the reference {ref.name} is "
+                         f"missing for these parameters ({why}); {n_conv} of {len(df)} runs "
+                         "converged.")
+            evidence["reference_missing"] = why
         else:
             lines.append(f"{scene}: no converged run among {len(df)}.")
         if ref.kind == "analytic":
