@@ -83,7 +83,7 @@ from functools import lru_cache
 
 import sympy as sp
 
-from analytic._checks import finite, positive
+from analytic._checks import finite, magnitude, positive
 
 __all__ = [
     "mid_deflection",
@@ -209,6 +209,24 @@ def _section(E: float, nu: float, h: float, b: float):
     return b * h**3 / 12.0, b * h, E / (2.0 * (1.0 + nu))
 
 
+def check_magnitudes(E: float, nu: float, L: float, h: float, b: float, F: float,
+                     ks: float = 5.0 / 6.0) -> None:
+    """ValueError naming the field when I = b h^3 / 12, A = b h, G or either term of the
+    deflection (F L^3 / (48 E I), F L / (4 ks G A)) leaves [1e-300, 1e300] (double
+    precision with room to spare); the closed forms are then evaluated without overflow."""
+    _check_positive(E=E, L=L, h=h, b=b, ks=ks)
+    _check_nu(nu)
+    F = finite("F", F)
+    magnitude("the second moment of area I = b h^3 / 12", {"h": (h, 3), "b": (b, 1)}, 1 / 12)
+    magnitude("the area A = b h", {"h": (h, 1), "b": (b, 1)})
+    magnitude("the shear modulus G = E / (2 (1 + nu))", {"E": (E, 1)}, 0.5 / (1.0 + nu))
+    magnitude("the bending deflection F L^3 / (48 E I)",
+              {"F": (F, 1), "L": (L, 3), "E": (E, -1), "h": (h, -3), "b": (b, -1)}, 12 / 48)
+    magnitude("the shear deflection F L / (4 ks G A)",
+              {"F": (F, 1), "L": (L, 1), "ks": (ks, -1), "E": (E, -1), "h": (h, -1),
+               "b": (b, -1)}, 2.0 * (1.0 + nu) / 4)
+
+
 def mid_deflection(E: float, nu: float, L: float, h: float, b: float, F: float,
                    ks: float = 5.0 / 6.0) -> float:
     """Signed midspan deflection [m] of the simply supported Timoshenko beam.
@@ -218,9 +236,8 @@ def mid_deflection(E: float, nu: float, L: float, h: float, b: float, F: float,
     F: signed vertical point load at midspan [N] (negative = downward);
     ks: shear correction factor [-] (papers: 5/6).
     """
-    _check_positive(E=E, L=L, h=h, b=b, ks=ks)
-    _check_nu(nu)
-    F = finite("F", F)
+    check_magnitudes(E, nu, L, h, b, F, ks)
+    F = float(F)
     I, A, G = _section(E, nu, h, b)
     return float(_mid_fn()(E, I, G, A, ks, L, F))
 
@@ -229,9 +246,8 @@ def cantilever_tip_deflection(E: float, nu: float, L: float, h: float, b: float,
                               ks: float = 5.0 / 6.0) -> float:
     """Signed linear Timoshenko cantilever tip deflection [m] (same units as
     :func:`mid_deflection`; F is the signed tip load [N])."""
-    _check_positive(E=E, L=L, h=h, b=b, ks=ks)
-    _check_nu(nu)
-    F = finite("F", F)
+    check_magnitudes(E, nu, L, h, b, F, ks)
+    F = float(F)
     I, A, G = _section(E, nu, h, b)
     return float(_cant_fn()(E, I, G, A, ks, L, F))
 

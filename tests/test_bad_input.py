@@ -166,8 +166,18 @@ def test_spinning_extension_at_rest_is_zero():
 
 
 def test_a_converged_run_with_a_non_finite_result_is_not_converged():
-    out, _ = REFERENCES["timoshenko"].execute({"E": "1e-300", "F": "-1e300"})
+    from ancf.common.params import Param
+    from ancf.scenes.base import Scene
+    sc = Scene("overflowing", "a run claiming convergence with an overflowed result",
+               (Param("x", 1e300, float, "-", "a value"),),
+               lambda p: SceneResult(True, "closed form", {"mid_deflection_m": p["x"] * 1e10}))
+    with np.errstate(over="ignore"):
+        out, _ = sc.execute({})
     assert out["converged"] is False and "mid_deflection_m" in out["message"]
+    # the inputs that used to get there in `ancf analytic timoshenko` are now refused up
+    # front, naming the field (issue 22)
+    with pytest.raises(InputError, match=r"^E = 1e-300 is out of range: the shear modulus"):
+        REFERENCES["timoshenko"].execute({"E": "1e-300", "F": "-1e300"})
 
 
 # ---------------------------------------------------------- 8. dependent defaults

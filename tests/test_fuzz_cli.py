@@ -3,7 +3,8 @@
 Every case: the exit code, the expected substrings, no traceback, stdout JSON that a
 strict parser accepts (no NaN / Infinity), and stderr made only of one-line
 ``error:`` / ``warning:`` messages (plus the sweep's own progress log), one
-``error:`` line for bad input.
+``error:`` line for bad input.  A case's optional ``files`` ({name: text}) are written
+into ``{tmp}`` first.
 """
 import json
 from pathlib import Path
@@ -41,6 +42,8 @@ def test_fuzz_covers_every_class_and_command():
 
 @pytest.mark.parametrize("case", CASES, ids=_id)
 def test_fuzz_case(case, capsys, tmp_path):
+    for name, text in case.get("files", {}).items():  # files the case needs, in {tmp}
+        (tmp_path / name).write_text(text)
     argv = [a.replace("{tmp}", str(tmp_path)) for a in case["argv"]]
     try:
         code = main(argv)
@@ -54,7 +57,7 @@ def test_fuzz_case(case, capsys, tmp_path):
     if code == 2:
         assert sum(line.startswith("error: ") for line in lines) == 1, err
     if case["stderr"] is not None:
-        assert case["stderr"] in err
+        assert case["stderr"].replace("{tmp}", str(tmp_path)) in err
     if case["stdout"] is not None:
         assert case["stdout"] in out
     if "--json" in argv and code != 2:

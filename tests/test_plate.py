@@ -147,6 +147,71 @@ def test_navier_double_series_matches_levy_single_series():
         assert w == pytest.approx(navier_plate.levy_centre_deflection(a, b, p=1e3, **STEEL), rel=1e-8)
 
 
+def _double_series(a, b, h, E, nu, p, N):
+    """The former implementation: Navier's double series over odd m, n <= N (computed
+    here, independently of analytic.navier_plate's single series)."""
+    k = np.arange(1, N + 1, 2, dtype=float)
+    m, n = k[:, None], k[None, :]
+    sign = np.where(((m + n) / 2 - 1) % 2 == 0, 1.0, -1.0)
+    s = float(np.sum(sign / (m * n * (m**2 / a**2 + n**2 / b**2) ** 2)))
+    return 16.0 * p / (math.pi**6 * navier_plate.rigidity(E, nu, h)) * s
+
+
+def _double_series_tail(N, a, b):
+    """The former truncation bound of the double series beyond max(m, n) = N."""
+    return max(a, b) ** 4 * ((1.0 + math.log(N)) / (2.0 * N**4) + 1.0 / (8.0 * N**4))
+
+
+# (a, b, largest odd index of the double series): its tail bound at N is below 1e-8 of the sum
+@pytest.mark.parametrize("a, b, N", [(1.0, 1.0, 201), (2.0, 1.0, 321), (1.0, 3.0, 461),
+                                     (0.4, 1.0, 391)])
+def test_single_series_equals_the_former_double_series(a, b, N):
+    ref = _double_series(a, b, p=1e3, N=N, **STEEL)
+    s = abs(ref) * math.pi**6 * navier_plate.rigidity(**{k: STEEL[k] for k in ("E", "nu", "h")}) / 16e3
+    assert _double_series_tail(N, a, b) <= 1e-8 * s  # the reference is good to 1e-8
+    w, terms = navier_plate.centre_deflection(a, b, p=1e3, rtol=1e-12, **STEEL)
+    assert w == pytest.approx(ref, rel=2e-8)
+    assert 1 <= terms <= 25
+    assert navier_plate.centre_deflection(b, a, p=1e3, rtol=1e-12, **STEEL)[0] == pytest.approx(
+        w, rel=1e-14)  # the same plate turned by 90 degrees
+
+
+# Timoshenko & Woinowsky-Krieger, Table 8: w_c = alpha q a^4 / D (b >= a), any nu in D
+@pytest.mark.parametrize("b_over_a, alpha, tol", [(1.0, 0.00406235, 1e-6), (2.0, 0.01013, 5e-4),
+                                                  (1e9, 0.01302, 5e-4)])
+def test_centre_deflection_coefficient_matches_timoshenko(b_over_a, alpha, tol):
+    a, q, h, E, nu = 0.7, 2.5e3, 0.01, 2.1e11, 0.3
+    D = E * h**3 / (12 * (1 - nu**2))
+    w, _ = navier_plate.centre_deflection(a, b_over_a * a, h, E, nu, q, rtol=1e-14)
+    assert w / (q * a**4 / D) == pytest.approx(alpha, rel=tol)
+    assert navier_plate.coefficient(b_over_a) == pytest.approx(alpha, rel=tol)
+    # the infinite strip: 5 / 384 = 0.0130208..., the beam of unit width on its short span
+    if b_over_a > 1e6:
+        assert w / (q * a**4 / D) == pytest.approx(5 / 384, rel=1e-12)
+
+
+@pytest.mark.parametrize("rtol", [1e-2, 1e-10, 1e-14])
+@pytest.mark.parametrize("a, b", [(1.0, 1.0), (10.0, 1.0), (1.0, 1e3), (1e-70, 1e3), (1e3, 1e-3)])
+def test_series_cost_is_bounded_for_every_aspect_ratio(a, b, rtol):
+    """The work is the number of terms: at most 25 whatever the ratio (the former double
+    series needed N^2 / 4 terms with N growing like the aspect ratio)."""
+    w, terms = navier_plate.centre_deflection(a, b, p=1e3, rtol=rtol, **STEEL)
+    assert math.isfinite(w) and w > 0 and 1 <= terms <= 25
+    w_tight, _ = navier_plate.centre_deflection(a, b, p=1e3, rtol=1e-14, **STEEL)
+    assert w == pytest.approx(w_tight, rel=rtol)
+
+
+@pytest.mark.parametrize("kw, field, what", [
+    (dict(a=1e300, b=1e300), "a", "overflows"), (dict(a=1e-300), "a", "underflows"),
+    (dict(b=1e-300), "b", "underflows"), (dict(h=1e-300), "h", "underflows"),
+    (dict(h=1e300), "h", "overflows"), (dict(E=1e300, h=1e2), "E", "overflows"),
+    (dict(p=1e-300, E=1e300), "p", "underflows")])
+def test_out_of_range_magnitudes_are_refused_naming_the_field(kw, field, what):
+    args = dict(a=1.0, b=1.0, p=1e3, **STEEL) | kw
+    with pytest.raises(ValueError, match=rf"^{field} = .* is out of range: .*{what} double"):
+        navier_plate.centre_deflection(**args)
+
+
 def test_simply_supported_plate_converges_to_navier():
     """Scene plate-square per mesh (ancf.checks.elements3d.plate_convergence)."""
     rows = checks.plate_convergence((4, 8, 16))

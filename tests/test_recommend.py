@@ -179,3 +179,46 @@ def test_recommend_belt3d_answers_with_bechtel_as_reference(capsys):
     a = json.loads(out)
     assert rc == 0 and a["found"] and a["reference"] == "bechtel" and a["error"] <= 0.02
     assert a["evidence"]["runs"] == 9 and "contact points per plate" in a["message"]
+
+
+def test_recommend_refuses_when_the_analytic_reference_cannot_exist(capsys):
+    """Bechtel's belt cannot transmit 10 N m (at most 3.88968 N m at the scene's
+    defaults): one error line naming the field and the range, before any sweep (no
+    sweep file appears in the cache)."""
+    from analytic import bechtel
+    cached = set((references.cache_root() / "recommend").glob("belt3d-*"))
+    rc, out, err = _cli(capsys, "recommend", "belt3d", "--tol", "1e-2", "--set", "Ta_max=10")
+    assert rc == 2 and out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: reference bechtel of scene 'belt3d' "
+                                                   "does not exist"), err
+    assert "Ta_max = 10.0 N m is out of range; allowed: [0, 3.88968] N m" in lines[0]
+    assert set((references.cache_root() / "recommend").glob("belt3d-*")) == cached
+    # the bound quoted is Bechtel's own largest torque at the scene's parameters
+    p = references.spec("belt3d")
+    from ancf.scenes import SCENES
+    base = SCENES["belt3d"].resolve({})
+    _, top = bechtel.steady({"k": base["E"] * base["h"] * base["width"], "R": base["R"],
+                             "omega": base["omega_final"], "mu": base["mu"], "T_i": base["T_i"],
+                             "T_a": 0.0, "rhoA": base["rho"] * base["h"] * base["width"]})
+    assert f"{top:.6g}" == "3.88968" and p.default_reference == "bechtel"
+
+
+def test_recommend_says_the_reference_is_missing_not_no_converged_run(tmp_path, capsys):
+    """Rows that converged but carry no error because the reference failed: the answer
+    names the missing reference, not 'no converged run'."""
+    import pandas as pd
+    out = tmp_path / "bar.csv"
+    run_sweep("axial-bar", {"n_elements": [1, 2]}, out=out, workers=1, progress=False,
+              log=lambda m: None)
+    df = pd.read_csv(out)
+    assert (df["status"] == "ok").all()
+    df["error"] = float("nan")
+    df["message"] = df["message"] + "; reference unavailable: the test's reason"
+    df.to_csv(out, index=False)
+    res = recommend("axial-bar", 1e-3, data=out)
+    assert res["exit_code"] == 3 and not res["found"]
+    assert "reference" in res["message"] and "missing" in res["message"]
+    assert "the test's reason" in res["message"] and "no converged run" not in res["message"]
+    assert "2 of 2 runs converged" in res["message"]
+    assert res["evidence"]["reference_missing"] == "the test's reason"

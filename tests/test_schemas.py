@@ -16,7 +16,7 @@ FAILING = {"simply-supported": {"max_iterations": 1, "load_steps": 1},
            "axial-bar": {"max_iterations": 1, "load_steps": 1, "F": 5e9},
            "pendulum": {"max_steps": 5}, "spinning-beam": {"max_steps": 5},
            "belt-free-static": {"max_iterations": 2}, "belt2d": {"max_steps": 5, "t_end": 0.1},
-           "plate-square": {"h": 1e-300},
+           "plate-square": {"a": 1e70},  # the stiffness overflows: a non-finite deflection
            "plate-strip": {"max_iterations": 1, "load_steps": 1},
            "beam3d-cantilever": {"max_iterations": 1, "load_steps": 1},
            "belt3d": {"max_steps": 5, "t_end": 0.1}}

@@ -29,30 +29,27 @@ SAME = ["key", "element", "integration", "n_elements", "h", "nu", "F", "status",
         "error", "res_tip_x", "res_tip_y", "res_newton_iterations", "steps"]
 
 
-def _cli(*argv):
-    env = dict(os.environ)
+def _cli(*argv, **env_extra):
+    env = dict(os.environ, **env_extra)
     return subprocess.Popen([sys.executable, "-m", "ancf.cli", *argv], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, env=env)
 
 
 @pytest.fixture(scope="module")
 def interrupted_and_resumed(workdir):
-    """Start the CLI sweep with 2 workers, interrupt it (SIGINT) once some rows are done,
-    then resume it; returns (rows journaled before the interrupt, final frame, stderr)."""
+    """Start the CLI sweep with 2 workers, interrupted (SIGINT, sent by the driver to
+    itself: ANCF_SWEEP_INTERRUPT_AFTER) once exactly 30 rows are journaled, whatever the
+    timing, then resume it; returns (rows kept from before the interrupt, final frame,
+    stderr, summary, seconds)."""
     out = workdir / "cantilever.parquet"
     argv = ["sweep", "cantilever", *sum((["--grid", g] for g in GRID), []), "--workers", "2",
             "--out", str(out)]
-    p = _cli(*argv)
-    jp = journal_path(out)
-    deadline = time.time() + 60
-    while time.time() < deadline:
-        if jp.exists() and len(jp.read_text().splitlines()) >= 30:
-            break
-        time.sleep(0.05)
-    p.send_signal(signal.SIGINT)
-    p.communicate(timeout=60)
+    p = _cli(*argv, ANCF_SWEEP_INTERRUPT_AFTER="30")
+    _, stderr = p.communicate(timeout=300)  # a hang guard, not a timing
+    assert p.returncode == 130 and "interrupted: the finished rows are in" in stderr, stderr
     before = read_rows(out)
-    assert 30 <= len(before) < N_RUNS, "the interrupt should land mid-sweep"
+    assert len(before) == 30, "the interrupt lands after exactly 30 rows"
+    assert not journal_path(out).exists()  # folded into the file
     t0 = time.time()
     p = _cli(*argv, "--json")
     stdout, stderr = p.communicate(timeout=120)
@@ -166,3 +163,109 @@ def test_cli_sweep_bad_input_exits_2(capsys, tmp_path):
     assert main(["sweep", "cantilever", "--grid", "nu=0", "--out", str(tmp_path / "x.txt")]) == 2
     assert main(["sweep", "cantilever", "--grid", "nu=0", "--reference", "nope",
                  "--out", str(tmp_path / "x.csv")]) == 2
+
+
+def _children(pid):
+    """Pids of the live (not zombie) processes whose parent is ``pid`` (Linux /proc)."""
+    out = []
+    for d in Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                stat = (d / "stat").read_text()
+            except OSError:
+                continue
+            fields = stat.rsplit(")", 1)[1].split()
+            if fields[0] != "Z" and int(fields[1]) == pid:
+                out.append(int(d.name))
+    return out
+
+
+def _alive(pid):
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return False
+    return stat.rsplit(")", 1)[1].split()[0] != "Z"
+
+
+# A driver that starts one sweep worker, hands it a run of about an hour (10^7
+# generalized-alpha steps of a 128-element pendulum; no reference computed), says the
+# worker's pid, and waits to be killed.
+_DRIVER = """
+import time
+from ancf.scenes import SCENES
+from ancf.study.sweep import _Runner
+p = SCENES["pendulum"].resolve({"integrator": "generalized-alpha", "dt": "1e-6",
+                                "t_end": "10", "n_elements": "128"})
+task = {"index": 0, "scene": "pendulum", "reference": "none", "ref_values": None,
+        "ref_error": "not computed", "params": p, "key": "long"}
+r = _Runner()
+r.wait_ready()
+r.send(task)
+print(r.proc.pid, flush=True)
+time.sleep(600)
+"""
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs Linux /proc")
+@pytest.mark.parametrize("pdeathsig", ["1", "0"])  # "0": the watchdog thread alone
+def test_a_computing_worker_ends_when_its_driver_is_killed(pdeathsig):
+    """SIGKILL the driver while its worker is inside a run of hours: the worker is gone
+    within a bounded wait (polled, 20 s at most; the watchdog polls every 0.5 s).  Its
+    stdin's end of file alone would not stop it before the run ends."""
+    env = dict(os.environ, ANCF_SWEEP_PDEATHSIG=pdeathsig)
+    p = subprocess.Popen([sys.executable, "-c", _DRIVER], stdout=subprocess.PIPE,
+                         stderr=subprocess.DEVNULL, text=True, env=env)
+    try:
+        worker = int(p.stdout.readline())  # hang guard: the suite's own timeout
+        time.sleep(1.0)  # the task is in the worker's pipe; let it start computing
+        assert _alive(worker) and _children(p.pid) == [worker]
+        p.send_signal(signal.SIGKILL)
+        p.wait(timeout=30)
+        for _ in range(200):
+            if not _alive(worker):
+                break
+            time.sleep(0.1)
+        alive = _alive(worker)
+        if alive:  # do not leave it behind when the test fails
+            os.kill(worker, signal.SIGKILL)
+        assert not alive, "the worker outlived its driver"
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait()
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs Linux /proc")
+def test_sweep_workers_end_when_the_cli_is_killed(tmp_path):
+    """The user's report: SIGKILL `ancf sweep` mid-sweep: both its workers are gone within
+    a bounded wait."""
+    out = tmp_path / "killed.csv"
+    p = subprocess.Popen([sys.executable, "-m", "ancf.cli", "sweep", "cantilever",
+                          *sum((["--grid", g] for g in GRID), []), "--workers", "2",
+                          "--out", str(out), "--no-progress"],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        jp = journal_path(out)
+        for _ in range(1200):  # until both workers run and a row is done (hang guard only)
+            workers = _children(p.pid)
+            if len(workers) == 2 and jp.exists() and jp.read_text().strip():
+                break
+            assert p.poll() is None, "the sweep ended before it could be killed"
+            time.sleep(0.1)
+        else:
+            pytest.fail("the sweep did not start its workers")
+        p.send_signal(signal.SIGKILL)
+        p.wait(timeout=30)
+        for _ in range(200):
+            if not any(_alive(w) for w in workers):
+                break
+            time.sleep(0.1)
+        left = [w for w in workers if _alive(w)]
+        for w in left:
+            os.kill(w, signal.SIGKILL)
+        assert not left, f"workers {left} outlived their driver"
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait()

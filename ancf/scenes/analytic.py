@@ -8,7 +8,7 @@ import numpy as np
 from analytic import bechtel, navier_plate, reissner, timoshenko
 from analytic.dynamics_refs import rigid_pendulum, spinning_extension
 from ancf.common.inputs import check_sampling, following, intervals
-from ancf.common.params import Param
+from ancf.common.params import InputError, Param
 from ancf.scenes.base import Scene, SceneResult
 
 _SECTION = (
@@ -41,8 +41,21 @@ def _bechtel(p):
 def _navier(p):
     w, N = navier_plate.centre_deflection(p["a"], p["b"], p["h"], p["E"], p["nu"], p["p"],
                                           rtol=p["rtol"])
-    return SceneResult(True, f"Navier double series, odd indices up to {N} (tail bound below "
-                       f"rtol = {p['rtol']:g})", {"center_deflection_m": w, "terms": N})
+    return SceneResult(True, f"Navier's double series summed in closed form over one index "
+                       f"(Levy's single series): {N} term(s) of the correction series along the "
+                       f"shorter side (tail bound below rtol = {p['rtol']:g})",
+                       {"center_deflection_m": w, "terms": N})
+
+
+def _magnitudes(check, *fields):
+    """A scene check: ``check(*p[fields])`` with its ValueError (a derived quantity out of
+    double precision, the field named) as InputError."""
+    def run(p):
+        try:
+            check(*(p[f] for f in fields))
+        except ValueError as exc:
+            raise InputError(str(exc)) from None
+    return run
 
 
 def _extension(p):
@@ -90,7 +103,8 @@ def _with(params, **defaults):
 REFERENCES = {
     "timoshenko": Scene(
         "timoshenko", "Simply supported Timoshenko beam, midspan load (SymPy-derived).",
-        _SECTION + (Param("F", -1000.0, float, "N", "vertical midspan force"),), _timoshenko),
+        _SECTION + (Param("F", -1000.0, float, "N", "vertical midspan force"),), _timoshenko,
+        _magnitudes(timoshenko.check_magnitudes, "E", "nu", "L", "h", "b", "F", "ks")),
     "reissner": Scene(
         "reissner", "Geometrically exact (Reissner) cantilever, dead tip load (BVP, scipy).",
         _with(_SECTION, nu=0.3) + (Param("F", lambda v: -5e8 * v["h"] ** 3, float, "N",
@@ -100,7 +114,9 @@ REFERENCES = {
         "(thesis 4.1; Model 2).", bechtel.PARAMS, _bechtel),
     "navier-plate": Scene(
         "navier-plate", "Simply supported Kirchhoff plate under uniform pressure: Navier series "
-        "centre deflection (D = E h^3 / (12 (1 - nu^2))).", _NAVIER, _navier),
+        "centre deflection, summed as Levy's single series; 'terms' counts its correction "
+        "terms (D = E h^3 / (12 (1 - nu^2))).", _NAVIER, _navier,
+        _magnitudes(navier_plate.check_magnitudes, "a", "b", "h", "E", "nu", "p")),
 }
 
 DYNAMIC_REFERENCES = {

@@ -7,8 +7,9 @@ boundary, the in-plane coordinates are fixed.  Linear (small-deflection) static 
 at the flat reference with a sparse direct solver (``ancf.models.plate``): valid while
 the centre deflection is small against the thickness (h/47 at the defaults).
 ``center_deflection_m`` is signed, positive along the pressure; it is held against
-Navier's double series (``ancf analytic navier-plate``, Kirchhoff's rigidity
-D = E h^3 / (12 (1 - nu^2))).
+Navier's double series (``ancf analytic navier-plate``, summed as Lévy's single series;
+Kirchhoff's rigidity D = E h^3 / (12 (1 - nu^2))).  Inputs whose rigidity, a^4 or
+deflection scale p a^4 / D leave double precision are refused, naming the field.
 """
 from __future__ import annotations
 
@@ -35,6 +36,10 @@ def params() -> tuple:
 
 
 def check(p: dict) -> None:
+    try:  # derived quantities in double precision (the Navier reference and the stiffness)
+        navier_plate.check_magnitudes(p["a"], p["a"], p["h"], p["E"], p["nu"], p["p"])
+    except ValueError as exc:
+        raise InputError(str(exc)) from None
     if p["n_elements"] % 2:
         raise InputError(f"n_elements = {p['n_elements']} is out of range; allowed: an even "
                          "integer in [2, 128] (the centre must be a node)")

@@ -19,10 +19,11 @@ import numpy as np
 import pandas as pd
 
 from ancf.study.cost import calibrate, counts, with_work, work
-from ancf.study.references import cache_root, model_physics, spec, stable_hash
+from ancf.study.references import (ReferenceFailed, cache_root, model_physics, spec,
+                                   stable_hash)
 from ancf.study.selection import WORK_TIE, cheapest_first
 from ancf.common.params import InputError
-from ancf.study.sweep import read_rows, rows_for, run_sweep
+from ancf.study.sweep import check_table, read_rows, rows_for, run_sweep
 
 MODEL_KEYS = ("element", "integration", "n_elements", "integrator", "rtol", "atol", "dt",
               "load_steps")
@@ -93,6 +94,50 @@ def _restrict(grids, fixed_knobs: dict):
     return out
 
 
+def check_data(data) -> None:
+    """``--data`` checked before anything runs: an existing, readable sweep file (one line
+    naming the path and what is wrong)."""
+    path = Path(data)
+    if not path.exists():
+        anc = path.parent
+        while str(anc) not in ("", ".", "/") and not anc.exists():
+            anc = anc.parent
+        if anc.exists() and not anc.is_dir():
+            raise InputError(f"--data {str(data)!r}: no such file ({str(anc)!r} is a file, "
+                             "not a directory)")
+        raise InputError(f"--data {str(data)!r}: no such file")
+    if path.suffix not in (".parquet", ".csv"):
+        raise InputError(f"--data {str(data)!r}: the file name must end in .parquet or .csv "
+                         "(a file written by `ancf sweep`)")
+    check_table(path, "--data")
+
+
+def check_reference(scene: str, ref, params: dict) -> None:
+    """Before any run: an analytic reference must exist for these physical parameters
+    (e.g. Bechtel's belt cannot transmit more than its largest torque); else InputError
+    naming why.  Self-references (a much finer model) are not run here: a failure of
+    theirs shows in the rows and the message."""
+    if ref.kind != "analytic":
+        return
+    try:
+        ref.values(params)
+    except (ReferenceFailed, ValueError) as exc:
+        raise InputError(f"reference {ref.name} of scene {scene!r} does not exist for these "
+                         f"parameters, so no run can be scored: {exc}") from None
+
+
+def _missing_reference(df) -> str | None:
+    """Why the reference is missing, when converged rows have no error because of it."""
+    if not len(df) or "message" not in df:
+        return None
+    conv = df[df["status"] == "ok"]
+    msgs = conv["message"].astype(str)
+    miss = msgs[msgs.str.contains("reference unavailable: ", regex=False)]
+    if not len(miss):
+        return None
+    return miss.iloc[0].split("reference unavailable: ", 1)[1]
+
+
 def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: str | None = None,
               data=None, workers: int | None = None, scheduler=None, time_limit: float = 300.0,
               progress: bool = True, log=None) -> dict:
@@ -111,11 +156,11 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     physical = s.physical(base)
     fixed_knobs = {k: base[k] for k in fixed if k in s.knobs}
     names = [p.name for p in sc.params]
+    check_reference(scene, ref, base)
 
     if data is not None:
         source = str(data)
-        if not Path(data).exists():
-            raise InputError(f"--data {source!r}: no such file")
+        check_data(data)
         df = read_rows(data)
         if len(df) and "reference" in df:
             df = df[df["reference"].astype(str) == ref.name]
@@ -216,6 +261,12 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
             lines.append(f"{scene}: tolerance {tol:g} not reached against {ref.name} by any of "
                          f"{len(df)} runs; the most accurate: {b['model']} with error "
                          f"{b['error']:.3g} at {b['cpu_time_s']:.3g} s.")
+        elif (why := _missing_reference(df)) is not None:
+            n_conv = int((df["status"] == "ok").sum())
+            lines.append(f"{scene}: no error could be computed: the reference {ref.name} is "
+                         f"missing for these parameters ({why}); {n_conv} of {len(df)} runs "
+                         "converged.")
+            evidence["reference_missing"] = why
         else:
             lines.append(f"{scene}: no converged run among {len(df)}.")
         if ref.kind == "analytic":

@@ -518,9 +518,16 @@ BELT3D_KNOBS = ("n_elements", "contact_points", "integrator", "dt", "rho_inf", "
 def _bechtel(p):
     """Bechtel's steady belt (analytic.bechtel, inertia included) for the scene's drive."""
     from analytic import bechtel
-    b, top = bechtel.steady({"k": p["E"] * p["h"] * p["width"], "R": p["R"],
-                             "omega": p["omega_final"], "mu": p["mu"], "T_i": p["T_i"],
-                             "T_a": p["Ta_max"], "rhoA": p["rho"] * p["h"] * p["width"]})
+    try:
+        b, top = bechtel.steady({"k": p["E"] * p["h"] * p["width"], "R": p["R"],
+                                 "omega": p["omega_final"], "mu": p["mu"], "T_i": p["T_i"],
+                                 "T_a": p["Ta_max"], "rhoA": p["rho"] * p["h"] * p["width"]})
+    except ValueError as exc:  # Bechtel's names -> the scene's (T_a is Ta_max, omega omega_final)
+        text = str(exc)
+        for theirs, ours in (("T_a = ", "Ta_max = "), ("omega = ", "omega_final = ")):
+            if text.startswith(theirs):
+                text = ours + text[len(theirs):]
+        raise type(exc)(text) from None
     return bechtel.summary(b, top)
 
 

@@ -77,6 +77,9 @@ def parse_grid(scene: str, items) -> dict:
         if k not in params:
             raise InputError(f"{k}: unknown parameter of scene {scene!r}; allowed: "
                              f"{', '.join(params)}")
+        if k in grid:
+            raise InputError(f"--grid {k}: given twice; allowed: one --grid per parameter "
+                             f"(list every value in it: {k}=v1,v2,...)")
         vals = [s.strip() for s in (v.split(";") if ";" in v else v.split(",")) if s.strip()]
         if not vals:
             raise InputError(f"--grid {item!r}: no values")
@@ -217,9 +220,45 @@ def run_case(task: dict) -> dict:
     return row
 
 
+PARENT_ENV = "ANCF_SWEEP_PARENT"  # the driver's pid, given to its workers
+WATCH_S = 0.5  # the watchdog's polling interval (s)
+
+
+def _die_with_parent(parent: int | None, pdeathsig: bool = True) -> None:
+    """End this worker when its driver ends, however it ends (even SIGKILL): Linux's
+    ``prctl(PR_SET_PDEATHSIG, SIGKILL)``, and on every platform a daemon thread that
+    ends the process once its parent is no longer ``parent`` (reparented: the driver
+    died), checked every WATCH_S seconds, also while the main thread computes.  (The
+    driver also closes the worker's stdin, whose end of file stops the task loop.)
+    ``ANCF_SWEEP_PDEATHSIG=0`` in a worker's environment leaves the watchdog alone (so
+    that the tests can check it on its own)."""
+    if parent is None:
+        return
+    if pdeathsig and sys.platform.startswith("linux"):
+        try:
+            import ctypes
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(1, signal.SIGKILL, 0, 0, 0)  # 1 = PR_SET_PDEATHSIG
+        except (OSError, AttributeError):
+            pass
+    if os.getppid() != parent:  # died before the prctl took effect
+        os._exit(1)
+
+    def watch():
+        while True:
+            time.sleep(WATCH_S)
+            if os.getppid() != parent:
+                os._exit(1)
+    threading.Thread(target=watch, name="ancf-parent-watchdog", daemon=True).start()
+
+
 def _worker_main() -> int:
     """``python -m ancf.study.sweep --worker``: read tasks (JSON lines) on stdin, write rows on
-    the original stdout; anything the scenes print goes to stderr."""
+    the original stdout; anything the scenes print goes to stderr.  Ends with its driver
+    (:func:`_die_with_parent`)."""
+    parent = os.environ.get(PARENT_ENV)
+    _die_with_parent(int(parent) if parent and parent.isdigit() else None,
+                     pdeathsig=os.environ.get("ANCF_SWEEP_PDEATHSIG", "1") != "0")
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the driver decides when to stop
     out = os.fdopen(os.dup(1), "w")
     os.dup2(2, 1)
@@ -249,6 +288,7 @@ class _Runner:
         env = dict(os.environ, **_ENV)
         root = str(REPO)
         env["PYTHONPATH"] = root + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
+        env[PARENT_ENV] = str(os.getpid())
         self.proc = subprocess.Popen([sys.executable, "-m", "ancf.study.sweep", "--worker"],
                                      stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                      stderr=self.err, env=env, start_new_session=True)
@@ -514,10 +554,66 @@ def _write_table(df: pd.DataFrame, path: Path) -> None:
     os.replace(tmp, path)
 
 
+SWEEP_COLUMNS = ("key", "status")  # every sweep file has them
+
+
+def check_table(path, what: str = "--out") -> pd.DataFrame:
+    """The rows of an existing sweep file, or InputError (one line naming ``what`` and the
+    path) when it cannot be read or is not a sweep file (no ``key`` / ``status`` column)."""
+    path = Path(path)
+    if path.is_dir():
+        raise InputError(f"{what} {str(path)!r}: is a directory; allowed: a .parquet or .csv file")
+    try:
+        df = _read_table(path)
+    except pd.errors.EmptyDataError:
+        raise InputError(f"{what} {str(path)!r}: the file is empty, not a sweep file") from None
+    except PermissionError:
+        raise InputError(f"{what} {str(path)!r}: the file cannot be read (permission "
+                         "denied)") from None
+    except Exception as exc:  # noqa: BLE001 - pyarrow / parser errors: not the format
+        kind = "Parquet" if path.suffix == ".parquet" else "CSV"
+        first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+        raise InputError(f"{what} {str(path)!r}: not a readable {kind} file ({first[:200]})") from None
+    missing = [c for c in SWEEP_COLUMNS if c not in df]
+    if missing:
+        raise InputError(f"{what} {str(path)!r}: not a sweep file (no {', '.join(missing)} "
+                         f"column{'s' if len(missing) > 1 else ''}); allowed: a file written by "
+                         "`ancf sweep`" + (", or a new file name" if what == "--out" else ""))
+    return df
+
+
 def _check_out(out) -> Path:
+    """``out`` as a Path, checked before any run: its suffix, a writable place for it
+    (every existing ancestor a directory, the nearest one writable) and, when it exists, a
+    readable sweep file of the same format.  Errors: one line naming the path."""
     out = Path(out)
     if out.suffix not in (".parquet", ".csv"):
         raise InputError(f"--out {str(out)!r}: the file name must end in .parquet or .csv")
+    parent = out.parent if str(out.parent) else Path(".")
+    anc = parent
+    while not anc.exists():
+        if anc.is_symlink() or anc == anc.parent:
+            break
+        anc = anc.parent
+    if anc.exists() and not anc.is_dir():
+        raise InputError(f"--out {str(out)!r}: {str(anc)!r} is a file, not a directory")
+    if not anc.exists():
+        raise InputError(f"--out {str(out)!r}: no existing directory to create it in")
+    try:  # a real write, not os.access: root, read-only mounts and /proc answer honestly
+        parent.mkdir(parents=True, exist_ok=True)
+        fd, probe = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".probe", dir=parent)
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        raise InputError(f"--out {str(out)!r}: cannot write in {str(parent)!r} "
+                         f"({exc.strerror or exc})") from None
+    if out.exists() or out.is_symlink():
+        if out.is_dir():
+            raise InputError(f"--out {str(out)!r}: is a directory; allowed: a .parquet or .csv "
+                             "file")
+        if not os.access(out, os.W_OK) and os.access(out, os.F_OK):
+            raise InputError(f"--out {str(out)!r}: the file is not writable")
+        check_table(out, "--out")
     return out
 
 
@@ -617,12 +713,15 @@ def run_sweep(scene: str, grids=None, *, out, fixed: dict | None = None,
             else:
                 gen = _run_local(todo, workers or os.cpu_count() or 1, time_limit)
             bar = _bar(len(todo), scene, progress)
+            stop = _interrupt_after()
             with open(jp, "a") as journal:
-                for row in gen:
+                for n, row in enumerate(gen, 1):
                     row["session"] = session
                     journal.write(json.dumps(row) + "\n")
                     journal.flush()
                     bar.update(1)
+                    if n == stop:  # a Ctrl-C after exactly `stop` rows (tests, demos)
+                        os.kill(os.getpid(), signal.SIGINT)
             bar.close()
     finally:
         if gen is not None:
@@ -635,6 +734,17 @@ def run_sweep(scene: str, grids=None, *, out, fixed: dict | None = None,
             jp.unlink()
     log(summary(df, scene, out, time.perf_counter() - t_start, session))
     return df
+
+
+INTERRUPT_ENV = "ANCF_SWEEP_INTERRUPT_AFTER"
+
+
+def _interrupt_after() -> int | None:
+    """``ANCF_SWEEP_INTERRUPT_AFTER=N``: the driver sends itself SIGINT (as Ctrl-C does)
+    once N rows of this call are journaled, so an interrupted sweep is reproducible
+    without timing; unset (or not a positive integer): never."""
+    v = os.environ.get(INTERRUPT_ENV, "")
+    return int(v) if v.isdigit() and int(v) > 0 else None
 
 
 class _NoBar:
