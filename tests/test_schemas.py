@@ -89,7 +89,7 @@ def test_schema_names_as_the_readme_writes_them():
 def test_validate_refuses_swapped_arguments_and_accepts_a_name():
     sch = schema("run cantilever")
     out = {"scene": "cantilever", "params": {}, "converged": True, "message": "",
-           "results": {}, "cpu_time_s": 0.0, "warnings": []}
+           "results": {}, "cpu_time_s": 0.0, "compile_cpu_s": 0.0, "warnings": []}
     errors = validate(out, sch)  # missing params and results: violations, not an exception
     assert errors and all(e.startswith("$.") for e in errors)
     assert validate(out, "run cantilever") == errors
