@@ -146,7 +146,7 @@ def band_group(pattern, group) -> GreenBand:
 def assemble_band(group, z, gq, want_K, grad, K):
     """grad = T^T dU/dq at q = T z + gq (N) and, if want_K, K = T^T (d2U/dq2) T (N/m,
     band storage)."""
-    qsel, zsel, dofmap, E0, BX, BY, dX0, dY0, w, C, cidx, vidx, midx = group
+    qsel, zsel, dofmap = group.qsel, group.zsel, group.dofmap  # a tuple or its struct
     q = gq.copy()
     for i in range(qsel.size):
         q[qsel[i]] += z[zsel[i]]
@@ -157,11 +157,12 @@ def assemble_band(group, z, gq, want_K, grad, K):
             E[e, a // 2, a % 2] = q[dofmap[e, a]]
     ge = np.zeros((nel, nd))
     Ke = np.zeros((nel, nd, nd)) if want_K else np.zeros((0, 0, 0))
-    gradient_tangent(E, E0, BX, BY, dX0, dY0, w, C, cidx, want_K, ge, Ke)
+    gradient_tangent(E, group.E0, group.BX, group.BY, group.dX0, group.dY0, group.w, group.C,
+                     group.cidx, want_K, ge, Ke)
     grad[:] = 0.0
     if want_K:
         K[:, :] = 0.0
-    scatter(ge, Ke, vidx, midx, grad, K, want_K)
+    scatter(ge, Ke, group.vidx, group.midx, grad, K, want_K)
 
 
 class GreenPlanar:

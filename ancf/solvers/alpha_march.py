@@ -46,6 +46,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from ancf.common.dispatch import as_struct
+
 DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
 #: contraction ratio above which the kept iteration matrix is refreshed
 REFRESH_RATIO = 0.5
@@ -185,6 +187,7 @@ def march(ts, k, k_stop, st, system, hf, cf, count, tol, max_iter, limit, max_st
     """Steps ts[k] -> ts[k_stop] (s); returns (status, step index reached).  The states
     after the steps i with slot[i] >= 0 go to out_x/out_v[slot[i]]; at most max_steps
     steps are counted in count[4]."""
+    system = as_struct(system)
     x, v = st[0], st[1]
     backup = (x.copy(), v.copy(), st[2].copy(), st[3].copy())
     while k < k_stop:
