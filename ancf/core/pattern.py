@@ -16,6 +16,8 @@ import numpy as np
 import scipy.sparse as sp
 from numba import njit
 
+from ancf.common.leaf import leaf
+
 
 #: band storage is used while it holds at most this many times the nonzeros
 BAND_FILL_LIMIT = 8.0
@@ -26,7 +28,7 @@ def width(kl: int) -> int:
     return 3 * kl + 1
 
 
-@njit(cache=True)
+@leaf
 def scatter(ge, Ke, vidx, midx, vec, mat, want_K):
     """vec[vidx] += ge and, if want_K, mat.flat[midx] += Ke (negative index: dropped)."""
     nel, nd = ge.shape

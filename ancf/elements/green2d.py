@@ -30,10 +30,11 @@ import numpy as np
 from numba import njit
 
 from ancf.common.dispatch import implements
+from ancf.common.leaf import leaf
 from ancf.core.pattern import assemble_group, scatter
 
 
-@njit(cache=True)
+@leaf
 def _point_strain(E, E0, BX, BY, dX0, dY0, e, q, n):
     ux0 = ux1 = uy0 = uy1 = 0.0
     for k in range(n):

@@ -27,6 +27,7 @@ import numpy as np
 from numba import njit
 
 from ancf.elements import _generated as shape_gen
+from ancf.common.leaf import leaf
 from ancf.elements import _plate_generated as gen
 from ancf.elements.compiled_element import CompiledElement, check, check_material
 from ancf.core.quadrature import gauss01
@@ -34,7 +35,7 @@ from ancf.core.quadrature import gauss01
 _DERIVS = ("x", "y", "xx", "xy", "yy")  # point variables: r_x, r_y, r_xx, r_xy, r_yy
 
 
-@njit(cache=True)
+@leaf
 def _point(B, E, e, q, nd, v):
     """v[3 d + c] = (r_d)_c, d over the first nd of (x, y, xx, xy, yy), at point q of element e."""
     v[:] = 0.0
@@ -63,17 +64,20 @@ def energy(E, data):
     return out
 
 
-@njit(cache=True)
+@leaf
 def _density(v, k, bending, want_K, gw, H, gb, Hb):
     """Gradient gw (15,) and, if want_K, Hessian H (15, 15) of the point density."""
     gw[:] = 0.0
     H[:] = 0.0
     if want_K:
         gen.membrane_hess(v[0], v[1], v[2], v[3], v[4], v[5], k, gb[:6], Hb[:6, :6])
-        H[:6, :6] += Hb[:6, :6]
+        for i in range(6):
+            for j in range(6):
+                H[i, j] += Hb[i, j]
     else:
         gen.membrane_grad(v[0], v[1], v[2], v[3], v[4], v[5], k, gb[:6])
-    gw[:6] += gb[:6]
+    for i in range(6):
+        gw[i] += gb[i]
     if not bending:
         return
     if want_K:
@@ -86,7 +90,7 @@ def _density(v, k, bending, want_K, gw, H, gb, Hb):
     gw += gb
 
 
-@njit(cache=True)
+@leaf
 def _add_point(Bq, ww, nd, gw, H, want_K, ge, Ke, T):
     """ge += ww J^T gw and, if want_K, Ke += ww J^T H J, J = dv/de (sparse in Bq)."""
     ns = Bq.shape[1]

@@ -47,6 +47,7 @@ import numpy as np
 from numba import njit
 
 from ancf.common.dispatch import as_struct
+from ancf.common.leaf import leaf
 
 DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
 #: contraction ratio above which the kept iteration matrix is refreshed
@@ -83,36 +84,43 @@ def system_tests(system):
     raise NotImplementedError("resolved at compile time by the type of system")
 
 
-@njit(cache=True)
-def kinematics(acc1, st, h, cf, moving=True):
-    """(q_{n+1}, q'_{n+1}, a_{n+1}) of the recurrence for the acceleration acc1 (without
-    ``moving``, q'_n stands in for q'_{n+1}: a residual that does not read it)."""
+@leaf
+def _trial(acc1, st, h, cf, moving, x1, v1, a1):
+    """x1, v1, a1 = (q_{n+1}, q'_{n+1}, a_{n+1}) of the recurrence for the acceleration
+    acc1, in place (without ``moving``, v1 is left as it is: a residual that does not
+    read it)."""
     x, v, acc, a = st
     am, af, gamma, beta = cf
-    a1 = ((1 - af) * acc1 + af * acc - am * a) / (1 - am)
-    x1 = x + h * v + h * h * ((0.5 - beta) * a + beta * a1)
-    v1 = v + h * ((1 - gamma) * a + gamma * a1) if moving else v
+    for i in range(x.size):
+        a1[i] = ((1 - af) * acc1[i] + af * acc[i] - am * a[i]) / (1 - am)
+        x1[i] = x[i] + h * v[i] + h * h * ((0.5 - beta) * a[i] + beta * a1[i])
+        if moving:
+            v1[i] = v[i] + h * ((1 - gamma) * a[i] + gamma * a1[i])
+
+
+@njit(cache=True)
+def kinematics(acc1, st, h, cf):
+    """(q_{n+1}, q'_{n+1}, a_{n+1}) of the recurrence for the acceleration acc1."""
+    x1, v1, a1 = np.empty(acc1.size), np.empty(acc1.size), np.empty(acc1.size)
+    _trial(acc1, st, h, cf, True, x1, v1, a1)
     return x1, v1, a1
 
 
-@njit(cache=True)
-def _evaluate(system, acc1, st, h, k, cf, want_J, count, r, moving):
-    """Residual at acc1 into r (and the iteration matrix if want_J); returns q_{n+1}."""
-    am, af, gamma, beta = cf
-    x1, v1, _ = kinematics(acc1, st, h, cf, moving)
-    bp = h * h * beta * (1 - af) / (1 - am)
-    gp = h * gamma * (1 - af) / (1 - am)
+@njit(cache=True, inline="always")
+def _evaluate(system, acc1, st, h, k, cf, bp, gp, want_J, count, r, moving, x1, v1, a1):
+    """Residual at acc1 into r (and the iteration matrix if want_J); q_{n+1}, q'_{n+1}
+    and a_{n+1} into x1, v1, a1."""
+    _trial(acc1, st, h, cf, moving, x1, v1, a1)
     system_residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r)
     count[0] += 1
-    return x1
 
 
 @njit(cache=True)
-def _backtrack(system, acc1, d, st, h, k, cf, count, r, rt, moving):
+def _backtrack(system, acc1, d, st, h, k, cf, bp, gp, count, r, rt, moving, x1, v1, a1):
     """Length lam of the damped increment; rt = residual at the last trial."""
     rn, lam = np.sqrt(np.dot(r, r)), 1.0
     for _ in range(MAX_BACKTRACKS):
-        _evaluate(system, acc1 + lam * d, st, h, k, cf, False, count, rt, moving)
+        _evaluate(system, acc1 + lam * d, st, h, k, cf, bp, gp, False, count, rt, moving, x1, v1, a1)
         if np.sqrt(np.dot(rt, rt)) <= (1 - 1e-4 * lam) * rn:
             break
         lam *= 0.5
@@ -134,15 +142,17 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
     x, v, acc, a = st
     am, af, gamma, beta = cf
     bp = h * h * beta * (1 - af) / (1 - am)
+    gp = h * gamma * (1 - af) / (1 - am)
     system_prepare(system, k)
     acc1 = acc.copy()
     r, rt = np.zeros(acc.size), np.zeros(acc.size)
     m, from_start, damped, moving = system_tests(system)
     refresh = fresh or hf[0] != h
-    have_r, x1, d_prev = False, x, np.inf
+    x1, v1, a1 = np.empty(acc.size), v.copy(), np.empty(acc.size)  # at the last evaluation
+    have_r, d_prev = False, np.inf
     for _ in range(max_iter):
         if not have_r:
-            x1 = _evaluate(system, acc1, st, h, k, cf, refresh, count, r, moving)
+            _evaluate(system, acc1, st, h, k, cf, bp, gp, refresh, count, r, moving, x1, v1, a1)
         if refresh:
             count[1] += 1
             count[2] += 1
@@ -156,7 +166,7 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
         count[3] += 1
         lam = 1.0
         if damped:
-            lam = _backtrack(system, acc1, d, st, h, k, cf, count, r, rt, moving)
+            lam = _backtrack(system, acc1, d, st, h, k, cf, bp, gp, count, r, rt, moving, x1, v1, a1)
             r[:] = rt
             have_r = True
         if lam == 1.0:
@@ -167,7 +177,7 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
         if not np.isfinite(dn):
             return False
         if _converged(bp, dn, lam, d, x if from_start else x1, m, tol):
-            x1, v1, a1 = kinematics(acc1, st, h, cf)
+            _trial(acc1, st, h, cf, True, x1, v1, a1)
             x[:] = x1
             v[:] = v1
             acc[:] = acc1
@@ -176,7 +186,7 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
         if dn > REFRESH_RATIO * d_prev or lam < 1.0:
             refresh = True
             if have_r:
-                _evaluate(system, acc1, st, h, k, cf, True, count, r, moving)
+                _evaluate(system, acc1, st, h, k, cf, bp, gp, True, count, r, moving, x1, v1, a1)
         d_prev = dn
     return False
 

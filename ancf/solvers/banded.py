@@ -16,6 +16,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from ancf.common.leaf import leaf
+
 
 @njit(cache=True)
 def lu(AB, kl, piv, pivoting):
@@ -57,7 +59,7 @@ def lu(AB, kl, piv, pivoting):
     return 0
 
 
-@njit(cache=True)
+@leaf
 def solve(AB, kl, piv, b):
     """Solve in place with the factors of :func:`lu`."""
     n = AB.shape[0]
