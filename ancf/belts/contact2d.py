@@ -45,7 +45,7 @@ import numpy as np
 from numba import njit
 
 from ancf.belts import friction
-from ancf.belts.contact_common import BOUND_MARGIN, positive_lengths
+from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_rows, positive_lengths
 from ancf.elements._generated import cubic2d_S
 from ancf.core.quadrature import gauss01
 
@@ -146,10 +146,8 @@ def _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw):
     ns = S0.shape[2]
     for k in range(ns):
         sk = ww * S0[e, g, k]
+        add_pulley_rows(e, p, k, sk, D, 2, Qw, dTq, dTv)
         for d in range(2):
-            Qw[e, p, 2 * k + d] += sk * D[d, 4]
-            dTq[p, e, 2 * k + d] += sk * D[2, d]
-            dTv[p, e, 2 * k + d] += sk * D[2, 2 + d]
             for m in range(ns):
                 skm = sk * S0[e, g, m]
                 for c in range(2):

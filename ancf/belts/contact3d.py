@@ -48,7 +48,7 @@ import numpy as np
 from numba import njit
 
 from ancf.belts import friction
-from ancf.belts.contact_common import BOUND_MARGIN, positive_lengths
+from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_rows, positive_lengths
 from ancf.elements._generated import plate36_S
 from ancf.core.quadrature import gauss01
 
@@ -265,10 +265,7 @@ def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
     km = 0
     for k in range(ns):
         sk = ww * S0[e, q, k]
-        for d in range(3):
-            Qw[e, p, 3 * k + d] += sk * D[d, 6]
-            dTq[p, e, 3 * k + d] += sk * D[3, d]
-            dTv[p, e, 3 * k + d] += sk * D[3, 3 + d]
+        add_pulley_rows(e, p, k, sk, D, 3, Qw, dTq, dTv)
         for m in range(k, ns):
             P[km] = sk * S0[e, q, m]
             km += 1
