@@ -368,26 +368,19 @@ def section_coefficients(section: RectangularSection) -> np.ndarray:
 
 
 class DufvaBelt3D(BeltElement):
-    """3D belt elements of lengths ``lengths`` (nel,) m, reference coordinates ``e0``
-    (nel, 24) (checked for shape only: the reference is straight), cross-section
-    ``section`` (b along z, h along y, m), Young's modulus ``E`` Pa, Poisson's ratio
-    ``nu`` (enters G only), density ``rho`` kg/m^3, axial and bending stiffness
-    factors ``alpha1``, ``alpha2`` (-), shear correction ``ks`` (-) and ``nx`` Gauss
-    points along x."""
+    """3D belt elements (arguments: :class:`BeltElement`; e0 (nel, 24), the section's b
+    along z and h along y)."""
 
     family = "cubic3d"
     slots = ("r", "r_x", "r_y", "r_z")
-    schemes: dict = {}  # one rule: nx Gauss points along x, the section in closed form
     dim = 3
     shape_xx = staticmethod(shape_gen.cubic3d_xx)
     kernel_energy = staticmethod(energy)
     kernel_gradient_tangent = staticmethod(gradient_tangent)
 
-    def __init__(self, lengths, e0, section: RectangularSection, E, nu, rho=0.0,
-                 alpha1=1.0, alpha2=1.0, ks=5.0 / 6.0, nx=5):
-        G = self._setup(lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx)
-        # k of kernel_data(): E alpha1, E alpha2, ks G alpha2, E, G (Pa) and the section
-        # moments of section_coefficients
-        self.coefficients = np.concatenate([[E * alpha1, E * alpha2, ks * G * alpha2, E, G],
-                                            section_coefficients(section)])
-        self._data = self._kernel_data()
+    @staticmethod
+    def density_coefficients(section, E, G, alpha1, alpha2, ks) -> np.ndarray:
+        """E alpha1, E alpha2, ks G alpha2, E, G (Pa) and the section moments of
+        :func:`section_coefficients`."""
+        return np.concatenate([[E * alpha1, E * alpha2, ks * G * alpha2, E, G],
+                               section_coefficients(section)])

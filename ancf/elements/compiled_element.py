@@ -70,7 +70,25 @@ class CompiledElement:
 class BeltElement(CompiledElement):
     """Dufva's belt elements (2D and 3D): the arguments they share, checked and stored, and
     what is computed from them alike.  Subclasses set ``family``, ``dim``, ``shape_xx``
-    (the family's generated second x-derivative) and ``coefficients``."""
+    (the family's generated second x-derivative) and give :meth:`density_coefficients`.
+    Arguments: lengths (nel,) m, reference coordinates ``e0`` (nel, ndof) (checked for
+    shape only: the reference is straight), the cross-section (b, h in m), Young's
+    modulus ``E`` Pa, Poisson's ratio ``nu`` (enters G only), density ``rho`` kg/m^3,
+    axial and bending stiffness factors ``alpha1``, ``alpha2`` (-), shear correction
+    ``ks`` (-) and ``nx`` Gauss points along x."""
+
+    schemes: dict = {}  # one rule: nx Gauss points along x, the section in closed form
+
+    def __init__(self, lengths, e0, section, E, nu, rho=0.0, alpha1=1.0, alpha2=1.0,
+                 ks=5.0 / 6.0, nx=5):
+        G = self._setup(lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx)
+        self.coefficients = self.density_coefficients(section, E, G, alpha1, alpha2, ks)
+        self._data = self._kernel_data()
+
+    @staticmethod
+    def density_coefficients(section, E, G, alpha1, alpha2, ks) -> np.ndarray:
+        """k of :meth:`kernel_data`: the constants of the element's energy density."""
+        raise NotImplementedError
 
     def _setup(self, lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx) -> float:
         """Check and store the common arguments; returns the shear modulus G (Pa)."""

@@ -38,7 +38,6 @@ from numba import njit
 from ancf.elements import _dufva_generated as gen
 from ancf.elements import _generated as shape_gen
 from ancf.elements.compiled_element import BeltElement, add_point_tangent
-from ancf.core.quadrature import RectangularSection
 
 _NODE = 6  # coordinates per node: r, r_x, r_y
 
@@ -168,26 +167,18 @@ def gradient_tangent(E, data, want_K, g, K):
 
 
 class DufvaBelt2D(BeltElement):
-    """Belt elements of lengths ``lengths`` (nel,) m, reference coordinates ``e0``
-    (nel, 12) (checked for shape only: the reference is straight), cross-section
-    ``section`` (b, h in m), Young's modulus ``E`` Pa, Poisson's ratio ``nu`` (enters
-    G only), density ``rho`` kg/m^3, axial and bending stiffness factors ``alpha1``,
-    ``alpha2`` (-), shear correction ``ks`` (-) and ``nx`` Gauss points along x."""
+    """Planar belt elements (arguments: :class:`BeltElement`; e0 (nel, 12))."""
 
     family = "cubic2d"
     slots = ("r", "r_x", "r_y")
-    schemes: dict = {}  # one rule: nx Gauss points along x, the section in closed form
     dim = 2
     shape_xx = staticmethod(shape_gen.cubic2d_xx)
     kernel_energy = staticmethod(energy)
     kernel_gradient_tangent = staticmethod(gradient_tangent)
 
-    def __init__(self, lengths, e0, section: RectangularSection, E, nu, rho=0.0,
-                 alpha1=1.0, alpha2=1.0, ks=5.0 / 6.0, nx=5):
-        G = self._setup(lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx)
-        A = section.area
-        I2, I4 = section.second_moment, section.b * section.h**5 / 80.0
-        # k of kernel_data(): density coefficients (N, N m^2, N m^4, N, N m^2, N)
-        self.coefficients = np.array([E * alpha1 * A / 8, E * alpha2 * I2 / 2, E * alpha2 * I4 / 8,
-                                      ks * G * alpha2 * A / 2, ks * G * alpha2 * I2 / 2, E * A / 2])
-        self._data = self._kernel_data()
+    @staticmethod
+    def density_coefficients(section, E, G, alpha1, alpha2, ks) -> np.ndarray:
+        """The density's coefficients (N, N m^2, N m^4, N, N m^2, N)."""
+        A, I2, I4 = section.area, section.second_moment, section.b * section.h**5 / 80.0
+        return np.array([E * alpha1 * A / 8, E * alpha2 * I2 / 2, E * alpha2 * I4 / 8,
+                         ks * G * alpha2 * A / 2, ks * G * alpha2 * I2 / 2, E * A / 2])
