@@ -5,7 +5,8 @@ import math
 
 import numpy as np
 
-from analytic import bechtel, navier_plate, reissner, timoshenko
+from analytic import (beam_modes, bechtel, moving_string, navier_plate, plate_modes, reissner,
+                      timoshenko)
 from analytic.dynamics_refs import rigid_pendulum, spinning_extension
 from ancf.common.inputs import check_sampling, following, intervals
 from ancf.common.params import InputError, Param
@@ -45,6 +46,36 @@ def _navier(p):
                        f"(Levy's single series): {N} term(s) of the correction series along the "
                        f"shorter side (tail bound below rtol = {p['rtol']:g})",
                        {"center_deflection_m": w, "terms": N})
+
+
+def _beam_modes(p):
+    I, A, G = beam_modes.section(p["E"], p["nu"], p["h"], p["b"])
+    beam = dict(L=p["L"], E=p["E"], I=I, rho=p["rho"], A=A)
+    f = beam_modes.timoshenko(p["support"], G=G, ks=p["ks"], count=p["count"], **beam)
+    eb = beam_modes.euler_bernoulli(p["support"], count=p["count"], **beam)
+    r2, e = beam_modes.groups(p["L"], p["E"], G, I, A, p["ks"])
+    method = ("the determinant of the boundary conditions, scanned and refined by Brent's "
+              "method" if p["support"] == "cantilever" else "the closed form per mode number")
+    return SceneResult(True, f"Timoshenko: {method}; Euler-Bernoulli: roots of the frequency "
+                       "equation (Brent's method)",
+                       {"frequencies_hz": f.tolist(), "euler_bernoulli_hz": eb.tolist(),
+                        "cutoff_hz": beam_modes.cutoff(r2, e) * beam_modes.scale(**beam)
+                        / (2.0 * math.pi)})
+
+
+def _plate_modes(p):
+    f, mn = plate_modes.navier_frequencies(p["a"], p["b"], p["h"], p["E"], p["nu"], p["rho"],
+                                           count=p["count"])
+    return SceneResult(True, "Navier: omega_mn = pi^2 (m^2/a^2 + n^2/b^2) sqrt(D / (rho h))",
+                       {"frequencies_hz": f.tolist(), "m": [m for m, _ in mn],
+                        "n": [n for _, n in mn]})
+
+
+def _moving_string(p):
+    f = moving_string.span_frequencies(p["T"], p["rho_A"], p["v"], p["L"], count=p["count"])
+    c = moving_string.wave_speed(p["T"], p["rho_A"], p["L"])
+    return SceneResult(True, "f_n = n c (1 - v^2/c^2) / (2 L), c = sqrt(T / rho_A)",
+                       {"frequencies_hz": f.tolist(), "wave_speed_m_s": c})
 
 
 def _magnitudes(check, *fields):
@@ -95,6 +126,26 @@ _NAVIER = (
 )
 
 
+def _count(default):
+    return Param("count", default, int, "-", "number of frequencies (the lowest, ascending)",
+                 lo=1, hi=100)
+
+
+#: thesis Table 3.1 (as ancf.scenes.belt_common, not imported here: it loads the belt drive):
+#: belt density (kg/m^3) and section (m), pulley radius (m), pulley centres at +-X_CENTRE (m)
+_TABLE_3_1 = dict(rho=1036.0, h=0.01, b=0.01, R=0.08125, X_CENTRE=0.191441)
+_STRING = (
+    Param("T", 100.0, float, "N", "span tension", lo=0, lo_open=True),
+    Param("rho_A", _TABLE_3_1["rho"] * _TABLE_3_1["h"] * _TABLE_3_1["b"], float, "kg/m",
+          "mass per unit length (default: the thesis's belt, Table 3.1)", lo=0, lo_open=True),
+    Param("v", 120.0 * _TABLE_3_1["R"], float, "m/s", "belt speed (default: 120 rad/s on the "
+          "driver, thesis Figs 3.10-3.20); |v| below the wave speed sqrt(T / rho_A)"),
+    Param("L", 2.0 * _TABLE_3_1["X_CENTRE"], float, "m", "span length (default: the centre "
+          "distance of the thesis's equal pulleys)", lo=0, lo_open=True),
+    _count(3),
+)
+
+
 def _with(params, **defaults):
     return tuple(Param(p.name, defaults.get(p.name, p.default), p.kind, p.unit, p.doc, p.lo, p.hi,
                        p.lo_open, p.hi_open, p.choices) for p in params)
@@ -117,6 +168,27 @@ REFERENCES = {
         "centre deflection, summed as Levy's single series; 'terms' counts its correction "
         "terms (D = E h^3 / (12 (1 - nu^2))).", _NAVIER, _navier,
         _magnitudes(navier_plate.check_magnitudes, "a", "b", "h", "E", "nu", "p")),
+    "beam-modes": Scene(
+        "beam-modes", "Natural frequencies of a uniform beam, Timoshenko (both spectra) and "
+        "Euler-Bernoulli, cantilever or simply supported; rectangular section h x b, "
+        "G = E / (2 (1 + nu)).",
+        (Param("support", "cantilever", str, doc="clamped-free or pinned-pinned",
+               choices=beam_modes.SUPPORTS),)
+        + _with(_SECTION, nu=0.3)
+        + (Param("rho", 7850.0, float, "kg/m^3", "density", lo=0, lo_open=True), _count(3)),
+        _beam_modes,
+        _magnitudes(beam_modes.check_section, "E", "nu", "L", "h", "b", "rho", "ks")),
+    "plate-modes": Scene(
+        "plate-modes", "Natural frequencies of the simply supported Kirchhoff plate (Navier), "
+        "with their half-wave numbers m (along a) and n (along b).",
+        tuple(p for p in _NAVIER if p.name not in ("p", "rtol"))
+        + (Param("rho", 7850.0, float, "kg/m^3", "density", lo=0, lo_open=True), _count(4)),
+        _plate_modes,
+        _magnitudes(plate_modes.check_magnitudes, "a", "b", "h", "E", "nu", "rho")),
+    "moving-string": Scene(
+        "moving-string", "Transverse frequencies of an axially moving string span between "
+        "fixed guides (the belt's free span).", _STRING, _moving_string,
+        _magnitudes(moving_string.check_speed, "T", "rho_A", "v", "L")),
 }
 
 DYNAMIC_REFERENCES = {

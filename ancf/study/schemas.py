@@ -181,6 +181,21 @@ RESULTS = {
     "navier-plate": {"center_deflection_m": _nullable("centre deflection along the pressure, m"),
                      "terms": field(INT, "largest odd series index summed")},
     "timoshenko": {"mid_deflection_m": _nullable("midspan deflection, m")},
+    "beam-modes": {
+        "frequencies_hz": field("array", "Timoshenko natural frequencies (both spectra), "
+                                "ascending, Hz", items=NUM),
+        "euler_bernoulli_hz": field("array", "Euler-Bernoulli natural frequencies, ascending, Hz",
+                                    items=NUM),
+        "cutoff_hz": _nullable("the second spectrum's cut-off sqrt(ks G A / (rho I)) / (2 pi), "
+                               "Hz")},
+    "plate-modes": {
+        "frequencies_hz": field("array", "natural frequencies, ascending, Hz", items=NUM),
+        "m": field("array", "half-waves along a of each frequency", items=INT),
+        "n": field("array", "half-waves along b of each frequency", items=INT)},
+    "moving-string": {
+        "frequencies_hz": field("array", "transverse span frequencies n c (1 - v^2/c^2) / (2 L), "
+                                "ascending, Hz", items=NUM),
+        "wave_speed_m_s": _nullable("c = sqrt(T / rho_A), m/s")},
     "reissner": {"tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
                  "tip_rotation_rad": _nullable("tip section rotation, rad")},
     "spinning-extension": {
