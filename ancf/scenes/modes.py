@@ -124,10 +124,10 @@ def _empty(about, count, n, mm: ModalModel, q, newton) -> dict:
     """Results of a run that found no eigenpairs (the null keys are nullable)."""
     return {"about": about, "count": count, "method": None, "reduced_size": n,
             "frequencies_hz": None, "eigenvalues_rad2_s2": None, "rigid_body_modes": None,
-            "rigid_body_threshold_hz": None, "sampling": mm.sampling,
+            "rigid_body_threshold_rel": ZERO_EIGENVALUE_REL, "sampling": mm.sampling,
             "sample_points": mm.points(q).tolist(), "mode_shapes": None,
             "mode_direction_shares": None, "newton_iterations": newton, "factorizations": None,
-            "solves": None, "shift_rad2_s2": None, "sturm_count": None}
+            "solves": None, "shift_rad2_s2": None, "sturm_count": None, "missed_modes": None}
 
 
 def _run(modal, count, about, p: dict) -> SceneResult:
@@ -157,25 +157,25 @@ def _run(modal, count, about, p: dict) -> SceneResult:
 
 def _results(mm, pairs, q, about, count, newton, ref) -> tuple[dict, list]:
     lam = pairs.values
-    zero = ZERO_EIGENVALUE_REL * pairs.scale
+    rigid = pairs.stiffness_rel <= ZERO_EIGENVALUE_REL
     shapes, shares = _shapes(mm, pairs.vectors)
     results = {
         "about": about, "count": count, "method": pairs.method, "reduced_size": mm.pattern.n,
         "frequencies_hz": _signed_hz(lam), "eigenvalues_rad2_s2": lam.tolist(),
-        "rigid_body_modes": int(np.sum(np.abs(lam) <= zero)),
-        "rigid_body_threshold_hz": math.sqrt(zero) / (2.0 * math.pi),
+        "rigid_body_modes": int(rigid.sum()), "rigid_body_threshold_rel": ZERO_EIGENVALUE_REL,
         "sampling": mm.sampling, "sample_points": mm.points(q).tolist(), "mode_shapes": shapes,
         "mode_direction_shares": shares, "newton_iterations": newton,
         "factorizations": pairs.factorizations, "solves": pairs.solves,
-        "shift_rad2_s2": pairs.shift, "sturm_count": pairs.sturm_count}
+        "shift_rad2_s2": pairs.shift, "sturm_count": pairs.sturm_count,
+        "missed_modes": pairs.missed}
     if ref is not None:
         results["lowest_frequency_reference_hz"] = _signed_hz(np.array([ref]))[0]
-    return results, _warnings(lam, zero, about, count, ref, pairs.sturm_count)
+    return results, _warnings(lam, rigid, about, ref, pairs.missed)
 
 
-def _warnings(lam, zero, about, count, ref, sturm) -> list:
+def _warnings(lam, rigid, about, ref, missed) -> list:
     out = []
-    negative = int(np.sum(lam < -zero))
+    negative = int(np.sum((lam < 0) & ~rigid))
     if negative and about == "equilibrium":
         out.append(f"at or beyond a limit point: {negative} negative eigenvalue(s) of the "
                    f"pre-stressed tangent (omega^2 down to {lam[0]:.4g} rad^2/s^2, reported as "
@@ -187,11 +187,11 @@ def _warnings(lam, zero, about, count, ref, sturm) -> list:
     elif about == "equilibrium" and ref > 0 and lam[0] < NEAR_LIMIT * ref:
         out.append(f"at or beyond a limit point: the lowest omega^2 about the equilibrium is "
                    f"{lam[0] / ref:.3g} of its value about the reference (below {NEAR_LIMIT:g})")
-    rigid = int(np.sum(np.abs(lam) <= zero))
-    if rigid:
-        out.append(f"{rigid} zero-frequency mode(s) (|omega^2| <= {zero:.3g} rad^2/s^2): a "
-                   "mechanism, or a zero-energy mode of the integration scheme")
-    if sturm is not None and sturm != count:
-        out.append(f"the Sturm count finds {sturm} eigenvalue(s) up to the highest reported, "
-                   f"{count} reported: a mode was missed, or the highest is a repeated one")
+    if rigid.any():
+        out.append(f"{int(rigid.sum())} zero-frequency mode(s) (|phi^T K phi| <= "
+                   f"{ZERO_EIGENVALUE_REL:g} |K| |phi|^2): a mechanism, or a zero-energy mode of "
+                   "the integration scheme")
+    if missed:
+        out.append(f"the Sturm check finds {missed} eigenvalue(s) more than were computed "
+                   "below the highest reported: mode(s) missed")
     return out

@@ -4,19 +4,28 @@ of a reduced system, both matrices in a pattern's storage
 (N/m) and M a mass (kg), lambda = omega^2 (rad^2/s^2).  M is symmetric positive definite,
 K symmetric and possibly indefinite (a tangent beyond a limit point).
 
-Two routes, chosen by size:
+Both routes are shift-inverted: the shift sigma is put below the lowest eigenvalue by
+inertia (Sylvester's law: the negative pivots of an LDL^T of ``K - s M`` count the
+eigenvalues below s), and the largest mu = 1 / (lambda - sigma) of
+``M phi = mu (K - sigma M) phi`` give the lowest lambda, negative ones included, to a
+precision relative to lambda - sigma (the plain ``K phi = lambda M phi`` loses the lowest
+bending modes of a slender beam to the round-off of its stiffest, axial and shear, ones:
+1e-3 at L/h = 1000).  Chosen by size:
 
-* ``dense``: LAPACK's ``eigh`` of the dense pair, the lowest ``count`` only, for at most
-  :data:`DENSE_MAX` unknowns or when ``count`` is half of them or more (where a Lanczos
-  basis would be as large as the matrix);
+* ``dense``: LAPACK's ``eigh`` of the dense pair (M, K - sigma M), the ``count`` largest
+  mu only, for at most :data:`DENSE_MAX` unknowns or when ``count`` is half of them or
+  more (where a Lanczos basis would be as large as the matrix);
 * shift-invert Lanczos: ARPACK (``scipy.sparse.linalg.eigsh``, mode 3) on
   ``(K - sigma M)^-1 M``, every application one solve with the factorisation the static
   solver uses (:func:`ancf.solvers.linear.factor`: the compiled band LU, or SuperLU for a
-  CSR pattern).  The shift is put below the lowest eigenvalue by inertia (Sylvester's
-  law: the negative pivots of an LDL^T of ``K - s M`` count the eigenvalues below s), so
-  the ``count`` eigenvalues nearest to it are the lowest ones, negative ones included; an
-  inertia count just above the highest eigenvalue found (the Sturm check) confirms that
-  none below it was missed.
+  CSR pattern).
+
+One eigenpair more than asked for is computed, and an inertia count between the highest
+reported and the next (just above the next where the two are one repeated eigenvalue)
+confirms that none below was missed (the Sturm check).  :attr:`Eigenpairs.stiffness_rel` measures each mode against
+K alone, phi^T K phi / (|K|_inf phi^T phi): a zero-energy (rigid-body) mode has it at
+round-off, below :data:`~ancf.solvers.linear.ZERO_EIGENVALUE_REL`, the static stability
+check's zero.
 
 A failure (non-finite entries, no shift found, a singular factorisation, ARPACK not
 converging) raises :class:`EigenFailure` with the reason.
@@ -27,16 +36,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ancf.solvers.linear import ZERO_EIGENVALUE_REL, Singular, counter, factor
+from ancf.solvers.linear import Singular, counter, factor
 
 #: unknowns up to which the dense route is taken (LAPACK on 200 x 200: a few ms)
 DENSE_MAX = 200
-#: the first shift is this far below zero, relative to :func:`scale`; then ten times
-#: further per attempt, for at most SHIFT_ATTEMPTS attempts (down to -1e15 scale)
-SHIFT_START = ZERO_EIGENVALUE_REL
+#: the first shift is this far below zero relative to :func:`scale` (the round-off of the
+#: largest eigenvalue, where the zero-energy modes lie); then ten times further per
+#: attempt, for at most SHIFT_ATTEMPTS attempts (down to -1e14 scale)
+SHIFT_START = float(np.finfo(float).eps)
 SHIFT_ATTEMPTS = 30
-#: the Sturm check counts the eigenvalues below the highest found plus this fraction of
-#: its distance from the shift (ARPACK's eigenvalues are exact to about 1e-12 of it)
+#: two eigenvalues closer than this fraction of their distance from the shift are one
+#: repeated eigenvalue to the Sturm check (computed ones agree to about 1e-12 of it)
 STURM_MARGIN = 1e-8
 
 
@@ -47,19 +57,21 @@ class EigenFailure(Exception):
 @dataclass
 class Eigenpairs:
     """``values`` lambda (count,) ascending, rad^2/s^2; ``vectors`` (n, count), M-normalised,
-    in the pattern's numbering; ``scale`` the largest K_ii / M_ii (a lower bound of the
-    largest eigenvalue); ``shift`` sigma of the Lanczos route (None: dense); the work done
-    (``factorizations``, ``solves``) and ``sturm_count``, the number of eigenvalues below
-    the highest found (None: dense, where LAPACK returns the lowest by construction)."""
+    in the pattern's numbering; ``stiffness_rel`` (count,) |phi^T K phi| / (|K|_inf phi^T phi);
+    ``shift`` sigma; the work done (``factorizations``: inertia counts and the LU or
+    Cholesky, ``solves``: Lanczos steps, 0 dense); ``sturm_count``, the number of
+    eigenvalues below the Sturm check's point, and ``missed``, how many of them were not
+    found (0)."""
 
     values: np.ndarray
     vectors: np.ndarray
+    stiffness_rel: np.ndarray
     method: str
-    scale: float
-    shift: float | None
+    shift: float
     factorizations: int
     solves: int
-    sturm_count: int | None
+    sturm_count: int
+    missed: int
 
 
 def _diagonal(pattern, data) -> np.ndarray:
@@ -83,21 +95,40 @@ def lowest(pattern, K, M, count: int) -> Eigenpairs:
     top = scale(pattern, K, M)
     if not top > 0:
         raise EigenFailure("no positive diagonal entry in the stiffness matrix")
-    if n <= DENSE_MAX or 2 * count >= n:
-        return _dense(pattern, K, M, count, top)
-    return _lanczos(pattern, K, M, count, top)
+    sigma, facts = _shift(pattern, K, M, top)
+    k = min(count + 1, n - 1)  # one more for the Sturm check
+    dense = n <= DENSE_MAX or 2 * k >= n
+    w, V, method, solves = (_dense if dense else _lanczos)(pattern, K, M, k, sigma)
+    order = np.argsort(w)
+    w, V = w[order], V[:, order]
+    at = _sturm_point(w, count, sigma)
+    sturm = _below(pattern, K, M, at)
+    missed = sturm - int(np.sum(w < at))
+    w, V = w[:count], V[:, :count]
+    rel = np.abs(w) / (pattern.inf_norm(K) * np.einsum("ij,ij->j", V, V))
+    return Eigenpairs(w, V, rel, method, sigma, facts + 2, solves, sturm, missed)
 
 
-def _dense(pattern, K, M, count, top) -> Eigenpairs:
+def _sturm_point(w, count, sigma) -> float:
+    """Between the count-th and the next computed eigenvalue, or above the next where they
+    are one repeated eigenvalue (or none was computed beyond the count-th)."""
+    if w.size > count and w[count] - w[count - 1] > STURM_MARGIN * (w[count] - sigma):
+        return 0.5 * (w[count - 1] + w[count])
+    return w[-1] + STURM_MARGIN * (w[-1] - sigma)
+
+
+def _dense(pattern, K, M, count, sigma):
+    """(lambda, M-normalised vectors, method, 0 solves) by LAPACK on (M, K - sigma M)."""
     import scipy.linalg as sla
-    A, B = pattern.as_csr(K).toarray(), pattern.as_csr(M).toarray()
+    n = pattern.n
+    A, B = pattern.as_csr(K - sigma * M).toarray(), pattern.as_csr(M).toarray()
     try:
-        w, V = sla.eigh(A, B, subset_by_index=[0, count - 1])
+        mu, V = sla.eigh(B, A, subset_by_index=[n - count, n - 1])
     except (np.linalg.LinAlgError, ValueError) as exc:
         raise EigenFailure(f"LAPACK eigh failed ({exc})") from None
-    why = f"{pattern.n} unknowns <= {DENSE_MAX}" if pattern.n <= DENSE_MAX else "count >= n/2"
-    return Eigenpairs(w, V, f"dense: LAPACK eigh of the reduced K and M ({why})", top, None,
-                      1, 0, None)
+    V = V / np.sqrt(np.einsum("ij,ij->j", V, B @ V))
+    why = f"{n} unknowns <= {DENSE_MAX}" if n <= DENSE_MAX else "count >= n/2"
+    return sigma + 1.0 / mu, V, f"dense: LAPACK eigh of (M, K - sigma M), shift-inverted ({why})", 0
 
 
 def _below(pattern, K, M, s) -> int:
@@ -115,9 +146,9 @@ def _shift(pattern, K, M, top) -> tuple[float, int]:
     raise EigenFailure(f"no shift below the lowest eigenvalue down to {s / 10.0:.3g} rad^2/s^2")
 
 
-def _lanczos(pattern, K, M, count, top) -> Eigenpairs:
+def _lanczos(pattern, K, M, count, sigma):
+    """(lambda, M-normalised vectors, method, solves) by ARPACK on (K - sigma M)^-1 M."""
     import scipy.sparse.linalg as spla
-    sigma, facts = _shift(pattern, K, M, top)
     try:
         lu = factor(pattern, K - sigma * M)
     except Singular as exc:
@@ -135,9 +166,6 @@ def _lanczos(pattern, K, M, count, top) -> Eigenpairs:
                           which="LM", OPinv=op, v0=v0)
     except (spla.ArpackError, Singular) as exc:
         raise EigenFailure(f"ARPACK: {exc}") from None
-    order = np.argsort(w)
-    w, V = w[order], V[:, order]
-    sturm = _below(pattern, K, M, w[-1] + STURM_MARGIN * (w[-1] - sigma))
-    kind = "band LU" if pattern.band else "SuperLU"
-    return Eigenpairs(w, V, f"shift-invert Lanczos: ARPACK eigsh on the {kind} of K - sigma M "
-                            f"({n} unknowns)", top, sigma, facts + 2, solves[0], sturm)
+    method = (f"shift-invert Lanczos: ARPACK eigsh on the {'band LU' if pattern.band else 'SuperLU'}"
+              f" of K - sigma M ({n} unknowns)")
+    return w, V, method, solves[0]

@@ -210,10 +210,11 @@ MODES = {
                             + _MODES_NULL, nullable=True, items=NUM),
     "eigenvalues_rad2_s2": field("array", "their omega^2, rad^2/s^2; " + _MODES_NULL,
                                  nullable=True, items=NUM),
-    "rigid_body_modes": field(INT, f"modes with |omega^2| <= {ZERO_EIGENVALUE_REL:g} max_i "
-                              "K_ii/M_ii (zero frequency: rigid motion, a mechanism or a "
-                              "zero-energy mode)", nullable=True),
-    "rigid_body_threshold_hz": _nullable("that threshold as a frequency, Hz"),
+    "rigid_body_modes": field(INT, "zero-frequency modes (rigid motion, a mechanism or a "
+                              "zero-energy mode of the integration scheme): |phi^T K phi| <= "
+                              "rigid_body_threshold_rel |K|_inf phi^T phi", nullable=True),
+    "rigid_body_threshold_rel": field(NUM, "that threshold (the static stability check's zero, "
+                                           f"{ZERO_EIGENVALUE_REL:g})"),
     "sampling": field(STR, "where the mode shapes are sampled: centreline (beams, the belt) or "
                            "mid-surface grid (plates: the nodes)"),
     "sample_points": field("array", "positions of the sample points in the state vibrated "
@@ -227,15 +228,16 @@ MODES = {
                                    nullable=True, items="array"),
     "newton_iterations": field(INT, "Newton iterations of the static equilibrium (0 about the "
                                     "reference)"),
-    "factorizations": field(INT, "factorisations (inertia counts, the shift-invert LU; dense: "
-                                 "1)", nullable=True),
+    "factorizations": field(INT, "factorisations: inertia counts (the shift, the Sturm check) "
+                                 "and the shift-inverted LU or Cholesky", nullable=True),
     "solves": field(INT, "Lanczos steps: solves with the factorisation (dense: 0)",
                     nullable=True),
-    "shift_rad2_s2": _nullable("Lanczos shift sigma, below the lowest eigenvalue (null: "
-                               "dense)"),
-    "sturm_count": field(INT, "eigenvalues below the highest found, by inertia (equals count "
-                              "unless a mode was missed or the highest is repeated; null: "
-                              "dense)", nullable=True),
+    "shift_rad2_s2": _nullable("the shift sigma, below the lowest eigenvalue"),
+    "sturm_count": field(INT, "eigenvalues below the Sturm check's point, by inertia (between "
+                              "the highest reported and the next, or above the next where the "
+                              "two are one repeated eigenvalue)", nullable=True),
+    "missed_modes": field(INT, "sturm_count minus the eigenvalues found below that point (0: "
+                               "none missed)", nullable=True),
     "lowest_frequency_reference_hz": field(NUM, "about the equilibrium: the lowest frequency "
                                                 "about the reference, Hz", required=False),
 }
