@@ -22,10 +22,10 @@ bending modes of a slender beam to the round-off of its stiffest, axial and shea
 
 One eigenpair more than asked for is computed, and an inertia count between the highest
 reported and the next (just above the next where the two are one repeated eigenvalue)
-confirms that none below was missed (the Sturm check).  :attr:`Eigenpairs.stiffness_rel` measures each mode against
-K alone, phi^T K phi / (|K|_inf phi^T phi): a zero-energy (rigid-body) mode has it at
-round-off, below :data:`~ancf.solvers.linear.ZERO_EIGENVALUE_REL`, the static stability
-check's zero.
+confirms that none below was missed (the Sturm check).  :attr:`Eigenpairs.stiffness_rel`
+measures each mode against K alone, phi^T K phi / (|K|_inf phi^T phi): a zero-energy
+(rigid-body) mode has it at round-off, below
+:data:`~ancf.solvers.linear.ZERO_EIGENVALUE_REL`, the static stability check's zero.
 
 A failure (non-finite entries, no shift found, a singular factorisation, ARPACK not
 converging) raises :class:`EigenFailure` with the reason.
@@ -61,7 +61,8 @@ class Eigenpairs:
     ``shift`` sigma; the work done (``factorizations``: inertia counts and the LU or
     Cholesky, ``solves``: Lanczos steps, 0 dense); ``sturm_count``, the number of
     eigenvalues below the Sturm check's point, and ``missed``, how many of them were not
-    found (0)."""
+    found (0; the inertia of zero-energy modes is round-off, so a count below the found
+    ones is no miss)."""
 
     values: np.ndarray
     vectors: np.ndarray
@@ -103,7 +104,7 @@ def lowest(pattern, K, M, count: int) -> Eigenpairs:
     w, V = w[order], V[:, order]
     at = _sturm_point(w, count, sigma)
     sturm = _below(pattern, K, M, at)
-    missed = sturm - int(np.sum(w < at))
+    missed = max(sturm - int(np.sum(w < at)), 0)
     w, V = w[:count], V[:, :count]
     rel = np.abs(w) / (pattern.inf_norm(K) * np.einsum("ij,ij->j", V, V))
     return Eigenpairs(w, V, rel, method, sigma, facts + 2, solves, sturm, missed)
