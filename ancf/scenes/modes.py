@@ -183,7 +183,8 @@ def _warnings(lam, rigid, about, ref, missed) -> list:
     elif negative:
         out.append(f"{negative} negative eigenvalue(s) of the tangent at the reference state "
                    f"(omega^2 down to {lam[0]:.4g} rad^2/s^2, reported as negative "
-                   "frequencies): the reference is no stable equilibrium")
+                   "frequencies): the reference is no stable equilibrium (or its stiffness is "
+                   "lost to round-off)")
     elif about == "equilibrium" and ref > 0 and lam[0] < NEAR_LIMIT * ref:
         out.append(f"at or beyond a limit point: the lowest omega^2 about the equilibrium is "
                    f"{lam[0] / ref:.3g} of its value about the reference (below {NEAR_LIMIT:g})")
