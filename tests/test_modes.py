@@ -26,8 +26,10 @@ def _section(p=STEEL):
 
 
 def _bending(scene, n, count=3, **kw):
-    """The lowest ``count`` bending frequencies (mostly along y) of the scene, Hz."""
-    res = ancf.modes(scene, {**STEEL, "n_elements": n, **kw}, count=8)
+    """The lowest ``count`` bending frequencies (mostly along y) of the scene, Hz; the
+    density is the default of ``ancf modes`` (steel's)."""
+    beam = {k: v for k, v in STEEL.items() if k != "rho"}
+    res = ancf.modes(scene, {**beam, "n_elements": n, **kw}, count=8)
     r = res.results
     f = [f for f, s in zip(r["frequencies_hz"], r["mode_direction_shares"]) if s[1] > 0.5]
     return np.array(f[:count])
