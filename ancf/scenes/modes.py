@@ -46,6 +46,9 @@ DEFAULT_COUNT = 6
 #: about the equilibrium, a lowest omega^2 below this fraction of its value about the
 #: reference marks the state as at (or near) a limit point
 NEAR_LIMIT = 0.01
+#: a mode whose sampled displacement is below this fraction of its largest coordinate
+#: leaves the sample points in place (round-off of the mode vector)
+STILL = 1e-8
 
 
 def modal_scene(name: str) -> Scene:
@@ -95,23 +98,27 @@ def _signed_hz(lam: np.ndarray) -> list:
     return (np.sign(lam) * np.sqrt(np.abs(lam)) / (2.0 * math.pi)).tolist()
 
 
-def _shape(u: np.ndarray) -> np.ndarray:
-    """Displacements of the sample points scaled to a largest |u| of 1, its largest
-    component positive."""
-    size = np.linalg.norm(u, axis=1)
-    peak = u.flat[np.argmax(np.abs(u))]
-    return u / (size.max() * np.sign(peak)) if size.max() > 0 else u
+def _shape(u: np.ndarray, phi: np.ndarray) -> np.ndarray:
+    """Displacements u of the sample points scaled to a largest |u| of 1, its largest
+    component positive; zero where the mode phi leaves them in place (|u| at round-off
+    of phi, :data:`STILL`: a beam section's torsion)."""
+    size = np.linalg.norm(u, axis=1).max()
+    if size <= STILL * np.abs(phi).max():
+        return np.zeros_like(u)
+    return u / (size * np.sign(u.flat[np.argmax(np.abs(u))]))
 
 
 def _shapes(mm: ModalModel, vectors: np.ndarray) -> tuple[list, list]:
-    """(mode shapes (count, points, dim), shares of each direction (count, dim))."""
+    """(mode shapes (count, points, dim), shares of each direction (count, dim), zero for a
+    mode that leaves the sample points in place)."""
     zero = np.zeros(mm.pattern.n_dofs)
     shapes, shares = [], []
     for v in vectors.T:
-        u = _shape(mm.points(mm.pattern.expand(v, zero)))
+        phi = mm.pattern.expand(v, zero)
+        u = _shape(mm.points(phi), phi)
         shapes.append(u.tolist())
         sq = (u**2).sum(axis=0)
-        shares.append((sq / sq.sum()).tolist())
+        shares.append((sq / sq.sum() if sq.any() else sq).tolist())
     return shapes, shares
 
 

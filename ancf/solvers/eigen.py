@@ -167,6 +167,6 @@ def _lanczos(pattern, K, M, count, sigma):
                           which="LM", OPinv=op, v0=v0)
     except (spla.ArpackError, Singular) as exc:
         raise EigenFailure(f"ARPACK: {exc}") from None
-    method = (f"shift-invert Lanczos: ARPACK eigsh on the {'band LU' if pattern.band else 'SuperLU'}"
-              f" of K - sigma M ({n} unknowns)")
+    lu_kind = "band LU" if pattern.band else "SuperLU"
+    method = f"shift-invert Lanczos: ARPACK eigsh on the {lu_kind} of K - sigma M ({n} unknowns)"
     return w, V, method, solves[0]

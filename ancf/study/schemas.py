@@ -221,10 +221,12 @@ MODES = {
                                     "about, m (one [x, y] or [x, y, z] each)", items="array"),
     "mode_shapes": field("array", "per mode, the displacement [dx, dy(, dz)] of every sample "
                                   "point, scaled to a largest magnitude of 1 (its largest "
-                                  "component positive); " + _MODES_NULL,
-                         nullable=True, items="array"),
+                                  "component positive; all zero for a mode that leaves the "
+                                  "points in place, e.g. a beam section's torsion); "
+                                  + _MODES_NULL, nullable=True, items="array"),
     "mode_direction_shares": field("array", "per mode, the share of the squared sampled "
-                                            "displacement along x, y(, z); " + _MODES_NULL,
+                                            "displacement along x, y(, z) (all zero where the "
+                                            "points stay in place); " + _MODES_NULL,
                                    nullable=True, items="array"),
     "newton_iterations": field(INT, "Newton iterations of the static equilibrium (0 about the "
                                     "reference)"),
