@@ -17,6 +17,7 @@ TD, TP = "tests/test_dynamics.py::", "tests/test_published_tables.py::"
 TA = "tests/test_analytic.py::"
 TB = "tests/test_belt_drive.py::"
 T3 = "tests/test_contact3d.py::"
+TM = "tests/test_modes.py::"
 
 
 def plus_1_percent(before: str, value: str, after: str = "") -> tuple[str, str]:
@@ -90,6 +91,15 @@ MUTATIONS = [
     ("3D Jacobian without the damper's dn/dr", "ancf/belts/contact3d.py",
      ("gF[c] = -kp * n[c] - cp * tv * t[c] / rho", "gF[c] = -kp * n[c]"),
      T3 + "test_jacobians_match_central_differences"),
+    ("modes' steel density +1 %", "ancf/scenes/base.py",
+     plus_1_percent('STEEL_DENSITY = Param("rho", ', "7850.0"),
+     TM + "test_first_three_bending_frequencies_within_half_a_percent_of_timoshenko"),
+    ("modes about the reference at the equilibrium too", "ancf/scenes/modes.py",
+     ("_, K = mm.pattern.assemble(mm.assembly, q)", "_, K = mm.pattern.assemble(mm.assembly, mm.q0)"),
+     TM + "test_axial_bar_first_bending_frequency_vanishes_at_the_euler_load"),
+    ("modes' Sturm check without the extra mode", "ancf/solvers/eigen.py",
+     ("k = min(count + 1, n - 1)", "k = count"),
+     TM + "test_the_sturm_check_tells_a_repeated_pair_from_a_missed_mode"),
 ]
 
 

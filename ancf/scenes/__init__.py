@@ -3,7 +3,8 @@
 ``analytic/`` the same way (``ancf analytic NAME``); ``accuracy`` the per-scene
 accuracy warnings; ``beam_static``, ``beam_dynamic`` and ``belt_common`` the builders
 the scenes share; ``frames`` the deformed geometry of a finished run per output step and
-``vtk`` its ParaView output (``--vtk``).
+``vtk`` its ParaView output (``--vtk``); ``modes`` the natural frequencies and mode shapes of
+the static scenes (``ancf modes NAME``).
 
 ``SCENES`` is built on first use, so that importing ``ancf.scenes.base`` loads no
 scene, solver or element; :func:`scene` loads one scene's module only (``ancf run

@@ -17,7 +17,7 @@ from ancf.scenes import accuracy
 from ancf.models import beam3d
 from ancf.scenes import beam_static as bs
 from ancf.common.params import InputError, Param
-from ancf.scenes.base import Scene
+from ancf.scenes.base import STEEL_DENSITY, Scene
 from ancf.scenes.cantilever import cantilever_params
 
 
@@ -59,16 +59,26 @@ def check(p: dict) -> None:
                          "or a spec 'normal=NXxNY,shear=NXxNY'") from None
 
 
-def run(p):
+def setup(p):
+    """(mesh, q0, assembly, elimination, load vector) of the 3D cantilever (density
+    ``p["rho"]`` if given)."""
     m, q0, asm = beam3d.model(p)
     elim = beam3d.elimination(m, q0, beam3d.clamp(m))
-    n = p["n_elements"]
-    dofs = [m.dof(n, "r", c) for c in range(3)]
-    return bs.solve(p, m, q0, asm, elim, beam3d.load_vector(m, beam3d.tip_load(p)),
+    return m, q0, asm, elim, beam3d.load_vector(m, beam3d.tip_load(p))
+
+
+def run(p):
+    m, q0, asm, elim, Qk = setup(p)
+    dofs = [m.dof(p["n_elements"], "r", c) for c in range(3)]
+    return bs.solve(p, m, q0, asm, elim, Qk,
                     lambda q: {f"tip_{c}": float(q[d]) for c, d in zip("xyz", dofs)})
+
+
+def modal(p):
+    return bs.modal(p, *setup(p))
 
 
 SCENE = Scene(
     "beam3d-cantilever",
     "The cantilever with a 3D beam element, tip force at an angle in the section plane.",
-    params(), run, check, warn=accuracy.static)
+    params(), run, check, warn=accuracy.static, modal=modal, modal_params=(STEEL_DENSITY,))

@@ -1,11 +1,13 @@
-"""JSON schemas of the public output of ``ancf run SCENE --json`` and ``ancf analytic NAME
---json``: one per scene and per analytic reference, generated from declarations.
+"""JSON schemas of the public output of ``ancf run SCENE --json``, ``ancf analytic NAME
+--json`` and ``ancf modes SCENE --json``: one per scene, per analytic reference and per
+scene with modes, generated from declarations.
 
 The top level is the same for all (``scene``, ``params``, ``converged``, ``message``,
 ``results``, ``cpu_time_s``, ``compile_cpu_s``, ``warnings``); ``params`` follows the scene's parameter
-declarations (:class:`ancf.scenes.base.Param`); ``results`` follows :data:`RESULTS` below,
-the one place where a result key is declared: its JSON type, whether it is always present
-and whether it is ``null`` when the run does not converge.  Result keys not declared are
+declarations (:class:`ancf.scenes.base.Param`); ``results`` follows :data:`RESULTS` below
+(:data:`MODES` for ``ancf modes``), the one place where a result key is declared: its JSON
+type, whether it is always present and whether it is ``null`` when the run does not
+converge.  Result keys not declared are
 an error of the schema (``additionalProperties: false``), so a new result key must be
 declared here, which publishes it (``python -m ancf.study.schemas`` writes
 ``reports/schemas.md``).  :func:`validate` is a small validator for the subset of JSON
@@ -18,6 +20,7 @@ import sys
 from pathlib import Path
 
 from ancf.common.paths import REPORTS
+from ancf.solvers.linear import ZERO_EIGENVALUE_REL
 
 NUM, INT, STR, BOOL = "number", "integer", "string", "boolean"
 
@@ -209,6 +212,53 @@ RESULTS = {
                        "tip_x": series("tip x, m"), "tip_y": series("tip y, m")},
 }
 
+_MODES_NULL = "null when no eigenpairs were found"
+#: result keys of ``ancf modes SCENE --json`` (every scene with modes)
+MODES = {
+    "about": field(STR, "state the tangent stiffness is taken at: reference or equilibrium"),
+    "count": field(INT, "number of modes asked for (default 6, or the reduced size - 1)"),
+    "method": field(STR, "eigensolver: dense LAPACK eigh, or shift-invert Lanczos (ARPACK) on "
+                         "the band LU or SuperLU of K - sigma M", nullable=True),
+    "reduced_size": field(INT, "unknowns of the reduced system (constraints eliminated)"),
+    "frequencies_hz": field("array", "the lowest count natural frequencies, ascending, Hz "
+                            "(negative: -sqrt(-omega^2)/(2 pi) of an unstable mode); "
+                            + _MODES_NULL, nullable=True, items=NUM),
+    "eigenvalues_rad2_s2": field("array", "their omega^2, rad^2/s^2; " + _MODES_NULL,
+                                 nullable=True, items=NUM),
+    "rigid_body_modes": field(INT, "zero-frequency modes (rigid motion, a mechanism or a "
+                              "zero-energy mode of the integration scheme): |phi^T K phi| <= "
+                              "rigid_body_threshold_rel |K|_inf phi^T phi", nullable=True),
+    "rigid_body_threshold_rel": field(NUM, "that threshold (the static stability check's zero, "
+                                           f"{ZERO_EIGENVALUE_REL:g})"),
+    "sampling": field(STR, "where the mode shapes are sampled: centreline (beams, the belt) or "
+                           "mid-surface grid (plates: the nodes)"),
+    "sample_points": field("array", "positions of the sample points in the state vibrated "
+                                    "about, m (one [x, y] or [x, y, z] each)", items="array"),
+    "mode_shapes": field("array", "per mode, the displacement [dx, dy(, dz)] of every sample "
+                                  "point, scaled to a largest magnitude of 1 (its largest "
+                                  "component positive; all zero for a mode that leaves the "
+                                  "points in place, e.g. a beam section's torsion); "
+                                  + _MODES_NULL, nullable=True, items="array"),
+    "mode_direction_shares": field("array", "per mode, the share of the squared sampled "
+                                            "displacement along x, y(, z) (all zero where the "
+                                            "points stay in place); " + _MODES_NULL,
+                                   nullable=True, items="array"),
+    "newton_iterations": field(INT, "Newton iterations of the static equilibrium (0 about the "
+                                    "reference)"),
+    "factorizations": field(INT, "factorisations: inertia counts (the shift, the Sturm check) "
+                                 "and the shift-inverted LU or Cholesky", nullable=True),
+    "solves": field(INT, "Lanczos steps: solves with the factorisation (dense: 0)",
+                    nullable=True),
+    "shift_rad2_s2": _nullable("the shift sigma, below the lowest eigenvalue"),
+    "sturm_count": field(INT, "eigenvalues below the Sturm check's point, by inertia (between "
+                              "the highest reported and the next, or above the next where the "
+                              "two are one repeated eigenvalue)", nullable=True),
+    "missed_modes": field(INT, "sturm_count minus the eigenvalues found below that point (0: "
+                               "none missed)", nullable=True),
+    "lowest_frequency_reference_hz": field(NUM, "about the equilibrium: the lowest frequency "
+                                                "about the reference, Hz", required=False),
+}
+
 _PARAM_TYPES = {float: NUM, int: INT, str: STR, bool: BOOL}
 
 
@@ -253,23 +303,29 @@ class SchemaNameError(KeyError, ValueError):
 
 
 def names() -> list[str]:
-    """Every schema name in the README's form: ``run SCENE`` and ``analytic NAME``."""
-    return [f"{command} {n}" for n, (command, _) in registries().items()]
+    """Every schema name in the README's form: ``run SCENE``, ``analytic NAME`` and
+    ``modes SCENE``."""
+    from ancf.scenes.modes import MODAL
+    return [f"{command} {n}" for n, (command, _) in registries().items()] + [
+        f"modes {n}" for n in MODAL]
 
 
 def _lookup(name: str) -> tuple[str, str, object]:
-    """(command, bare name, Scene) of ``run SCENE``, ``analytic NAME`` (also with a leading
-    ``ancf``) or the bare ``SCENE`` / ``NAME``."""
+    """(command, bare name, Scene) of ``run SCENE``, ``analytic NAME``, ``modes SCENE``
+    (also with a leading ``ancf``) or the bare ``SCENE`` / ``NAME`` (its run)."""
+    from ancf.scenes.modes import MODAL, modal_scene
     regs = registries()
     words = name.split() if isinstance(name, str) else []
     if words[:1] == ["ancf"]:
         words = words[1:]
-    if len(words) == 2 and words[0] in ("run", "analytic"):
+    if len(words) == 2 and words[0] in ("run", "analytic", "modes"):
         command, bare = words
     elif len(words) == 1:
         command, bare = None, words[0]
     else:
         command, bare = None, None
+    if command == "modes" and bare in MODAL:
+        return command, bare, modal_scene(bare)
     if bare in regs and command in (None, regs[bare][0]):
         return regs[bare][0], bare, regs[bare][1]
     raise SchemaNameError(f"schema: unknown name {name!r}; allowed: {', '.join(names())} "
@@ -277,13 +333,14 @@ def _lookup(name: str) -> tuple[str, str, object]:
 
 
 def schema(name: str) -> dict:
-    """The JSON schema of ``ancf run|analytic NAME --json``; ``name`` as the README writes
-    it (``"run cantilever"``, ``"analytic reissner"``) or bare (``"cantilever"``).  An
-    unknown name raises :class:`SchemaNameError` (a ``KeyError``) listing the allowed ones."""
+    """The JSON schema of ``ancf run|analytic|modes NAME --json``; ``name`` as the README
+    writes it (``"run cantilever"``, ``"analytic reissner"``, ``"modes cantilever"``) or
+    bare (``"cantilever"``: its run).  An unknown name raises :class:`SchemaNameError` (a
+    ``KeyError``) listing the allowed ones."""
     command, name, sc = _lookup(name)
     props = {"scene": {"type": STR, "const": name}, "params": _params_schema(sc),
              "converged": {"type": BOOL}, "message": {"type": STR},
-             "results": _result_schema(RESULTS[name]), "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
+             "results": _result_schema(MODES if command == "modes" else RESULTS[name]), "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
                             "compiling or loading numba kernels"},
              "compile_cpu_s": {"type": NUM, "description": "process CPU seconds spent compiling "
                                "numba kernels or loading them from numba's cache during the run "
@@ -369,16 +426,18 @@ def schemas_markdown() -> str:
     import json
     parts = ["# JSON output schemas\n",
              "Generated from `ancf/study/schemas.py` (`python -m ancf.study.schemas`); do not edit. One "
-             "schema per `ancf run SCENE --json` and `ancf analytic NAME --json`; the suite "
-             "validates every scene's and reference's default run against it "
+             "schema per `ancf run SCENE --json`, `ancf analytic NAME --json` and `ancf modes "
+             "SCENE --json`; the suite validates every scene's and reference's default run "
+             "(and every scene's modes) against it "
              "(`tests/test_schemas.py`). Top level: `scene`, `params` (every parameter used), "
              "`converged`, `message`, `results`, `cpu_time_s` (the run's process CPU seconds "
              "without compiling or loading numba kernels), `compile_cpu_s` (those), "
              "`warnings` (a list of strings, "
              "empty when none). Result keys marked nullable are `null` where the run did not "
              "converge; optional keys are absent when the solver did not get that far.\n"]
-    for name, (command, _) in registries().items():
-        s = schema(name)
+    for full in names():
+        command, name = full.split()
+        s = schema(full)
         res = s["properties"]["results"]
         parts += [f"## `ancf {command} {name}`\n", "| result key | type | required | meaning |",
                   "|---|---|---|---|"]
