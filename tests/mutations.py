@@ -100,6 +100,15 @@ MUTATIONS = [
     ("modes' Sturm check without the extra mode", "ancf/solvers/eigen.py",
      ("k = min(count + 1, n - 1)", "k = count"),
      TM + "test_the_sturm_check_tells_a_repeated_pair_from_a_missed_mode"),
+    ("tip moment's torque split evenly (unweighted fit)", "ancf/models/beam3d.py",
+     ('SectionMoment(m.n_dofs, dofs, M, (moments["Q2_0"],', 'SectionMoment(m.n_dofs, dofs, M, (1.0,'),
+     "tests/test_beam3d_benchmarks.py::test_tip_moment_small_deflection_is_the_closed_form"),
+    ("section moment's Jacobian without the turning of the slopes", "ancf/core/forces.py",
+     ("J[3 * k:3 * k + 3, 3 * k:3 * k + 3] += wk * _skew(m)", "J[3 * k:3 * k + 3, 3 * k:3 * k + 3] += 0.0"),
+     "tests/test_beam3d_benchmarks.py::test_section_moment_jacobian_matches_differences"),
+    ("Princeton beam's torsion factor from h only", "ancf/scenes/princeton_beam.py",
+     ('torsion_factor(v["h"], v["b"])', 'torsion_factor(v["h"], v["h"])'),
+     "tests/test_beam3d_benchmarks.py::test_princeton_linear3d_and_belt3d_against_ansys"),
 ]
 
 

@@ -110,6 +110,22 @@ AGREES = {
         ("Rigid rotation: zero strain energy, 3D beam", "test_rigid_rotation_has_no_strain"),
         ("Rigid rotation: zero elastic force, 3D beam", "test_rigid_rotation_has_no_strain"),
         ("Rigid rotation: zero strain energy, plate", "test_rigid_rotation_has_no_strain"))},
+    **{name: (("test_beam3d_benchmarks", test), "PASS") for name, test in (
+        ("Tip moment, small rotation: tip = M L²/(2EI), twist = M L/(k_s G I_p) (both "
+         "elements)", "test_tip_moment_small_deflection_is_the_closed_form"),
+        *((f"Princeton beam, {el} (16 el.): u_{c} vs ANSYS beam, every load and angle",
+           "test_princeton_linear3d_and_belt3d_against_ansys")
+          for el in ("linear3d", "belt3d") for c in "yz"),
+        ("Princeton beam, linear3d exact integration locks: u_z at 90° below 20 % of ANSYS",
+         "test_princeton_exact_integration_locks"),
+        ("Princeton beam, linear3d k_s = 5/6: torsion too stiff, u_y (F3, 45°) low by more "
+         "than 15 %", "test_princeton_default_ks_is_too_stiff_in_torsion"),
+        ("3D general bending, linear3d (32 el.): u_z vs Table 4 ANSYS",
+         "test_general_bending_u_z_against_table_4"),
+        ("3D general bending, linear3d (32 el.): u_x, u_y vs Table 4 ANSYS",
+         "test_general_bending_u_x_u_y_against_table_4"),
+        ("3D general bending: ours − ANSYS = the continuum's second-order terms (u_x, u_y; "
+         "128 el.)", "test_general_bending_difference_is_the_continuum_terms"))},
     **{name: (("test_belt3d_checks", "test_model2_and_model1_checks"), QUICK_SKIPPED)
        for name in BELT3D_ROWS[:7]},
     **{name: (("test_belt3d_checks", "test_settled_pretension_converges_with_the_element_count"),

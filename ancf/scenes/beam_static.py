@@ -84,9 +84,11 @@ def newton_options(p: dict) -> NewtonOptions:
     return NewtonOptions(**{opt: p[name] for name, opt in names.items() if name in p})
 
 
-def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> SceneResult:
-    """Static solve + stability check, packaged as a scene result."""
-    res = solve_static(assembly, elim, Qk, q0, newton_options(p))
+def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn,
+          forces=None) -> SceneResult:
+    """Static solve + stability check, packaged as a scene result; ``forces``: the
+    configuration-dependent force terms (an ``ancf.core.forces.Forces``) or None."""
+    res = solve_static(assembly, elim, Qk, q0, newton_options(p), forces=forces)
     results = {"newton_iterations": res.iterations, "load_steps_taken": res.load_steps,
                "load_factor": res.load_factor, "tangent_evaluations": res.tangent_evaluations,
                "factorizations": res.factorizations}
@@ -94,7 +96,7 @@ def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> Sce
     results.update(results_fn(res.q) if converged else dict.fromkeys(results_fn(q0)))
     if converged:
         neg, zero, lowest = ((None, None, None) if p["stability_check"] == "off"
-                             else stability_at(assembly, res.pattern, res.q))
+                             else stability_at(assembly, res.pattern, res.q, forces))
         results["negative_tangent_eigenvalues"] = neg
         results["zero_tangent_eigenvalues"] = zero
         results["lowest_tangent_eigenvalue_rel"] = lowest

@@ -181,6 +181,12 @@ RESULTS = {
                     "tip_z": _nullable("mean z of the tip-edge nodes (along the load), m")},
     "beam3d-cantilever": {**_STATIC, "tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
                           "tip_z": _nullable("tip z, m")},
+    "princeton-beam": {**_STATIC, "tip_x": _nullable("tip x, m"),
+                       "tip_y": _nullable("tip y, m (u_y = tip_y)"),
+                       "tip_z": _nullable("tip z, m (u_z = tip_z: the mirror image of the "
+                                          "published +z)")},
+    "beam3d-bending": {**_STATIC, "tip_x": _nullable("tip x, m (u_x = tip_x - L)"),
+                       "tip_y": _nullable("tip y, m"), "tip_z": _nullable("tip z, m")},
     "navier-plate": {"center_deflection_m": _nullable("centre deflection along the pressure, m"),
                      "terms": field(INT, "largest odd series index summed")},
     "timoshenko": {"mid_deflection_m": _nullable("midspan deflection, m")},
