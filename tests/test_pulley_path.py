@@ -196,24 +196,27 @@ def test_idler_on_the_belts_back_against_closed_form():
     assert under[:, 1].min() == pytest.approx(y - r, abs=1e-6)  # round the idler's bottom
 
 
+A, B = Pulley("A", (-0.3, 0.0), 0.1), Pulley("B", (0.3, 0.0), 0.1)
+
+
 @pytest.mark.parametrize("pulleys, message", [
     ([Pulley("A", (0.0, 0.0), 0.1)], "a belt path needs at least 2 pulleys, got 1"),
-    ([Pulley("A", (-0.3, 0.0), 0.1), Pulley("B", (0.3, 0.0), 0.1), Pulley("I", (0.2, 0.05), 0.03, -1)],
+    ([A, B, Pulley("I", (0.2, 0.05), 0.03, -1)],
      "pulleys 'B' and 'I' overlap: centre distance 0.111803 m; allowed: more than the sum of "
      "their radii 0.13 m"),
-    ([Pulley("A", (-0.3, 0.0), 0.1), Pulley("B", (0.3, 0.0), 0.1), Pulley("I", (0.0, 0.13), 0.03, -1)],
+    ([A, B, Pulley("I", (0.0, 0.13), 0.03, -1)],
      "pulley 'I' is not wrapped: the belt passes it in a straight line; allowed: a wrap angle > 0"),
     ([TRIANGLE[0], TRIANGLE[2], TRIANGLE[1]],  # listed clockwise
      "cannot be wrapped: the belt would turn .* deg around it and 2 times around the loop; "
      "allowed: one counter-clockwise turn"),
-    ([Pulley("A", (-0.3, 0.0), 0.1), Pulley("B", (0.3, 0.0), 0.1), Pulley("I", (0.0, 0.3), 0.03, -1)],
+    ([A, B, Pulley("I", (0.0, 0.3), 0.03, -1)],
      "pulley 'I' cannot be wrapped: the belt would turn 305.7 deg around it and 0 times"),
-    ([Pulley("0", (0.2, 0.9), 0.1), Pulley("1", (0.6, 0.9), 0.12), Pulley("2", (1.0, 0.5), 0.11, -1),
-      Pulley("3", (1.0, 0.9), 0.12)],  # pulley 1 lies between 3 and 0 on the return span
+    ([Pulley("0", (0.2, 0.9), 0.1), Pulley("1", (0.6, 0.9), 0.12),  # 1 lies between 3 and 0
+      Pulley("2", (1.0, 0.5), 0.11, -1), Pulley("3", (1.0, 0.9), 0.12)],
      "span '3'-'0' passes through pulley '1': 0.11 m from its centre; allowed: at least its "
      "radius 0.12 m"),
-    ([Pulley("0", (0.5, 0.9), 0.11), Pulley("1", (0.1, 0.4), 0.11, -1), Pulley("2", (0.7, 0.6), 0.06),
-      Pulley("3", (0.1, 0.8), 0.16)],
+    ([Pulley("0", (0.5, 0.9), 0.11), Pulley("1", (0.1, 0.4), 0.11, -1),
+      Pulley("2", (0.7, 0.6), 0.06), Pulley("3", (0.1, 0.8), 0.16)],
      "spans '0'-'1' and '2'-'3' cross; allowed: a belt that does not cross itself"),
     ([Pulley("A", (0.0, 0.0), 0.1), Pulley("B", (1.0, 0.0), 0.1, 2)],
      "pulley 'B': radius 0.1 m and side 2; allowed: a radius > 0 and a side of 1 or -1"),

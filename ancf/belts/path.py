@@ -211,7 +211,8 @@ class PulleyPath:
         for k, sp in enumerate(self.spans):
             out.append(("line", sp.length, (sp.start, sp.end)))
             if k + 1 < N:
-                out.append(self._arc(k + 1, sp, 0.0, self.pulleys[k + 1].radius * self.wraps[k + 1]))
+                R = self.pulleys[k + 1].radius
+                out.append(self._arc(k + 1, sp, 0.0, R * self.wraps[k + 1]))
         out.append(self._arc(0, self.spans[-1], 0.0, p0.radius * half))
         return out
 
