@@ -2,7 +2,8 @@
 (analytic/bechtel.py); for a serpentine drive with a tensioner the same model assembled
 here from its equations, on a path built here from tangency conditions, and solved by
 fsolve from another start; the limits (no torque: uniform stretch; an idler that barely
-touches a span: no change); bad layouts."""
+touches a span: no change); bad layouts; the CLI."""
+import json
 import math
 
 import numpy as np
@@ -11,7 +12,9 @@ from scipy.integrate import quad
 from scipy.optimize import fsolve
 
 from analytic import bechtel, belt_steady
+from ancf.cli import main
 from ancf.common.params import InputError
+from ancf.study.schemas import schema, validate
 
 BECHTEL = {p.name: p.default for p in bechtel.PARAMS}
 #: the two are one model in two closed forms, each solved by Brent's method to 1e-12 N on
@@ -331,3 +334,21 @@ def test_the_driver_sets_the_sense():
     cw = belt_steady.solve([dict(p[0], omega=-p[0]["omega"]), p[1]], **kw)
     assert [s["tension_N"] for s in cw["spans"]] == [s["tension_N"] for s in ccw["spans"]]
     assert [q["omega"] for q in cw["pulleys"]] == [-q["omega"] for q in ccw["pulleys"]]
+
+
+# ------------------------------------------------------------------------------ CLI
+def test_cli_three_pulleys(capsys):
+    assert main(["analytic", "belt-steady", "--set", "law3=idler", "--json"]) == 0
+    out = json.loads(capsys.readouterr()[0])
+    assert validate(out, schema("analytic belt-steady")) == []
+    idler = out["results"]["pulleys"][1]
+    assert idler["torque_Nm"] == 0.0 and idler["arm_angle_rad"] is None
+    del out["results"]["spans"][0]["tension_N"]
+    assert validate(out, schema("belt-steady")) == ["$.results.spans[0]: missing key 'tension_N'"]
+
+
+def test_cli_bad_layout_is_one_error_line(capsys):
+    assert main(["analytic", "belt-steady", "--set", "x2=0.1", "--set", "y2=0", "--json"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1
+    assert err.startswith("error: pulleys 'driver' and 'driven' overlap")
