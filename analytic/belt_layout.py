@@ -41,14 +41,13 @@ def turn(v: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True)
 class Layout:
-    """The wrapped path: per span j (pulley j to j + 1) the normal ``m[j]``, direction
-    ``d[j]``, length ``span[j]`` (m), end points ``start[j]``, ``end[j]`` (m); per pulley
-    the sense ``sense[i]`` (+1 counter-clockwise) and wrap ``wrap[i]`` (rad)."""
+    """The wrapped path: per span j (pulley j to j + 1) the direction ``d[j]``, length
+    ``span[j]`` (m), end points ``start[j]``, ``end[j]`` (m); per pulley the sense
+    ``sense[i]`` (+1 counter-clockwise) and wrap ``wrap[i]`` (rad)."""
 
     centres: np.ndarray
     radii: np.ndarray
     sense: np.ndarray
-    m: np.ndarray
     d: np.ndarray
     span: np.ndarray
     start: np.ndarray
@@ -142,7 +141,7 @@ def wrap(centres, radii, sides, names, o: int) -> Layout:
     m, span = _tangents(c, r, s)
     start = c + (r * s)[:, None] * m
     end = np.roll(c, -1, axis=0) + np.roll(r * s, -1)[:, None] * m
-    lay = Layout(c, r, s, m, np.stack([turn(v) for v in m]), span, start, end, _wraps(m, s))
+    lay = Layout(c, r, s, np.stack([turn(v) for v in m]), span, start, end, _wraps(m, s))
     if abs(sides @ lay.wrap - 2 * math.pi) > GEOMETRY_RTOL * 2 * math.pi:
         raise _negative_wrap(lay, sides, names) or InputError(
             "pulleys: the belt does not form a simple loop through the pulleys in this order "
