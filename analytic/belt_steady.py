@@ -253,8 +253,8 @@ def _tensioned(pulleys, arm: Arm, EA, rhoA, L0, mu):
     root = 0.0 if g0 == 0 else brentq(lambda x: balance(x)[0], prev, way * psi, xtol=XTOL_PSI,
                                       rtol=RTOL)
     g, lay, st = balance(root)
-    if isinstance(st, Slack) or abs(g) > BALANCE_RTOL * (abs(p["preload"]) + p["stiffness"] * abs(
-            root) + abs(_belt_moment(arm, root, lay, st))):
+    if isinstance(st, Slack) or abs(g) > BALANCE_RTOL * (
+            abs(p["preload"]) + p["stiffness"] * abs(root) + abs(_belt_moment(arm, root, lay, st))):
         back = balance(root - way * 8.0 * (XTOL_PSI + RTOL * abs(root)))[2]  # the slack side
         why = st if isinstance(st, Slack) else back if isinstance(back, Slack) else (
             "friction cannot transmit the torques")
