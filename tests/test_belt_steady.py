@@ -18,7 +18,7 @@ from ancf.study.schemas import schema, validate
 
 BECHTEL = {p.name: p.default for p in bechtel.PARAMS}
 #: the two are one model in two closed forms, each solved by Brent's method to 1e-12 N on
-#: tensions of tens of N (we see 2e-14 relative; a slip arc ln(n_t / n_s) / mu amplifies it)
+#: tensions of tens of N (we see up to 5e-14 relative; a slip arc ln(n_t / n_s) / mu amplifies it)
 SAME = 1e-11
 #: the independent assembly (fsolve, quadrature, tangency by fsolve, dP/dpsi by central
 #: differences of 1e-5 rad): we see 1e-10 relative on tensions, 2e-11 rad on the arm, 1e-11
