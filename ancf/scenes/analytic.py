@@ -5,8 +5,8 @@ import math
 
 import numpy as np
 
-from analytic import (beam_modes, bechtel, moving_string, navier_plate, plate_modes, reissner,
-                      timoshenko)
+from analytic import (beam_modes, bechtel, belt_steady, moving_string, navier_plate, plate_modes,
+                      reissner, timoshenko)
 from analytic.dynamics_refs import rigid_pendulum, spinning_extension
 from ancf.common.inputs import check_sampling, following, intervals
 from ancf.common.params import InputError, Param
@@ -37,6 +37,30 @@ def _reissner(p):
 def _bechtel(p):
     return SceneResult(True, "closed form per slip arc, installed mass by Brent's method "
                        f"(xtol {bechtel.XTOL_N:g} N)", bechtel.results(p))
+
+
+def _three_pulleys(p) -> list:
+    """The scene's layout as :func:`analytic.belt_steady.solve` takes it: the driver at the
+    origin, the third pulley on its exit (slack) span, then the driven pulley."""
+    third = {"name": p["law3"], "centre": (p["x3"], p["y3"]), "radius": p["R3"],
+             "side": p["side3"], "law": p["law3"]}
+    if p["law3"] == "tensioner":
+        third.update(pivot=(p["pivot_x"], p["pivot_y"]), stiffness=p["stiffness"],
+                     preload=p["preload"])
+    return [{"name": "driver", "centre": (0.0, 0.0), "radius": p["R1"], "side": 1,
+             "law": "prescribed", "omega": p["omega"]}, third,
+            {"name": "driven", "centre": (p["x2"], p["y2"]), "radius": p["R2"], "side": 1,
+             "law": "driven", "torque": p["torque"]}]
+
+
+def _belt_steady(p):
+    pulleys = _three_pulleys(p)
+    L0 = belt_steady.path_length(pulleys) / (1.0 + p["T_i"] / p["EA"])
+    return SceneResult(True, "closed form per creep arc, n_t by Brent's method (xtol "
+                       f"{belt_steady.XTOL_N:g} N)" + (", the arm's moment balance by Brent's "
+                       f"method (xtol {belt_steady.XTOL_PSI:g} rad)"
+                       if p["law3"] == "tensioner" else ""),
+                       belt_steady.solve(pulleys, EA=p["EA"], rhoA=p["rhoA"], L0=L0, mu=p["mu"]))
 
 
 def _navier(p):
@@ -145,6 +169,35 @@ _STRING = (
     _count(3),
 )
 
+_M = dict(lo=-10.0, hi=10.0)  # m, a layout's coordinates
+_BELT_STEADY = (
+    Param("EA", 1e5, float, "N", "axial stiffness", lo=0, lo_open=True, hi=1e12),
+    Param("rhoA", 0.1, float, "kg/m", "mass per unstretched length", lo=0, hi=1e3),
+    Param("mu", 0.5, float, "-", "Coulomb friction coefficient", lo=1e-6, hi=10),
+    Param("T_i", 300.0, float, "N", "installation tension: L0 = nominal path / (1 + T_i / EA)",
+          lo=0, lo_open=True, hi=1e9),
+    Param("omega", 100.0, float, "rad/s", "driver speed, counter-clockwise", lo=0, lo_open=True,
+          hi=1e5),
+    Param("R1", 0.08, float, "m", "driver radius (centre at the origin)", lo=0, lo_open=True,
+          hi=10),
+    Param("x2", 0.28, float, "m", "driven pulley centre x", **_M),
+    Param("y2", 0.15, float, "m", "driven pulley centre y", **_M),
+    Param("R2", 0.06, float, "m", "driven pulley radius", lo=0, lo_open=True, hi=10),
+    Param("torque", 5.0, float, "N m", "load torque on the driven pulley", lo=-1e9, hi=1e9),
+    Param("law3", "tensioner", str, "", "third pulley, on the driver's exit span: idler or "
+          "tensioner", choices=("idler", "tensioner")),
+    Param("x3", 0.16, float, "m", "third pulley's (nominal) centre x", **_M),
+    Param("y3", 0.0, float, "m", "third pulley's (nominal) centre y", **_M),
+    Param("R3", 0.035, float, "m", "third pulley radius", lo=0, lo_open=True, hi=10),
+    Param("side3", -1, int, "-", "third pulley's side: 1 the belt's inner side, -1 its back",
+          choices=(-1, 1)),
+    Param("pivot_x", 0.24, float, "m", "tensioner arm pivot x", **_M),
+    Param("pivot_y", -0.01, float, "m", "tensioner arm pivot y", **_M),
+    Param("stiffness", 20.0, float, "N m/rad", "tensioner spring stiffness", lo=0, hi=1e9),
+    Param("preload", 8.0, float, "N m", "tensioner spring moment into the belt at the nominal "
+          "centre", lo=-1e9, hi=1e9),
+)
+
 
 def _with(params, **defaults):
     return tuple(Param(p.name, defaults.get(p.name, p.default), p.kind, p.unit, p.doc, p.lo, p.hi,
@@ -163,6 +216,11 @@ REFERENCES = {
     "bechtel": Scene(
         "bechtel", "Bechtel et al.'s steady extensible belt on two pulleys, stick and slip arcs "
         "(thesis 4.1; Model 2).", bechtel.PARAMS, _bechtel),
+    "belt-steady": Scene(
+        "belt-steady", "Steady extensible belt (Bechtel's model) on N pulleys, here three: a "
+        "driver, an idler or tensioner on its slack span and a driven pulley; span tensions "
+        "and speeds, per pulley creep and stick arcs, slip, torque and a tensioner's angle "
+        "(any layout: analytic.belt_steady.solve).", _BELT_STEADY, _belt_steady),
     "navier-plate": Scene(
         "navier-plate", "Simply supported Kirchhoff plate under uniform pressure: Navier series "
         "centre deflection, summed as Levy's single series; 'terms' counts its correction "

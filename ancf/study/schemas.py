@@ -211,6 +211,25 @@ RESULTS = {
         "axial_extension_m": _nullable("steady axial extension (Eq. 2.36), m"),
         "al": _nullable("the parameter a L of Eq. 2.36"),
         "axial_extension_thesis_m": _nullable("the same as printed in the thesis, m")},
+    "belt-steady": {
+        "path_length_m": field(NUM, "length of the wrapped path at the tensioner's equilibrium, m"),
+        "L0_m": field(NUM, "stress-free belt length used, m"),
+        "spans": field("array", "per span, in belt order", items="object", keys={
+            "from": field(STR, "pulley the span leaves"), "to": field(STR, "pulley it reaches"),
+            "length_m": field(NUM, "span length (common tangent), m"),
+            "tension_N": field(NUM, "tension T, N"), "speed": field(NUM, "belt speed, m/s")}),
+        "pulleys": field("array", "per pulley, in belt order", items="object", keys={
+            "name": field(STR, "pulley name"), "law": field(STR, "prescribed, driven, idler or "
+                                                            "tensioner"),
+            "wrap_rad": field(NUM, "wrap angle, rad"),
+            "stick_arc_rad": field(NUM, "stick arc (from the entry), rad"),
+            "creep_arc_rad": field(NUM, "creep arc (at the exit), rad"),
+            "omega": field(NUM, "angular speed, positive counter-clockwise, rad/s"),
+            "torque_Nm": field(NUM, "the belt's moment on it along its rotation (the driver's: "
+                                    "minus its driving torque), N m"),
+            "slip": field(NUM, "1 - its rim speed / the driver's"),
+            "arm_angle_rad": _nullable("a tensioner's arm angle at equilibrium, pivot to "
+                                       "centre, counter-clockwise from x, rad (null: no arm)")})},
     "bechtel": {**_BELT_STEADY, "capstan": field("object", "the same keys with the belt's "
                                                  "inertia neglected (capstan model)",
                                                  keys=_BELT_STEADY)},
@@ -276,9 +295,11 @@ def _result_schema(decl: dict) -> dict:
     props = {}
     for k, f in decl.items():
         props[k] = {"type": _type(f["kind"], f["nullable"]), "description": f["doc"]}
-        if f["items"]:
+        if f["items"] and f["keys"]:  # an array of objects
+            props[k]["items"] = _result_schema(f["keys"])
+        elif f["items"]:
             props[k]["items"] = {"type": [f["items"], "null"]}
-        if f["keys"]:
+        elif f["keys"]:
             props[k].update({kk: v for kk, v in _result_schema(f["keys"]).items() if kk != "type"})
     return {"type": "object", "properties": props, "additionalProperties": False,
             "required": [k for k, f in decl.items() if f["required"]]}
@@ -424,7 +445,10 @@ def _validate(value, sch: dict, path: str) -> list[str]:
 def _type_text(s: dict) -> str:
     t = s["type"]
     text = " or ".join(t) if isinstance(t, list) else t
-    return text + (f" of {' or '.join(s['items']['type'])}" if "items" in s else "")
+    if "items" not in s:
+        return text
+    item = s["items"]["type"]
+    return f"{text} of {item if isinstance(item, str) else ' or '.join(item)}"
 
 
 def schemas_markdown() -> str:
