@@ -1,7 +1,8 @@
 """``ancf modes`` (issue 24, item 1): the natural frequencies of the static scenes against
 Timoshenko's beam, Navier's plate and Euler's buckling load (references in
-``tests/modal_refs.py``), the solver routes against each other, the zero-energy modes,
-the limit point about the equilibrium, and the bad-input contract."""
+``analytic/beam_modes.py`` and ``analytic/plate_modes.py``, each checked there by a second
+method), the solver routes against each other, the zero-energy modes, the limit point about
+the equilibrium, and the bad-input contract."""
 from __future__ import annotations
 
 import json
@@ -13,7 +14,7 @@ import pytest
 from scipy.optimize import brentq
 
 import ancf
-import modal_refs as refs
+from analytic import beam_modes, plate_modes
 from ancf.cli import main
 
 #: the beam of the acceptance: steel, L / h = 20
@@ -37,7 +38,7 @@ def _bending(scene, n, count=3, **kw):
 
 
 def _timoshenko(support):
-    return np.array(refs.timoshenko(support, count=3, **_section()))
+    return np.array(beam_modes.timoshenko(support, count=3, **_section()))
 
 
 # ------------------------------------------------------------------ beams vs Timoshenko
@@ -61,23 +62,6 @@ def test_bending_frequencies_converge_at_second_order(scene):
     assert np.all(err > 0)  # from above: a consistent mass on a conforming mesh
     slopes = [np.polyfit(np.log(ns), np.log(err[:, k]), 1)[0] for k in range(2)]
     assert np.allclose(slopes, -2.0, atol=0.1), slopes
-
-
-@pytest.mark.parametrize("slenderness", [20, 100])
-def test_the_timoshenko_references_agree_two_ways(slenderness):
-    """The simply supported closed form against the transfer matrix (the cantilever's
-    method), and both supports below Euler-Bernoulli by shear and rotary inertia, ~ (h/L)^2:
-    1.5-4.5 % for mode 3 at L/h = 20, 25 times less at L/h = 100."""
-    s = _section({**STEEL, "h": STEEL["L"] / slenderness})
-    closed = refs.timoshenko_simply_supported(count=3, **s)
-    transfer = refs.timoshenko_transfer("simply-supported", count=3, **s)
-    assert np.allclose(closed, transfer, rtol=1e-8, atol=0)
-    eb_args = {k: s[k] for k in ("L", "E", "I", "rho", "A")}
-    for support in ("simply-supported", "cantilever"):
-        gap = 1.0 - np.array(refs.timoshenko(support, count=3, **s)) / np.array(
-            refs.euler_bernoulli(support, count=3, **eb_args))
-        assert np.all(gap > 0) and np.all(np.diff(gap) > 0)  # shear grows with the mode
-        assert 0.01 < gap[2] * (slenderness / 20) ** 2 < 0.05
 
 
 def test_mode_shapes_are_sampled_along_the_centreline():
@@ -114,7 +98,7 @@ def test_the_3d_beam_twists_at_the_shaft_frequency():
 
 # ------------------------------------------------------------------ plate vs Navier
 def _navier(p, count):
-    return np.array(refs.navier_frequencies(p["a"], p["a"], p["h"], p["E"], p["nu"], p["rho"],
+    return np.array(plate_modes.navier_frequencies(p["a"], p["a"], p["h"], p["E"], p["nu"], p["rho"],
                                             count)[0])
 
 
@@ -240,7 +224,7 @@ def test_a_slender_beam_keeps_its_lowest_modes():
         eigen.DENSE_MAX = old
     assert dense["method"].startswith("dense") and lanczos["method"].startswith("shift-invert")
     assert np.allclose(dense["frequencies_hz"], lanczos["frequencies_hz"], rtol=1e-7, atol=0)
-    eb = refs.euler_bernoulli("cantilever", p["L"], p["E"], p["b"] * p["h"] ** 3 / 12.0,
+    eb = beam_modes.euler_bernoulli("cantilever", p["L"], p["E"], p["b"] * p["h"] ** 3 / 12.0,
                               p["rho"], p["b"] * p["h"], 1)[0]
     assert abs(dense["frequencies_hz"][0] / eb - 1.0) < 2e-4
 
