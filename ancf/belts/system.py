@@ -94,9 +94,10 @@ def small_lu(A, piv) -> bool:
 def small_solve(A, piv, b):
     """b = A^-1 b in place with the factors of :func:`small_lu`."""
     k = b.size
-    for c in range(k):
+    for c in range(k):  # the row swaps first: the factors' L holds the rows swapped later
         p = piv[c]
         b[c], b[p] = b[p], b[c]
+    for c in range(k):
         for i in range(c + 1, k):
             b[i] -= A[i, c] * b[c]
     for c in range(k - 1, -1, -1):
