@@ -18,6 +18,10 @@ from ancf.common.params import InputError
 from ancf.common.strict_json import dumps
 
 
+#: the scenes that read their input from a file (``ancf run NAME --file PATH``)
+FILE_SCENES = ("belt-drive",)
+
+
 def _registries():
     from ancf.scenes.analytic import REFERENCES
     from ancf.scenes import SCENES
@@ -79,15 +83,27 @@ def _run(registry, kind, args) -> int:
     vtk = getattr(args, "vtk", None)
     if vtk is not None:  # --vtk: the input, then the directory, checked before the run
         from ancf.scenes.vtk import check_directory
-        registry[args.name].resolve(_parse_sets(args.set))
+        registry[args.name].resolve(_overrides(args))
         check_directory(vtk)
-    out, res = registry[args.name].execute(_parse_sets(args.set))
+    out, res = registry[args.name].execute(_overrides(args))
     if vtk is not None:
         from ancf.scenes.vtk import write_run
         pvd, steps = write_run(args.name, res.extra, vtk)
         if not args.json:  # stdout stays one JSON object; stderr errors and warnings only
             print(f"vtk: wrote {pvd} ({steps} step{'s' if steps != 1 else ''})")
     return _print(out, args)
+
+
+def _overrides(args) -> dict:
+    """The --set overrides, with ``file`` from --file (the belt-drive scene only)."""
+    sets = _parse_sets(args.set)
+    path = getattr(args, "file", None)
+    if path is not None:
+        if args.name not in FILE_SCENES:
+            raise InputError(f"--file: scene {args.name!r} takes no file; allowed: the scenes "
+                             f"{', '.join(FILE_SCENES)}")
+        sets["file"] = path
+    return sets
 
 
 def _modes(args) -> int:
@@ -196,6 +212,9 @@ def main(argv=None) -> int:
     sub.choices["run"].add_argument(
         "--vtk", metavar="DIR", help="write the deformed mesh as a ParaView time series: "
         "DIR/SCENE.pvd and one .vtu per output step")
+    sub.choices["run"].add_argument(
+        "--file", metavar="PATH", help="the drive file of the belt-drive scene (TOML); --set "
+        "section.key=value overrides its keys")
     p = sub.add_parser("modes", help="natural frequencies and mode shapes of a static scene")
     p.add_argument("name")
     p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter")

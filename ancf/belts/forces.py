@@ -1,5 +1,5 @@
 """Compiled force evaluation of the belt drives: elastic and contact forces of the belt
-and the moment on the driven pulley, with the force part of the bordered iteration
+and the moments on the free pulleys, with the force part of the bordered iteration
 matrix of the march (:mod:`ancf.belts.system`).
 
 A drive reaches compiled code as named data, one record type per drive:
@@ -10,16 +10,20 @@ elements, :mod:`ancf.belts.contact2d`) and :class:`Drive3D` (of
 compile time by the record's type (:func:`drive_forces`).
 
 :func:`evaluate` returns the residual forces ``fz`` at the system state (x, v): belt
-``dU/dz - Q_c`` (band numbering of the drive's pattern) and ``fz[n] = -T_c + T_a``
-of the driven pulley, and, if ``want_J``, the force part of the iteration matrix:
-band ``mat`` = bp (K - dQ_c/dz) - gp dQ_c/dz' (without M), border ``col`` = -gp
-dQ_c/dtheta' and ``row`` = -bp dT_c/dz - gp dT_c/dz', and the corner's force part
--gp dT_c/dtheta' (returned with the number of element-pulley pairs the contact
-kernel evaluated).  bp, gp = 1, 0 or 0, 1 give df/dx and df/dv alone.
+``dU/dz - Q_c - F_g`` (band numbering of the drive's pattern; F_g the belt's weight)
+and, for free pulley j (pulley p with ``free[p] = j``; k of them, coordinates n + j
+their angles theta_j), ``fz[n + j] = -T_c,p + T_a,p + c_j theta_j'`` (Eq. 3.26 with
+the load torque T_a and the rotational damping c_j), and, if ``want_J``, the force
+part of the iteration matrix: band ``mat`` = bp (K - dQ_c/dz) - gp dQ_c/dz' (without
+M), border columns ``col[j]`` = -gp dQ_c/dtheta_j' and rows ``row[j]`` = -bp
+dT_c,p/dz - gp dT_c,p/dz', and the corner's force part ``corner`` (k, k), diagonal:
+gp (c_j - dT_c,p/dtheta_j').  It returns the number of element-pulley pairs the
+contact kernel evaluated.  bp, gp = 1, 0 or 0, 1 give df/dx and df/dv alone.
 
-``laws`` are the pulley laws at the evaluation time: [omega_driver rad/s, T_a N m]
-in 2D, followed in 3D by the driver's displacement u (m) and its rate (m/s) along
-the drive's ``shift`` direction (Eq. 4.46).
+``laws`` are the pulley laws at the evaluation time, one row per pulley: a pulley
+turned by its law (``free[p] = -1``) its angular velocity (rad/s), a free one its load
+torque T_a (N m); in 3D followed by the driver's displacement u (m) and its rate (m/s)
+along the drive's ``shift`` direction (Eq. 4.46).
 """
 from __future__ import annotations
 
@@ -34,9 +38,6 @@ from ancf.common.dispatch import implements
 from ancf.core.pattern import scatter
 from ancf.elements import dufva2d, plate36
 
-DRIVEN = 1  # index of the driven pulley in the pulley arrays
-
-
 class Drive2D(NamedTuple):
     """The compiled data of a 2D belt drive (SI units)."""
 
@@ -48,7 +49,10 @@ class Drive2D(NamedTuple):
     centres: np.ndarray  # pulley centres (2, 2), m
     radii: np.ndarray    # pulley radii (2,), m
     prm: np.ndarray      # [k_p, c_p, mu, nu_s] of the contact
-    inertia: float       # driven pulley's moment of inertia, kg m^2
+    free: np.ndarray     # (np,) int: the pulley's coordinate j past the belt's, -1: its law
+    inertia: np.ndarray  # (k,) the free pulleys' moments of inertia, kg m^2
+    damping: np.ndarray  # (k,) their rotational damping, N m s
+    weight: np.ndarray   # (n,) the belt's weight as generalised forces F_g, N
 
 
 class Drive3D(NamedTuple):
@@ -62,7 +66,10 @@ class Drive3D(NamedTuple):
     centres: np.ndarray  # (2, 3), m
     radii: np.ndarray
     prm: np.ndarray
-    inertia: float
+    free: np.ndarray
+    inertia: np.ndarray
+    damping: np.ndarray
+    weight: np.ndarray   # (n,)
     axes: np.ndarray     # pulley axes (2, 3)
     shift: np.ndarray    # direction the driver is moved in (3,)
 
@@ -112,33 +119,55 @@ def _arrays(nel, nd, npul, want_J):
 
 
 @njit(cache=True)
-def _combine(g, K, c, vidx, midx, bp, gp, want_J, Ta, fz, mat, col, row):
-    """Elastic gradient g, K and contact outputs c into fz, mat, col, row; the corner."""
+def _combine(g, K, c, drive, bp, gp, want_J, laws, omegas, fz, mat, col, row, corner):
+    """Elastic gradient g, K and contact outputs c into fz, mat, col, row and the corner."""
     Q, Kq, Cv, Qw, T, dTq, dTv, dTw = c
+    vidx, free = drive.vidx, drive.free
     nel, nd = g.shape
-    n = fz.size - 1
+    n = fz.size - drive.inertia.size
     fz[:] = 0.0
     g -= Q
     if want_J:
         mat[:, :] = 0.0
-        col[:] = 0.0
-        row[:] = 0.0
+        col[:, :] = 0.0
+        row[:, :] = 0.0
+        corner[:, :] = 0.0
         for e in range(nel):
             for a in range(nd):
                 i = vidx[e, a]
-                col[i] -= gp * Qw[e, DRIVEN, a]
-                row[i] -= bp * dTq[DRIVEN, e, a] + gp * dTv[DRIVEN, e, a]
+                for p in range(free.size):
+                    j = free[p]
+                    if j >= 0:
+                        col[j, i] -= gp * Qw[e, p, a]
+                        row[j, i] -= bp * dTq[p, e, a] + gp * dTv[p, e, a]
                 for b in range(nd):
                     K[e, a, b] = bp * (K[e, a, b] - Kq[e, a, b]) - gp * Cv[e, a, b]
-    scatter(g, K, vidx, midx, fz, mat, want_J)
-    fz[n] = -T[DRIVEN] + Ta
-    return -gp * dTw[DRIVEN]
+    scatter(g, K, vidx, drive.midx, fz, mat, want_J)
+    for i in range(n):
+        fz[i] -= drive.weight[i]
+    for p in range(free.size):
+        j = free[p]
+        if j >= 0:
+            fz[n + j] = -T[p] + laws[p] + drive.damping[j] * omegas[p]
+            if want_J:
+                corner[j, j] = -gp * dTw[p] + gp * drive.damping[j]
 
 
 @njit(cache=True)
-def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row):
+def pulley_speeds(v, laws, free, k):
+    """Angular velocities (np,) rad/s: a free pulley's from v (its coordinate n + j), the
+    others' from their laws."""
+    n = v.size - k
+    omegas = np.empty(free.size)
+    for p in range(free.size):
+        omegas[p] = laws[p] if free[p] < 0 else v[n + free[p]]
+    return omegas
+
+
+@njit(cache=True)
+def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row, corner):
     """The residual forces and the force part of the iteration matrix (module docstring);
-    returns (corner, pairs)."""
+    returns the pairs the contact kernel evaluated."""
     nel, nd = drive.vidx.shape
     dim = drive.centres.shape[1]
     E, V = np.empty((nel, nd // dim, dim)), np.empty((nel, nd // dim, dim))
@@ -146,7 +175,7 @@ def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row):
     g = np.zeros((nel, nd))
     K = np.zeros((nel, nd, nd)) if want_J else np.zeros((0, 0, 0))
     c = _arrays(nel, nd, drive.radii.size, want_J)
-    omegas = np.array([laws[0], v[v.size - 1]])
+    omegas = pulley_speeds(v, laws, drive.free, drive.inertia.size)
     pairs = drive_forces(drive, E, V, laws, omegas, want_J, g, K, c)
-    return _combine(g, K, c, drive.vidx, drive.midx, bp, gp, want_J, laws[1], fz, mat, col,
-                    row), pairs
+    _combine(g, K, c, drive, bp, gp, want_J, laws, omegas, fz, mat, col, row, corner)
+    return pairs

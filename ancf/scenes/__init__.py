@@ -26,7 +26,8 @@ MODULES = {"simply-supported": "simply_supported", "cantilever": "cantilever",
            "belt-free-static": "belt_free_static", "belt2d": "belt2d",
            "plate-square": "plate_square", "plate-strip": "plate_strip",
            "beam3d-cantilever": "beam3d_cantilever", "belt3d": "belt3d",
-           "princeton-beam": "princeton_beam", "beam3d-bending": "beam3d_bending"}
+           "princeton-beam": "princeton_beam", "beam3d-bending": "beam3d_bending",
+           "belt-drive": "belt_drive"}
 
 
 def scene(name: str):

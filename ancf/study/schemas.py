@@ -169,6 +169,36 @@ RESULTS = {
                                             "(0: start = laid)"),
         "belt_length_m": field(NUM, "reference (unstretched) belt length used, m"),
         "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle")},
+    "belt-drive": {
+        **_DYNAMIC,
+        "pulleys": field("array", "per pulley, in belt order (null when the run stopped)",
+                         items="object", nullable=True, keys={
+            "name": field(STR, "pulley name"),
+            "omega": series("angular velocity, counter-clockwise positive, rad/s"),
+            "torque_Nm": series("the belt's moment on it (friction), counter-clockwise "
+                                "positive, N m"),
+            "omega_mean": field(NUM, "mean angular velocity over run.steady_window, rad/s"),
+            "slip": field(NUM, "1 - its mean rim speed / the driver's (the first prescribed "
+                               "pulley) over the window")}),
+        "spans": field("array", "per span (pulley k to k + 1), in belt order (null when the "
+                       "run stopped)", items="object", nullable=True, keys={
+            "from": field(STR, "pulley the span leaves"), "to": field(STR, "pulley it reaches"),
+            "tension_mean_N": field(NUM, "mean axial force over its middle third, averaged "
+                                         "over the samples of run.steady_window, N"),
+            "tension_N": field(NUM, "the same at t_end, N")}),
+        "belt_s_m": field("array", "belt arc coordinate (reference length from node 0) of "
+                          "the points along the belt, m", nullable=True, items=NUM),
+        "axial_force_N": field("array", "axial force at those points at t_end, N",
+                               nullable=True, items=NUM),
+        "speed_m_s": field("array", "belt speed at those points at t_end, m/s", nullable=True,
+                           items=NUM),
+        "penetration_max_m": _nullable("largest penetration of the belt's centreline sample "
+                                       "points into a pulley at t_end, m"),
+        "total_dofs": field(INT, "belt coordinates plus the free pulleys' angles"),
+        "contact_pairs": field(INT, "element-pulley pairs whose Gauss points were evaluated "
+                                    "(after the bounding test), summed over force evaluations"),
+        "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
+                                            "(0: start = laid)")},
     "plate-square": {
         "center_deflection_m": _nullable("centre deflection along the pressure (linear solve), m"),
         "navier_center_deflection_m": _nullable("Navier's series at the same parameters, m"),

@@ -1,0 +1,68 @@
+"""The 2D belt model of a drive file: a :class:`ancf.belts.drive_data.DriveDescription`
+as a :class:`ancf.belts.drive2d.BeltDrive` on any number of pulleys.
+
+The belt (Dufva elements) is laid on the description's wrapped path (the centreline's,
+at radius + ``belt.contact_offset``), with its reference length L0; the contact acts on
+the centreline at that radius.  Each pulley's law becomes a row of the
+:class:`ancf.belts.drive2d.Rig`: ``prescribed`` its angular velocity law, ``fixed``
+zero, ``driven`` a free pulley with its inertia, damping and load torque law, ``idler``
+a free one without load.  The dynamics do not cover yet (InputError naming the key): a
+``tensioner`` arm, a pulley on the belt's back (``side = -1``) and the belt's
+strain-rate damping.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
+from ancf.belts.drive_data import DriveDescription, load_law, omega_law
+from ancf.common.params import InputError
+
+FREE = ("driven", "idler")
+
+
+def _unsupported(d: DriveDescription) -> None:
+    for i, p in enumerate(d.pulleys):
+        if p.law == "tensioner":
+            raise InputError(f"pulleys.{i}.law = 'tensioner' is not in the dynamics yet; "
+                             "allowed: prescribed, driven, idler, fixed")
+        if p.side != 1:
+            raise InputError(f"pulleys.{i}.side = {p.side}: a pulley on the belt's back is not "
+                             "in the dynamics yet; allowed: 1")
+    for key in ("damping_axial", "damping_bending"):
+        if d.belt[key] != 0:
+            raise InputError(f"belt.{key} = {d.belt[key]!r}: strain-rate damping is not in the "
+                             "dynamics yet; allowed: 0")
+
+
+def _zero(t):
+    return np.zeros(np.shape(t))
+
+
+def rig(d: DriveDescription) -> Rig:
+    """The pulleys of the description as the march sees them."""
+    offset = d.belt["contact_offset"]
+    free = np.cumsum([p.law in FREE for p in d.pulleys]) - 1
+    laws = {"prescribed": omega_law, "driven": load_law}
+    chosen = [p for p in d.pulleys if p.law in FREE]
+    return Rig(tuple(p.name for p in d.pulleys),
+               np.array([p.centre for p in d.pulleys], dtype=float),
+               np.array([p.radius + offset for p in d.pulleys]),
+               np.array([j if p.law in FREE else -1 for p, j in zip(d.pulleys, free)]),
+               np.array([p.params["inertia"] for p in chosen], dtype=float),
+               np.array([p.params["damping"] for p in chosen], dtype=float),
+               tuple(laws[p.law](p) if p.law in laws else _zero for p in d.pulleys))
+
+
+def spec(d: DriveDescription) -> Belt2DSpec:
+    """The belt and its contact (the friction law's ``mu``, ``nu_s``)."""
+    b, c, f = d.belt, d.contact, d.friction
+    return Belt2DSpec(d.path, b["length"], b["n_elements"], b["E"], b["nu"], b["rho"], b["b"],
+                      b["h"], b["ks"], b["alpha1"], b["alpha2"], b["elastic_points"], c["k_p"],
+                      c["c_p"], f["mu"], f["nu_s"], c["gauss_points"])
+
+
+def build(d: DriveDescription) -> BeltDrive:
+    """The drive's model; InputError for what the dynamics do not cover yet."""
+    _unsupported(d)
+    return BeltDrive(spec(d), rig(d), d.gravity)
