@@ -118,7 +118,7 @@ def test_serpentine_example_tensioner_balances_the_laid_belt():
 
 
 def test_every_friction_law_declares_its_parameters():
-    assert set(dd.FRICTION_KEYS) == set(friction.LAWS)
+    assert set(dd.FRICTION_KEYS) == set(friction.PARAMS) == set(friction.LAWS)
 
 
 def test_tables_and_constants_become_laws_of_time():

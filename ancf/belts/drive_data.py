@@ -39,10 +39,11 @@ Keys without a default (:data:`REQUIRED`) must be given.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ancf.belts import friction
 from ancf.belts.contact2d import SUPPORTED_POINTS
 from ancf.belts.path import PulleyPath
 from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS
@@ -185,11 +186,9 @@ def sub_keys(law_key: str, name: str) -> tuple:
     return ("omega_final" if law_key == "speed" else "load_torque", "t0", "t1")
 
 
-#: each friction law's parameters (every row of ancf.belts.friction.LAWS has one)
-FRICTION_KEYS = {"creep-rate": _keys(
-    Param("mu", REQUIRED, float, "-", "friction coefficient", lo=0, hi=10),
-    Param("nu_s", REQUIRED, float, "kg/(m s)", "creep-rate factor (Fig. 3.3)", lo=0,
-          lo_open=True, hi=1e9))}
+#: each friction law's parameters (ancf.belts.friction.PARAMS), all required
+FRICTION_KEYS = {law: _keys(*(replace(q, default=REQUIRED) for q in params))
+                 for law, params in friction.PARAMS.items()}
 
 CONTACT = _keys(
     Param("k_p", REQUIRED, float, "N/m^2", "penalty stiffness per unit length", lo=0,

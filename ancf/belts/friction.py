@@ -34,6 +34,8 @@ import numpy as np
 from numba import njit
 from numba.extending import overload
 
+from ancf.common.params import Param
+
 #: branch codes of the creep-rate law (those of :func:`ancf.belts.contact3d.contact_state3d`)
 LINEAR, SATURATED = 2, 3
 
@@ -92,6 +94,12 @@ def _direction(v, s):
 
 #: name -> (force, chain)
 LAWS = {"creep-rate": (creep_rate_force, creep_rate_chain)}
+
+#: each law's parameters as a drive file's [friction] table gives them (ranges checked there)
+PARAMS = {"creep-rate": (
+    Param("mu", None, float, "-", "friction coefficient", lo=0, hi=10),
+    Param("nu_s", None, float, "kg/(m s)", "creep-rate factor (Fig. 3.3)", lo=0, lo_open=True,
+          hi=1e9))}
 
 #: the law the contact kernels are compiled with
 LAW = "creep-rate"
