@@ -62,7 +62,7 @@ ancf.common.params.InputError: n_elements = 0 is out of range; allowed: an integ
 >>> ancf.run("cantileverr")
 Traceback (most recent call last):
 ...
-ancf.common.params.InputError: run: unknown name 'cantileverr'; allowed: simply-supported, cantilever, axial-bar, pendulum, spinning-beam, belt-free-static, belt2d, plate-square, plate-strip, beam3d-cantilever, belt3d, princeton-beam, beam3d-bending
+ancf.common.params.InputError: run: unknown name 'cantileverr'; allowed: simply-supported, cantilever, axial-bar, pendulum, spinning-beam, belt-free-static, belt2d, plate-square, plate-strip, beam3d-cantilever, belt3d, princeton-beam, beam3d-bending, belt-drive
 """
 from __future__ import annotations
 

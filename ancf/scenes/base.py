@@ -88,6 +88,9 @@ class Scene:
     # it adds to the scene's own
     modal: Callable[[dict], ModalModel] | None = None
     modal_params: tuple = ()
+    # in the reports' speed-accuracy sweeps (False: a drive-file scene, whose model
+    # choices live in its file)
+    swept: bool = True
 
     def resolve(self, overrides: dict | None = None) -> dict:
         """All parameter values: defaults, then ``overrides`` (strings or values)."""

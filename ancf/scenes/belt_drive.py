@@ -152,4 +152,4 @@ SCENE = FileScene(
     (Param("file", DEFAULT_FILE, str, doc="the TOML drive file (ancf run belt-drive --file)"),
      Param("set", "", str, doc=f"the drive file's overrides applied, '{SEP}'-separated "
            "(--set section.key=value)")),
-    run, warn=warn)
+    run, warn=warn, swept=False)

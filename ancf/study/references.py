@@ -783,9 +783,9 @@ def spec(scene: str) -> SceneSpec:
 
 
 def specs() -> dict:
-    """Specs of every scene present in ``SCENES`` (declaration order of the registry)."""
+    """Specs of every swept scene of ``SCENES`` (declaration order of the registry)."""
     from ancf.scenes import SCENES
-    return {name: spec(name) for name in SCENES}
+    return {name: spec(name) for name, s in SCENES.items() if s.swept}
 
 
 def model_physics(scene: str, params: dict) -> frozenset:
