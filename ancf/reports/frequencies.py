@@ -52,7 +52,7 @@ def _beam_table(df: pd.DataFrame, support: str) -> pd.DataFrame:
     return pd.DataFrame([{"scheme": r["scheme"], "n": r["n"], "f1 Hz": r["f1 Hz"],
                           "error f1": _pct(r["error f1"]), "f2 Hz": r["f2 Hz"],
                           "error f2": _pct(r["error f2"]), "f3 Hz": r["f3 Hz"],
-                          "error f3": _pct(r["error f3"]), TIMING: _ms(r["cpu s"])}
+                          "error f3": _pct(r["error f3"]), TIMING: _ms(r["timing: CPU s"])}
                          for _, r in d.iterrows()])
 
 
@@ -163,7 +163,7 @@ def _plate_part() -> list:
         "the repeated pairs (1, 2), (2, 1) and (1, 3), (3, 1)); convergence from below.\n",
         markdown_table(plate.assign(**{c: plate[c].map(_pct) for c in plate.columns
                                        if c.startswith("error")},
-                                    **{TIMING: plate["cpu s"].map(_ms)}).drop(columns="cpu s"), 5),
+                                    **{TIMING: plate["timing: CPU s"].map(_ms)}).drop(columns="timing: CPU s"), 5),
         "", _plate_figure(plate, free),
         "## Free–free square plate: eigenvalue ratios (Exudyn's ANCFThinPlateTests)\n",
         "`ancf modes plate-square --set supports=free` with Exudyn's plate (a = "
@@ -270,7 +270,8 @@ def _belt_part() -> list:
         "perpendicular bisector (`mid_tight_y_m`, `mid_slack_y_m`), sampled every 1 ms over the "
         f"steady window {fq.SPAN_START:g}–{p['t_end']:g} s (driver speed and load torque at "
         "their final values), its mean removed, a Hann window, the FFT zero-padded "
-        f"{fq.ZERO_PAD} times, the highest peak above {fq.SPAN_LOW:g} Hz. Reference: "
+        f"{fq.ZERO_PAD} times, the highest peak between {fq.SPAN_LOW:g} Hz and "
+        f"{fq.SPAN_HIGH:g} × the element passing frequency (below). Reference: "
         "`analytic.moving_string`, f_n = n c (1 − v²/c²)/(2L), c = √(T/ρA), with ρA = "
         f"{p['rho'] * p['b'] * p['h']:g} kg/m, L the span between the tangent points, T and v "
         "the mean axial force and speed of the belt points in each span's middle third, "
