@@ -286,7 +286,7 @@ def _belt_part() -> list:
         f"EA = {EA:g} N, ℓ the elements' reference length (its second harmonic shows too): "
         "the polygonal mesh excites the spans. The slack span, at lower tension, has the "
         "lower frequency and the larger motion, the observation of belt2d.md on Figs "
-        f"3.10–3.11. Run CPU time (timing): {b['cpu s']:.1f} s.\n"]
+        f"3.10–3.11. Run CPU time (timing): {b['timing: CPU s']:.1f} s.\n"]
 
 
 def _checks_table(checks, status) -> list:
