@@ -11,6 +11,16 @@ w = sin(m pi x / a) sin(n pi y / b), m, n = 1, 2, ...:
 The lowest ``count`` frequencies have m <= count and n <= count (for a fixed n, the count
 modes (1..count, n) lie below any m > count), so that grid is sorted; equal frequencies
 (the square's (1, 2) and (2, 1)) are ordered by m, then n.
+
+The completely free rectangle has no closed form; :func:`free_ratios` gives its lowest
+elastic frequencies by the Rayleigh-Ritz method (Leissa, chapter 4.6) on the products
+P_i(xi) P_j(eta) of Legendre polynomials up to ``degree`` on [-1, 1]^2 (complete for the
+free plate, no boundary condition to impose: the Ritz values converge from above as the
+degree grows), the energy D/2 int (w_xx^2 + w_yy^2 + 2 nu w_xx w_yy + 2 (1 - nu) w_xy^2)
+and the kinetic energy rho h/2 omega^2 int w^2 integrated exactly by Gauss-Legendre
+quadrature; the three rigid motions (1, xi, eta) are the zero eigenvalues dropped.  The
+frequencies come as ratios omega / (pi^2 / a^2 sqrt(D / (rho h))), Exudyn's
+(``TestModels/ANCFThinPlateTests.py``) normalisation, which depend on nu and b / a only.
 """
 from __future__ import annotations
 
@@ -49,3 +59,35 @@ def navier_frequencies(a: float, b: float, h: float, E: float, nu: float, rho: f
     modes = sorted(modes, key=lambda mn: (key[mn], mn))[:count]
     freqs = np.array([key[mn] for mn in modes]) * math.pi**2 * scale / (2.0 * math.pi)
     return freqs, modes
+
+
+#: rigid motions of the free plate (translation and two tilts): the Ritz zero eigenvalues
+FREE_RIGID = 3
+
+
+def _legendre_1d(degree: int) -> tuple:
+    """(int P_i P_j, int P_i' P_j', int P_i'' P_j'', int P_i'' P_j) over [-1, 1], exact."""
+    from numpy.polynomial import legendre as L
+    g, w = L.leggauss(degree + 2)
+    eye = np.eye(degree + 1)
+    vals = [np.array([L.legval(g, L.legder(c, k)) for c in eye]) for k in range(3)]
+    gram = lambda u, v: (u * w) @ v.T  # noqa: E731
+    return gram(vals[0], vals[0]), gram(vals[1], vals[1]), gram(vals[2], vals[2]), \
+        gram(vals[2], vals[0])
+
+
+def free_ratios(nu: float, count: int = 4, degree: int = 16, aspect: float = 1.0) -> np.ndarray:
+    """The lowest ``count`` elastic frequencies of the free a x b plate (b = aspect a) as
+    ratios omega / (pi^2 / a^2 sqrt(D / (rho h))), ascending (Ritz, Legendre degree
+    ``degree`` per direction)."""
+    count = mode_count("count", count)
+    nu, aspect = finite("nu", nu), positive("aspect", aspect)
+    m0, m1, m2, a20 = _legendre_1d(degree)
+    sx, sy = 2.0, 2.0 / aspect  # d/dx = (2 / a) d/dxi with a = 1; d/dy = (2 / b) d/deta
+    K = (sx**4 * np.kron(m2, m0) + sy**4 * np.kron(m0, m2)
+         + nu * sx**2 * sy**2 * (np.kron(a20, a20.T) + np.kron(a20.T, a20))
+         + 2.0 * (1.0 - nu) * sx**2 * sy**2 * np.kron(m1, m1))
+    import scipy.linalg as sla
+    lam = sla.eigh(K, np.kron(m0, m0), eigvals_only=True,
+                   subset_by_index=[FREE_RIGID, FREE_RIGID + count - 1])
+    return np.sqrt(lam) / math.pi**2

@@ -77,11 +77,22 @@ def _span_coords(points, span):
     return lam, off
 
 
+def _middle_third(smp: BeltSample, span, R: float) -> np.ndarray:
+    """The belt points in the middle third of ``span`` within R/2 of its line (bool)."""
+    lam, off = _span_coords(smp.r, span)
+    return (lam > 1 / 3) & (lam < 2 / 3) & (np.abs(off) < R / 2)
+
+
 def span_tension(smp: BeltSample, span, R: float) -> float:
     """Mean axial force (N) over the belt points in the middle third of ``span``."""
-    lam, off = _span_coords(smp.r, span)
-    sel = (lam > 1 / 3) & (lam < 2 / 3) & (np.abs(off) < R / 2)
+    sel = _middle_third(smp, span, R)
     return float(smp.N[sel].mean()) if sel.any() else float("nan")
+
+
+def span_speed(smp: BeltSample, span, R: float) -> float:
+    """Mean speed |v| (m/s) of the belt points in the middle third of ``span``."""
+    sel = _middle_third(smp, span, R)
+    return float(smp.speed[sel].mean()) if sel.any() else float("nan")
 
 
 def span_midpoint(smp: BeltSample, span, R: float) -> np.ndarray:

@@ -18,6 +18,7 @@ from ancf.reports.bechtel import bechtel_chapter
 from ancf.reports.belt3d import belt3d_chapter
 from ancf.reports.beam3d_benchmarks import beam3d_benchmarks_chapter
 from ancf.reports.extremes import extremes_chapter
+from ancf.reports.frequencies import frequencies_chapter
 from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
 from ancf.reports.elements3d import elements3d_chapter
@@ -192,7 +193,7 @@ def static_chapter() -> tuple[str, dict]:
 
 
 CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md", "belt2d.md",
-            "bechtel.md", "elements3d.md", "belt3d.md", "beam3d_benchmarks.md")
+            "bechtel.md", "elements3d.md", "belt3d.md", "beam3d_benchmarks.md", "frequencies.md")
 
 _INDEX = [
     "| report | contents |", "|---|---|",
@@ -223,6 +224,11 @@ _INDEX = [
     "elements per element and scheme (locking, torsion), mesh convergence; Nachbagauer et "
     "al.'s 3D general bending against Table 4, the continuum's second-order terms; "
     "acceptance checks |",
+    "| [frequencies.md](frequencies.md) | Natural frequencies: beams per element and "
+    "integration scheme vs Timoshenko (convergence orders, locking from slender to thick), "
+    "the simply supported plate vs Navier, the free-free plate's ratios vs Exudyn and the "
+    "Ritz series, the axial bar's first frequency falling to zero at Euler's load, the "
+    "running belt's span spectra vs the axially moving string; acceptance checks |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
@@ -237,7 +243,8 @@ def _chapters() -> dict:
     """Chapter file -> its generator (``() -> (markdown, statuses)``), in CHAPTERS order."""
     return dict(zip(CHAPTERS, (static_chapter, dynamics_chapter, speed_accuracy_chapter,
                                extremes_chapter, belt2d_chapter, bechtel_chapter,
-                               elements3d_chapter, belt3d_chapter, beam3d_benchmarks_chapter)))
+                               elements3d_chapter, belt3d_chapter, beam3d_benchmarks_chapter,
+                               frequencies_chapter)))
 
 
 def write_chapters(root: Path, only: str | None = None) -> dict:

@@ -20,6 +20,12 @@ bending modes of a slender beam to the round-off of its stiffest, axial and shea
   solver uses (:func:`ancf.solvers.linear.factor`: the compiled band LU, or SuperLU for a
   CSR pattern).
 
+Zero-energy modes (rigid motion, a mechanism) sit at round-off just above that shift:
+their mu are up to 1e12 times the others', which the Lanczos basis then resolves only
+to ~1e-3 (a free plate's first elastic frequency).  When the computed eigenvalues span more
+than :data:`SPREAD_MAX` in distance from the shift, they are computed again with the shift
+moved down by half the highest one's distance (every mu then within a few times the others).
+
 One eigenpair more than asked for is computed, and an inertia count between the highest
 reported and the next (just above the next where the two are one repeated eigenvalue)
 confirms that none below was missed (the Sturm check).  :attr:`Eigenpairs.stiffness_rel`
@@ -48,6 +54,9 @@ SHIFT_ATTEMPTS = 30
 #: two eigenvalues closer than this fraction of their distance from the shift are one
 #: repeated eigenvalue to the Sturm check (computed ones agree to about 1e-12 of it)
 STURM_MARGIN = 1e-8
+#: the largest ratio of (lambda - sigma) between the highest and the lowest computed
+#: eigenpair before the shift is moved down (zero-energy modes at the shift)
+SPREAD_MAX = 1e6
 
 
 class EigenFailure(Exception):
@@ -99,7 +108,12 @@ def lowest(pattern, K, M, count: int) -> Eigenpairs:
     sigma, facts = _shift(pattern, K, M, top)
     k = min(count + 1, n - 1)  # one more for the Sturm check
     dense = n <= DENSE_MAX or 2 * k >= n
-    w, V, method, solves = (_dense if dense else _lanczos)(pattern, K, M, k, sigma)
+    route = _dense if dense else _lanczos
+    w, V, method, solves = route(pattern, K, M, k, sigma)
+    if w.max() - sigma > SPREAD_MAX * (w.min() - sigma):
+        sigma -= 0.5 * (w.max() - sigma)
+        w, V, method, more = route(pattern, K, M, k, sigma)
+        solves, facts = solves + more, facts + 1
     order = np.argsort(w)
     w, V = w[order], V[:, order]
     at = _sturm_point(w, count, sigma)
