@@ -120,3 +120,88 @@ def test_contact_vector_refuses_an_unknown_law_or_wrong_count():
         friction.contact_vector(1e7, 10.0, "bristle", 1.0, 2.0)
     with pytest.raises(ValueError, match="friction law 'coulomb' with 1 values"):
         friction.contact_vector(1e7, 10.0, "coulomb", 1.0)
+
+
+# ------------------------------------------------------------------ the bristle point law
+K_T, D_T, STEP = 4e8, 5758.0, 2e-5  # THREAD's bristle (per unit length), a step, s
+
+
+def _bristle_prm(kt=K_T, dt=D_T):
+    prm = np.zeros(friction.PRM_SIZE)
+    prm[3:6] = MU, kt, dt
+    return prm
+
+
+def _bristle(v, z0, Fn, prm):
+    f, z1 = np.zeros(v.size), np.zeros(v.size)
+    branch = friction.bristle_force(tuple(v), tuple(z0), STEP, Fn, prm, f, z1)
+    return branch, f, z1
+
+
+def _states(n, rng):
+    """(v, z0): deflections from 0 to past the Coulomb limit mu F_n / k_t = 1.5e-7 m, and
+    sliding velocities from 0 to 7 m/s, directions random."""
+    for zs in (0.0, 5e-8, 1e-7, 1e-6):
+        for speed in (0.0, 1e-3, 4e-3, 0.5, 7.0):
+            a, b = rng.standard_normal(n), rng.standard_normal(n)
+            yield speed * a / np.linalg.norm(a), zs * b / np.linalg.norm(b)
+
+
+@pytest.mark.parametrize("n", [1, 3])
+def test_bristle_chain_matches_central_differences(n):
+    """The FD contract of the LAWS rows, in v and F_n (z0 and the step are fixed within a
+    step); both branches are reached."""
+    prm, rng, seen = _bristle_prm(), np.random.default_rng(20 + n), set()
+    for v, z0 in _states(n, rng):
+        branch, f, _ = _bristle(v, z0, FN, prm)
+        seen.add(branch)
+        dv = np.zeros((n, n))
+        for j in range(n):
+            e = H * max(np.linalg.norm(v), 1e-3) * np.eye(n)[j]
+            (bp, fp, _), (bm, fm, _) = _bristle(v + e, z0, FN, prm), _bristle(v - e, z0, FN, prm)
+            assert bp == bm == branch, (v, z0, j)
+            dv[:, j] = (fp - fm) / (2 * e[j])
+        (bp, fp, _), (bm, fm, _) = _bristle(v, z0, FN * (1 + H), prm), \
+            _bristle(v, z0, FN * (1 - H), prm)
+        assert bp == bm == branch, (v, z0)
+        dF = ((fp - fm) / (2 * FN * H))[:, None]
+        D = np.zeros((n, n))
+        friction.bristle_chain(branch, tuple(v), tuple(z0), STEP, FN, prm, np.eye(n),
+                               tuple(np.zeros(n)), D)
+        DF = np.zeros((n, 1))
+        friction.bristle_chain(branch, tuple(v), tuple(z0), STEP, FN, prm, np.zeros((n, 1)),
+                               (1.0,), DF)
+        scale = max(np.abs(D).max(), MU)
+        np.testing.assert_allclose(dv, D, rtol=RTOL, atol=RTOL * scale)
+        np.testing.assert_allclose(dF, DF, rtol=RTOL, atol=RTOL * MU)
+    assert seen == {friction.STICK, friction.SLIP}
+
+
+def test_bristle_sticks_as_a_spring_and_damper_and_slips_at_the_coulomb_limit():
+    """Stick: f = -(k_t (z0 + h v) + d_t v), z1 = z0 + h v; slip: |f| = mu F_n against
+    that trial force, and the spring then holds the limit, k_t |z1| = mu F_n."""
+    prm = _bristle_prm()
+    z0, v = np.array([2e-8, -3e-8, 0.0]), np.array([1e-3, 2e-3, -1e-3])
+    branch, f, z1 = _bristle(v, z0, FN, prm)
+    trial = -(K_T * (z0 + STEP * v) + D_T * v)
+    assert branch == friction.STICK and np.linalg.norm(trial) < MU * FN
+    np.testing.assert_allclose(f, trial, rtol=1e-14)
+    np.testing.assert_allclose(z1, z0 + STEP * v, rtol=1e-15)
+    v = np.array([0.3, -0.1, 0.05])
+    branch, f, z1 = _bristle(v, z0, FN, prm)
+    trial = -(K_T * (z0 + STEP * v) + D_T * v)
+    assert branch == friction.SLIP
+    np.testing.assert_allclose(f, MU * FN * trial / np.linalg.norm(trial), rtol=1e-14)
+    assert K_T * np.linalg.norm(z1) == pytest.approx(MU * FN, rel=1e-14)
+
+
+def test_bristle_without_its_spring_is_the_creep_rate_law():
+    """k_t = 0: the bristle law with d_t is the creep-rate law with nu_s = d_t (the same
+    force and branch, linear = stick, saturated = slip)."""
+    prm = _bristle_prm(kt=0.0, dt=1e5)
+    rng = np.random.default_rng(3)
+    for v in _velocities(3, rng):
+        branch, f, _ = _bristle(v, np.zeros(3), FN, prm)
+        b_cr, f_cr = _force("creep-rate", v, FN)
+        assert (branch == friction.STICK) == (b_cr == friction.LINEAR), v
+        np.testing.assert_allclose(f, f_cr, rtol=1e-14, atol=0.0)
