@@ -177,7 +177,7 @@ def test_jacobians_match_central_differences(case):
 def test_point_law_follows_eqs_3_20_to_3_25(case):
     """contact_state against the equations written out in numpy, every branch."""
     E, V, S0, w, centres, radii, omegas, prm = _fd_state(CASES[case])
-    kp, cp, _, mu, q = prm
+    kp, cp, _, mu, q = prm[:5]
     r, d, Fn, phi, vt = contact_state(E, V, S0, centres, radii, omegas, prm)
     rdot = np.einsum("egk,ekd->egd", S0, V)
     a = np.einsum("egk,ekd->egd", S0, E)[:, :, None, :] - centres

@@ -252,7 +252,7 @@ def test_jacobians_match_central_differences(case):
 def test_point_law_follows_eqs_4_43_and_4_44(case):
     """contact_state3d against the equations written out in numpy, every branch."""
     E, V, S0, w, pul, omegas, prm = _fd_state(CASES[case])
-    kp, cp, _, mu, q = prm
+    kp, cp, _, mu, q = prm[:5]
     r, d, Fn, ft, vs, _ = _state(E, V, S0, pul, omegas, prm)
     p = pul["axes"] / np.linalg.norm(pul["axes"], axis=-1, keepdims=True)
     rdot = np.einsum("eqk,ekd->eqd", S0, V)[:, :, None, :]

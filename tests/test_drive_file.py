@@ -72,6 +72,8 @@ def test_thread_example_names_a_friction_law_not_yet_there():
         load(THREAD)
     assert str(exc.value) == ("friction.law = 'bristle' is out of range; allowed: one of "
                               + ", ".join(friction.LAWS))
+    keys = [k for k in read(THREAD)["friction"] if k != "law"]
+    assert keys == [q.name for q in friction.STATE_PARAMS["bristle"]]  # its point law's
 
 
 def test_thread_example_has_the_benchmark_numbers():
