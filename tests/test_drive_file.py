@@ -233,6 +233,12 @@ BAD = [  # (overrides, or an edit of the thesis file's data; the one line it giv
     (_without(("friction", "mu")), r"friction.mu: missing \(law 'creep-rate'\); allowed: a "
      r"number in \[0, 10\] -"),
     (_without(("friction", "law")), "friction.law: missing; allowed: one of creep-rate"),
+    (_set(("friction", "law"), "coulomb"), r"friction.nu_s: unknown key \(law 'coulomb'\); "
+     "allowed: law, mu, v_reg"),
+    (_set(("friction",), {"law": "coulomb", "mu": 0.5}), r"friction.v_reg: missing \(law "
+     r"'coulomb'\); allowed: a number in \(0, 1000\] m/s"),
+    (_set(("friction",), {"law": "coulomb", "mu": 0.5, "v_reg": 0.0}), r"friction.v_reg = 0.0 "
+     r"is out of range; allowed: a number in \(0, 1000\]"),
     (["belt.E=-1"], r"belt.E = -1.0 is out of range; allowed: a number in \(0, 1e\+12\]"),
     (["belt.n_elements=many"], r"belt.n_elements: 'many' is not valid; allowed: an integer "
      r"in \[4, 2000\]"),
