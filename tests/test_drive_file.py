@@ -72,6 +72,8 @@ def test_thread_example_names_a_friction_law_not_yet_there():
         load(THREAD)
     assert str(exc.value) == ("friction.law = 'bristle' is out of range; allowed: one of "
                               + ", ".join(friction.LAWS))
+    keys = [k for k in read(THREAD)["friction"] if k != "law"]
+    assert keys == [q.name for q in friction.STATE_PARAMS["bristle"]]  # its point law's
 
 
 def test_thread_example_has_the_benchmark_numbers():
@@ -119,6 +121,29 @@ def test_serpentine_example_tensioner_balances_the_laid_belt():
 
 def test_every_friction_law_declares_its_parameters():
     assert set(dd.FRICTION_KEYS) == set(friction.PARAMS) == set(friction.LAWS)
+
+
+def test_the_friction_law_a_file_names_reaches_the_kernel():
+    """[friction] law = "coulomb" with its mu, v_reg: the model's prm carries the law's
+    code and parameters, and the compiled kernel's friction on the laid belt, pressed
+    0.1 % into the pulleys and sliding, is -mu F_n tanh(v_t / v_reg) (numpy)
+    wherever F_n > 0 (to 64 ulps of the largest)."""
+    from ancf.belts.contact2d import contact_state
+    from ancf.belts.drive_model import build
+    data = read(THESIS)
+    data["friction"] = {"law": "coulomb", "mu": 0.7, "v_reg": 0.05}
+    drive = build(describe(data))
+    c = data["contact"]
+    assert np.array_equal(drive.prm, friction.contact_vector(c["k_p"], c["c_p"], "coulomb", 0.7,
+                                                             0.05))
+    rng = np.random.default_rng(5)
+    E = drive.element_coords(drive.q0 * (1 - 1e-3))
+    V = 0.05 * rng.standard_normal(E.shape)
+    _, _, Fn, phi, vt = contact_state(E, V, drive.S0, drive.centres, drive.radii,
+                                      np.array([0.3, -0.3]), drive.prm)
+    ref = -0.7 * Fn * np.tanh(vt / 0.05)
+    assert (Fn > 0).sum() > 20 and np.any(np.abs(vt) < 0.05) and np.any(np.abs(vt) > 0.05)
+    np.testing.assert_allclose(phi, ref, rtol=0, atol=64 * np.finfo(float).eps * np.abs(ref).max())
 
 
 def test_tables_and_constants_become_laws_of_time():
@@ -208,6 +233,12 @@ BAD = [  # (overrides, or an edit of the thesis file's data; the one line it giv
     (_without(("friction", "mu")), r"friction.mu: missing \(law 'creep-rate'\); allowed: a "
      r"number in \[0, 10\] -"),
     (_without(("friction", "law")), "friction.law: missing; allowed: one of creep-rate"),
+    (_set(("friction", "law"), "coulomb"), r"friction.nu_s: unknown key \(law 'coulomb'\); "
+     "allowed: law, mu, v_reg"),
+    (_set(("friction",), {"law": "coulomb", "mu": 0.5}), r"friction.v_reg: missing \(law "
+     r"'coulomb'\); allowed: a number in \(0, 1000\] m/s"),
+    (_set(("friction",), {"law": "coulomb", "mu": 0.5, "v_reg": 0.0}), r"friction.v_reg = 0.0 "
+     r"is out of range; allowed: a number in \(0, 1000\]"),
     (["belt.E=-1"], r"belt.E = -1.0 is out of range; allowed: a number in \(0, 1e\+12\]"),
     (["belt.n_elements=many"], r"belt.n_elements: 'many' is not valid; allowed: an integer "
      r"in \[4, 2000\]"),

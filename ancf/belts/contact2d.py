@@ -163,7 +163,8 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
 
     E, V (nel, 6, 2) element coordinates (m, slopes -) and velocities; S0, w from
     :func:`contact_points` (the element length is sum_g w); centres (np, 2) m, radii
-    (np,) m, omegas (np,) rad/s; prm = [k_p N/m^2, c_p N s/m^2, mu -, nu_s kg/(m s)].
+    (np,) m, omegas (np,) rad/s; prm = [k_p N/m^2, c_p N s/m^2, the friction law's code
+    and parameters] (:func:`ancf.belts.friction.contact_vector`).
     Adds Q (nel, 12) N and T (np,) N m and, if ``want_J``, their exact derivatives on the
     active branch: Kq, Cv (nel, 12, 12) dQ/de, dQ/dedot; Qw (nel, np, 12) dQ/domega_p;
     dTq, dTv (np, nel, 12) dT_p/de, dT_p/dedot; dTw (np,) dT_p/domega_p.  Returns the

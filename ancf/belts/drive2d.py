@@ -21,6 +21,7 @@ from typing import Callable
 import numpy as np
 import scipy.sparse as sp
 
+from ancf.belts import friction
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact2d import contact_forces, contact_points, contact_state
 from ancf.belts.forces import Drive2D
@@ -57,8 +58,7 @@ class Belt2DSpec(DriveSpec):
     nx: int                     # Gauss points of the elastic forces per element
     k_p: float                  # penalty stiffness per unit length, N/m^2
     c_p: float                  # penalty damping per unit length, N s/m^2
-    mu: float                   # friction coefficient
-    nu_s: float                 # creep-rate factor, kg/(m s)
+    friction: tuple             # (law, its parameters): a row of ancf.belts.friction.PARAMS
     gauss_points: int           # contact Gauss points per element (5, 7, 11)
 
 
@@ -153,7 +153,7 @@ class PulleyDrive:
         dQ/de (nel, ndof, ndof) N/m or None), ndof = nshape dim."""
         nel, nd, npul = E.shape[0], E.shape[1] * E.shape[2], self.radii.size
         V, pulleys = np.zeros_like(E), self.pulleys_at_rest()
-        prm = np.array([self.spec.k_p, 0.0, 0.0, 0.0])
+        prm = friction.contact_vector(self.spec.k_p, 0.0, "creep-rate", 0.0, 0.0)
         d = self.contact_state(E, V, self.S0, *pulleys, prm)[1]
         U = 0.5 * self.spec.k_p * np.einsum("eg,egp->", self.w, np.maximum(d, 0.0) ** 2)
         if not want_J:
@@ -188,7 +188,7 @@ class BeltDrive(PulleyDrive):
                 np.zeros(self.pattern.n), self.Mb, True)
         self.weight = self.pattern.restrict(self._weight(gravity))
         self.S0, self.w, self.xi = contact_points(self.mesh.lengths, s.gauss_points)
-        self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
+        self.prm = friction.contact_vector(s.k_p, s.c_p, *s.friction)
         if rig is None:
             self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
             self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from ancf.belts import friction
 from ancf.belts.drive2d import DriveSpec, PulleyDrive, thesis_rig
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
@@ -50,8 +51,7 @@ class Belt3DSpec(DriveSpec):
     bending: bool               # Eq. 4.17 on (Model 1) or off (Model 2)
     k_p: float                  # penalty stiffness per unit area, N/m^3
     c_p: float                  # penalty damping per unit area, N s/m^3
-    mu: float                   # friction coefficient
-    nu_s: float                 # creep-rate factor, kg/(m^2 s)
+    friction: tuple             # (law, its parameters): a row of ancf.belts.friction.PARAMS
     contact_points: int         # surface rule per element (25, 49, 81)
     inertia: float              # driven pulley moment of inertia, kg m^2
     omega_final: float          # driver's final angular velocity, rad/s (Eq. 3.29)
@@ -106,7 +106,7 @@ class Belt3DDrive(PulleyDrive):
                 np.zeros(self.pattern.n), self.Mb, True)
         self.S0, self.w = contact_points3d(self.lengths, np.full(n, s.width), s.contact_points)
         self.axes = np.array([AXIS, AXIS])
-        self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
+        self.prm = friction.contact_vector(s.k_p, s.c_p, *s.friction)
         self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
         self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
         self.rig = thesis_rig(s, self.omega_driver, self.torque, dim=3)
