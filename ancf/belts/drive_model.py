@@ -39,7 +39,7 @@ def _zero(t):
 def _arms(d: DriveDescription, free) -> np.ndarray:
     """The tensioners' arm rows (ancf.belts.arm2d), their coordinates after the k free
     pulleys'."""
-    k = int(free.max()) + 1 if free.size else 0
+    k = int(free.max()) + 1
     rows = []
     for i, p in enumerate(d.pulleys):
         if p.law == "tensioner":
