@@ -15,13 +15,14 @@ the driver (left, ``omega_driver(t)``), pulley 1 the driven one.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
 
 from ancf.belts import friction
+from ancf.belts.arm2d import COORD, arm_geometry
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact2d import contact_forces, contact_points, contact_state
 from ancf.belts.forces import Drive2D
@@ -79,9 +80,11 @@ class Rig:
     """The pulleys of a drive as the march sees them (SI units): ``names`` (np,),
     ``centres`` (np, dim) m, contact ``radii`` (np,) m, ``free`` (np,) int (the free
     pulley's number j, -1 for a pulley turned by its law), the free pulleys' ``inertia``
-    (k,) kg m^2 and rotational ``damping`` (k,) N m s, and one law per pulley, a
-    function of the time (s, an array): the angular velocity (rad/s) of a pulley turned
-    by it, the load torque T_a (N m) of a free one."""
+    (k,) kg m^2 and rotational ``damping`` (k,) N m s, one law per pulley, a function of
+    the time (s, an array): the angular velocity (rad/s) of a pulley turned by it, the
+    load torque T_a (N m) of a free one, and the tensioners' ``arms`` (na, 8)
+    (:mod:`ancf.belts.arm2d`; their angles are free coordinates too, with an inertia and
+    a damping)."""
 
     names: tuple
     centres: np.ndarray
@@ -90,6 +93,7 @@ class Rig:
     inertia: np.ndarray
     damping: np.ndarray
     laws: tuple[Callable, ...]
+    arms: np.ndarray = field(default_factory=lambda: np.zeros((0, 8)))
 
 
 def thesis_rig(spec: BeltSpec, speed, torque, dim: int = 2) -> Rig:
@@ -126,6 +130,16 @@ class PulleyDrive:
     @property
     def radii(self) -> np.ndarray:
         return self.rig.radii
+
+    def moved(self, x, v) -> tuple:
+        """The pulley centres (np, 2) m and their velocities (np, 2) m/s at the system
+        state x, v: a tensioner's on its arm."""
+        arms = self.rig.arms
+        o, odot = self.centres.copy(), np.zeros_like(self.centres)
+        for a in range(arms.shape[0]):
+            j = self.n + int(arms[a, COORD])
+            arm_geometry(arms, a, float(x[j]), float(v[j]), o, odot, np.zeros((arms.shape[0], 2)))
+        return o, odot
 
     def laws(self, t) -> np.ndarray:
         """The pulley laws (np, len(t)) of the march (:class:`Rig`)."""
@@ -240,4 +254,5 @@ class BeltDrive(PulleyDrive):
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""
         r = self.rig
         return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
-                       r.centres, r.radii, self.prm, r.free, r.inertia, r.damping, self.weight)
+                       r.centres, r.radii, self.prm, r.free, r.inertia, r.damping, self.weight,
+                       r.arms)

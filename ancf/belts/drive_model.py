@@ -2,15 +2,19 @@
 as a :class:`ancf.belts.drive2d.BeltDrive` on any number of pulleys.
 
 The belt (Dufva elements) is laid on the description's wrapped path (the centreline's,
-at radius + ``belt.contact_offset``), with its reference length L0; the contact acts on
+at radius + ``belt.contact_offset``, on either side of the belt: the section's faces are
+taken symmetric about the centreline), with its reference length L0; the contact acts on
 the centreline at that radius.  Each pulley's law becomes a row of the
 :class:`ancf.belts.drive2d.Rig`: ``prescribed`` its angular velocity law, ``fixed``
 zero, ``driven`` a free pulley with its inertia, damping and load torque law, ``idler``
-a free one without load.  The dynamics do not cover yet (InputError naming the key): a
-``tensioner`` arm, a pulley on the belt's back (``side = -1``) and the belt's
-strain-rate damping.
+a free one without load, ``tensioner`` a free one without load on an arm whose angle is
+one more free coordinate (after the pulleys', :mod:`ancf.belts.arm2d`).  A pulley on the
+belt's back (``side = -1``) is contact like any other.  The dynamics do not cover yet
+(InputError naming the key) the belt's strain-rate damping.
 """
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -19,17 +23,10 @@ from ancf.belts.friction import PARAMS
 from ancf.belts.drive_data import DriveDescription, load_law, omega_law
 from ancf.common.params import InputError
 
-FREE = ("driven", "idler")
+FREE = ("driven", "idler", "tensioner")
 
 
 def _unsupported(d: DriveDescription) -> None:
-    for i, p in enumerate(d.pulleys):
-        if p.law == "tensioner":
-            raise InputError(f"pulleys.{i}.law = 'tensioner' is not in the dynamics yet; "
-                             "allowed: prescribed, driven, idler, fixed")
-        if p.side != 1:
-            raise InputError(f"pulleys.{i}.side = {p.side}: a pulley on the belt's back is not "
-                             "in the dynamics yet; allowed: 1")
     for key in ("damping_axial", "damping_bending"):
         if d.belt[key] != 0:
             raise InputError(f"belt.{key} = {d.belt[key]!r}: strain-rate damping is not in the "
@@ -40,19 +37,37 @@ def _zero(t):
     return np.zeros(np.shape(t))
 
 
+def _arms(d: DriveDescription, free) -> np.ndarray:
+    """The tensioners' arm rows (ancf.belts.arm2d), their coordinates after the k free
+    pulleys'."""
+    k = int(free.max()) + 1
+    rows = []
+    for i, p in enumerate(d.pulleys):
+        if p.law == "tensioner":
+            P, c = p.params["pivot"], p.centre
+            rows.append([i, k + len(rows), P[0], P[1], p.params["arm_length"],
+                         math.atan2(c[1] - P[1], c[0] - P[0]), p.params["arm_stiffness"],
+                         p.params["arm_preload"]])
+    return np.array(rows, dtype=float).reshape(-1, 8)
+
+
 def rig(d: DriveDescription) -> Rig:
     """The pulleys of the description as the march sees them."""
     offset = d.belt["contact_offset"]
     free = np.cumsum([p.law in FREE for p in d.pulleys]) - 1
+    free = np.array([j if p.law in FREE else -1 for p, j in zip(d.pulleys, free)])
     laws = {"prescribed": omega_law, "driven": load_law}
     chosen = [p for p in d.pulleys if p.law in FREE]
+    arms = [p for p in d.pulleys if p.law == "tensioner"]
     return Rig(tuple(p.name for p in d.pulleys),
                np.array([p.centre for p in d.pulleys], dtype=float),
-               np.array([p.radius + offset for p in d.pulleys]),
-               np.array([j if p.law in FREE else -1 for p, j in zip(d.pulleys, free)]),
-               np.array([p.params["inertia"] for p in chosen], dtype=float),
-               np.array([p.params["damping"] for p in chosen], dtype=float),
-               tuple(laws[p.law](p) if p.law in laws else _zero for p in d.pulleys))
+               np.array([p.radius + offset for p in d.pulleys]), free,
+               np.array([p.params["inertia"] for p in chosen]
+                        + [p.params["arm_inertia"] for p in arms], dtype=float),
+               np.array([p.params["damping"] for p in chosen]
+                        + [p.params["arm_damping"] for p in arms], dtype=float),
+               tuple(laws[p.law](p) if p.law in laws else _zero for p in d.pulleys),
+               _arms(d, free))
 
 
 def spec(d: DriveDescription) -> Belt2DSpec:

@@ -17,8 +17,10 @@ the load torque T_a and the rotational damping c_j), and, if ``want_J``, the for
 part of the iteration matrix: band ``mat`` = bp (K - dQ_c/dz) - gp dQ_c/dz' (without
 M), border columns ``col[j]`` = -gp dQ_c/dtheta_j' and rows ``row[j]`` = -bp
 dT_c,p/dz - gp dT_c,p/dz', and the corner's force part ``corner`` (k, k), diagonal:
-gp (c_j - dT_c,p/dtheta_j').  It returns the number of element-pulley pairs the
-contact kernel evaluated.  bp, gp = 1, 0 or 0, 1 give df/dx and df/dv alone.
+gp (c_j - dT_c,p/dtheta_j').  A tensioner's arm (2D, :mod:`ancf.belts.arm2d`) is one
+more coordinate psi past the free pulleys' (:func:`_combine_arms`): its pulley's centre
+moves with psi, so the arm gets a row, a column and corner entries with its pulley's
+coordinate.  It returns the number of element-pulley pairs the contact kernel evaluated.  bp, gp = 1, 0 or 0, 1 give df/dx and df/dv alone.
 
 ``laws`` are the pulley laws at the evaluation time, one row per pulley: a pulley
 turned by its law (``free[p] = -1``) its angular velocity (rad/s), a free one its load
@@ -32,7 +34,8 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from ancf.belts.contact2d import contact_forces
+from ancf.belts.arm2d import COORD, PULLEY, PRELOAD, STIFFNESS, arm_geometry, arm_terms
+from ancf.belts.contact2d import contact_forces_moving
 from ancf.belts.contact3d import contact_forces3d
 from ancf.common.dispatch import implements
 from ancf.core.pattern import scatter
@@ -53,6 +56,7 @@ class Drive2D(NamedTuple):
     inertia: np.ndarray  # (k,) the free pulleys' moments of inertia, kg m^2
     damping: np.ndarray  # (k,) their rotational damping, N m s
     weight: np.ndarray   # (n,) the belt's weight as generalised forces F_g, N
+    arms: np.ndarray     # (na, 8) tensioner arms (ancf.belts.arm2d), their psi coordinates j
 
 
 class Drive3D(NamedTuple):
@@ -70,25 +74,35 @@ class Drive3D(NamedTuple):
     inertia: np.ndarray
     damping: np.ndarray
     weight: np.ndarray   # (n,)
+    arms: np.ndarray     # (0, 8): no tensioner arms in 3D
     axes: np.ndarray     # pulley axes (2, 3)
     shift: np.ndarray    # direction the driver is moved in (3,)
 
 
-def drive_forces(drive, E, V, laws, omegas, want_J, g, K, c):
-    """Add the elastic forces (g, and K if want_J) and the contact outputs c of the
-    elements with coordinates E and velocities V; returns the pairs evaluated."""
+def drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
+    """Add the elastic forces (g, and K if want_J), the contact outputs c of the elements
+    with coordinates E and velocities V and the arm outputs ``arm`` (:func:`_arm_arrays`)
+    at the system state x, v; returns the pairs evaluated."""
     raise NotImplementedError("resolved at compile time by the type of drive")
 
 
 @implements(drive_forces, Drive2D)
-def _forces2d(drive, E, V, laws, omegas, want_J, g, K, c):
+def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
+    """The tensioners' pulleys at their arms' angles (:mod:`ancf.belts.arm2d`)."""
     dufva2d.gradient_tangent(E, drive.element, want_J, g, K)
-    return contact_forces(E, V, drive.S0, drive.w, drive.centres, drive.radii, omegas, drive.prm,
-                          want_J, *c)
+    arms, n = drive.arms, x.size - drive.inertia.size
+    o, odot, u = drive.centres.copy(), np.zeros_like(drive.centres), np.zeros((arms.shape[0], 2))
+    for a in range(arms.shape[0]):
+        j = n + int(arms[a, COORD])
+        p = arm_geometry(arms, a, x[j], v[j], o, odot, u)
+        arm_terms(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas, drive.prm, a, p, u,
+                  v[j], want_J, arm)
+    return contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas,
+                                 drive.prm, want_J, *c)
 
 
 @implements(drive_forces, Drive3D)
-def _forces3d(drive, E, V, laws, omegas, want_J, g, K, c):
+def _forces3d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
     """The driver's centre is moved by laws[2] along ``shift`` (at the rate laws[3])."""
     plate36.gradient_tangent(E, drive.element, want_J, g, K)
     o, odot = drive.centres.copy(), np.zeros_like(drive.centres)
@@ -116,6 +130,41 @@ def _arrays(nel, nd, npul, want_J):
     return (np.zeros((nel, nd)), np.zeros((nj, nd, nd)), np.zeros((nj, nd, nd)),
             np.zeros((nj, npul, nd)), np.zeros(npul), np.zeros((npul, nj, nd)),
             np.zeros((npul, nj, nd)), np.zeros(npul))
+
+
+@njit(cache=True)
+def _arm_arrays(nel, nd, na, want_J):
+    """Zeroed arm outputs (:func:`ancf.belts.arm2d.arm_terms`): A, dAq, dAv, dAw, dAp,
+    Qp, Tp."""
+    nj = nel if want_J else 0
+    return (np.zeros(na), np.zeros((na, nj, nd)), np.zeros((na, nj, nd)), np.zeros(na),
+            np.zeros((na, 2)), np.zeros((na, 2, nj, nd)), np.zeros((na, 2)))
+
+
+@njit(cache=True)
+def _combine_arms(drive, x, v, arm, bp, gp, want_J, fz, col, row, corner):
+    """The arms' rows and columns: arm a (coordinate ja, its pulley's j) obeys
+    I_a psi'' = A + preload - k psi - c_a psi' + c_j (theta_j' - psi'), the pulley's
+    bearing damping c_j acting on its turn relative to the arm (its row gets -c_j psi')."""
+    A, dAq, dAv, dAw, dAp, Qp, Tp = arm
+    arms, vidx = drive.arms, drive.vidx
+    n = fz.size - drive.inertia.size
+    for a in range(arms.shape[0]):
+        ja, j = int(arms[a, COORD]), drive.free[int(arms[a, PULLEY])]
+        cj, ca, k = drive.damping[j], drive.damping[ja], arms[a, STIFFNESS]
+        psi, psid, th = x[n + ja], v[n + ja], v[n + j]
+        fz[n + j] -= cj * psid
+        fz[n + ja] = -A[a] - arms[a, PRELOAD] + k * psi + ca * psid - cj * (th - psid)
+        if not want_J:
+            continue
+        for e in range(vidx.shape[0]):
+            for b in range(vidx.shape[1]):
+                i = vidx[e, b]
+                col[ja, i] -= bp * Qp[a, 0, e, b] + gp * Qp[a, 1, e, b]
+                row[ja, i] -= bp * dAq[a, e, b] + gp * dAv[a, e, b]
+        corner[j, ja] -= bp * Tp[a, 0] + gp * (Tp[a, 1] + cj)
+        corner[ja, ja] = bp * (k - dAp[a, 0]) + gp * (ca + cj - dAp[a, 1])
+        corner[ja, j] = -gp * (dAw[a] + cj)
 
 
 @njit(cache=True)
@@ -175,7 +224,9 @@ def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row, corner):
     g = np.zeros((nel, nd))
     K = np.zeros((nel, nd, nd)) if want_J else np.zeros((0, 0, 0))
     c = _arrays(nel, nd, drive.radii.size, want_J)
+    arm = _arm_arrays(nel, nd, drive.arms.shape[0], want_J)
     omegas = pulley_speeds(v, laws, drive.free, drive.inertia.size)
-    pairs = drive_forces(drive, E, V, laws, omegas, want_J, g, K, c)
+    pairs = drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm)
     _combine(g, K, c, drive, bp, gp, want_J, laws, omegas, fz, mat, col, row, corner)
+    _combine_arms(drive, x, v, arm, bp, gp, want_J, fz, col, row, corner)
     return pairs

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ancf.belts.contact2d import contact_state
+from ancf.belts.contact2d import contact_state_moving
 from ancf.elements._generated import cubic2d_S
 
 
@@ -53,7 +53,8 @@ def sample(drive, x, v, t: float, npts: int = 8) -> BeltSample:
     E, V = q[dm].reshape(-1, 6, 2), qd[dm].reshape(-1, 6, 2)
     xi, S0 = _shapes(drive, npts)
     omegas = drive.omegas(t, v)
-    r, d, Fn, phi, vt = contact_state(E, V, S0, drive.centres, drive.radii, omegas, drive.prm)
+    o, odot = drive.moved(x, v)
+    r, d, Fn, phi, vt = contact_state_moving(E, V, S0, o, odot, drive.radii, omegas, drive.prm)
     s = (np.arange(drive.mesh.n_elements)[:, None] + xi[None, :]) * drive.mesh.lengths[0]
     N = drive.element.axial_force(q[dm], xi)
     flat = lambda a: np.asarray(a).reshape(s.size, *np.shape(a)[2:])  # noqa: E731

@@ -2,8 +2,9 @@
 (:mod:`ancf.solvers.alpha_march`).
 
 Unknowns: the belt coordinates z (band numbering of the drive's pattern) and the angles
-theta_j of the k free pulleys (driven pulleys and idlers; pulley p is free pulley j =
-``free[p]``):
+theta_j of the k free pulleys (driven pulleys, idlers and tensioners; pulley p is free
+pulley j = ``free[p]``) followed by the tensioners' arm angles (their rows and the corner
+off its diagonal: :mod:`ancf.belts.forces`):
 
     M z'' + dU/dz - Q_c(z, z', omega(t), theta') - F_g = 0          (Eqs 2.27, 3.27)
     I_j theta_j'' - T_c,p(z, z', theta_j') + T_a,p(t) + c_j theta_j' = 0     (Eq. 3.26)

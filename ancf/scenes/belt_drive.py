@@ -13,7 +13,8 @@ Results: the sample times; per pulley its angular velocity and the belt's moment
 velocity and the slip over ``run.steady_window`` (1 - its rim speed / the driver's, the
 driver the first prescribed pulley); per span (pulley k to k + 1) the mean axial force
 over its middle third at t_end and averaged over the samples of the steady window; the
-axial force and the speed along the belt at t_end; the run statistics.
+axial force and the speed along the belt at t_end; per tensioner its arm's angle; the run
+statistics.
 """
 from __future__ import annotations
 
@@ -21,7 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ancf.belts.contact2d import contact_forces
+from ancf.belts.arm2d import BETA0, COORD, PULLEY
+from ancf.belts.contact2d import contact_forces_moving
 from ancf.belts.drive_file import load
 from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, simulate
@@ -48,10 +50,11 @@ def pulley_moments(drive, x, v, t: float) -> np.ndarray:
     V = drive.element_coords(drive.belt(v))
     npul, nel = drive.radii.size, E.shape[0]
     T = np.zeros(npul)
-    contact_forces(E, V, drive.S0, drive.w, drive.centres, drive.radii, drive.omegas(t, v),
-                   drive.prm, False, np.zeros((nel, 12)), np.zeros((0, 12, 12)),
-                   np.zeros((0, 12, 12)), np.zeros((0, npul, 12)), T, np.zeros((npul, 0, 12)),
-                   np.zeros((npul, 0, 12)), np.zeros(npul))
+    o, odot = drive.moved(x, v)
+    contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, drive.omegas(t, v),
+                          drive.prm, False, np.zeros((nel, 12)), np.zeros((0, 12, 12)),
+                          np.zeros((0, 12, 12)), np.zeros((0, npul, 12)), T,
+                          np.zeros((npul, 0, 12)), np.zeros((npul, 0, 12)), np.zeros(npul))
     return T
 
 
@@ -81,9 +84,20 @@ def _pulleys(desc, drive, res, window) -> list:
             for i, q in enumerate(desc.pulleys)]
 
 
+def _arms(drive, res, window) -> list:
+    """Per tensioner: its arm's angle (rad) at every sample and its mean over the window."""
+    out = []
+    for row in drive.rig.arms:
+        angle = row[BETA0] + res.q[:, drive.n + int(row[COORD])]
+        out.append({"name": drive.rig.names[int(row[PULLEY])], "angle_rad": angle.tolist(),
+                    "angle_mean_rad": float(angle[window].mean())})
+    return out
+
+
 def _results(desc, drive, res) -> dict:
     window = np.flatnonzero(res.t >= res.t[-1] - desc.run["steady_window"] - 1e-12)
-    out = {"times": res.t.tolist(), "pulleys": _pulleys(desc, drive, res, window)}
+    out = {"times": res.t.tolist(), "pulleys": _pulleys(desc, drive, res, window),
+           "arms": _arms(drive, res, window)}
     spans, last = _spans(desc, drive, res, window)
     out.update(spans=spans, belt_s_m=last.s.tolist(), axial_force_N=last.N.tolist(),
                speed_m_s=last.speed.tolist(), penetration_max_m=float(max(last.d.max(), 0.0)))
@@ -101,7 +115,7 @@ def run(p: dict) -> SceneResult:
     if pre is not None and not pre.converged:
         res.converged, res.message = False, f"pre-tension: {pre.message}"
     results = _results(desc, drive, res) if res.converged else {
-        "times": res.t.tolist(), "pulleys": None, "spans": None, "belt_s_m": None,
+        "times": res.t.tolist(), "pulleys": None, "arms": None, "spans": None, "belt_s_m": None,
         "axial_force_N": None, "speed_m_s": None, "penetration_max_m": None}
     results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
                    contact_pairs=res.extra["contact_pairs"], total_dofs=drive.n + drive.k,
@@ -148,7 +162,7 @@ SCENE = FileScene(
     "belt-drive",
     "A belt drive of any layout from a drive file (--file drive.toml; --set section.key=value): "
     "Dufva belt on N pulleys, penalty contact with creep-rate friction, prescribed, driven, "
-    "idler and fixed pulleys.",
+    "idler, tensioner and fixed pulleys, on the belt's inner side or its back.",
     (Param("file", DEFAULT_FILE, str, doc="the TOML drive file (ancf run belt-drive --file)"),
      Param("set", "", str, doc=f"the drive file's overrides applied, '{SEP}'-separated "
            "(--set section.key=value)")),

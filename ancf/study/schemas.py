@@ -180,6 +180,12 @@ RESULTS = {
             "omega_mean": field(NUM, "mean angular velocity over run.steady_window, rad/s"),
             "slip": field(NUM, "1 - its mean rim speed / the driver's (the first prescribed "
                                "pulley) over the window")}),
+        "arms": field("array", "per tensioner, in belt order (null when the run stopped)",
+                      items="object", nullable=True, keys={
+            "name": field(STR, "the tensioner pulley's name"),
+            "angle_rad": series("its arm's angle (centre - pivot, counter-clockwise from x), "
+                                "rad"),
+            "angle_mean_rad": field(NUM, "its mean over run.steady_window, rad")}),
         "spans": field("array", "per span (pulley k to k + 1), in belt order (null when the "
                        "run stopped)", items="object", nullable=True, keys={
             "from": field(STR, "pulley the span leaves"), "to": field(STR, "pulley it reaches"),
