@@ -13,6 +13,7 @@ import pytest
 
 from ancf.checks.belt3d import CHECK_NAMES as BELT3D_ROWS
 from ancf.checks.belt2d import GAUSS_CHECK
+from ancf.checks.frequencies import ACCEPT_MESH, AXIAL_MESHES, SUPPORTS
 from ancf.study.extremes import AXES, QUICK_SKIPPED
 from ancf.reports.__main__ import CHAPTERS
 
@@ -126,6 +127,26 @@ AGREES = {
          "test_general_bending_u_x_u_y_against_table_4"),
         ("3D general bending: ours − ANSYS = the continuum's second-order terms (u_x, u_y; "
          "128 el.)", "test_general_bending_difference_is_the_continuum_terms"))},
+    **{name: (("test_modes", test), "PASS") for name, test in (
+        *((f"Beam {s}, linear thesis, L/h = 20, {ACCEPT_MESH[s]} el.: first three frequencies "
+           "within 0.5 % of Timoshenko",
+           "test_first_three_bending_frequencies_within_half_a_percent_of_timoshenko")
+          for s in SUPPORTS),
+        *((f"Beam {s}, linear thesis: convergence order 2 (fit over n = 8…64, modes 1-2)",
+           "test_bending_frequencies_converge_at_second_order") for s in SUPPORTS),
+        ("Plate simply supported, 8 × 8: fundamental within 1 % of Navier",
+         "test_plate_square_fundamental_within_one_percent_of_navier_at_8x8"),
+        *((f"Axial bar, {n} el.: ω₁ about the equilibrium vanishes within 1 % of Euler's load",
+           "test_axial_bar_first_bending_frequency_vanishes_at_the_euler_load")
+          for n in AXIAL_MESHES))},
+    **{name: (("test_frequencies", test), "PASS") for name, test in (
+        ("Plate free-free, 8 × 8: first three ratios within 0.2 % of the Ritz series",
+         "test_free_free_plate_ratios_within_0p2_percent_of_the_ritz_series_and_exudyn"),
+        ("Plate free-free: Ritz series = Exudyn's published ratios to their last digit",
+         "test_free_free_plate_ratios_within_0p2_percent_of_the_ritz_series_and_exudyn"),
+        *((f"Belt 120 rad/s, {k} span: mid-span frequency within 5 % of the moving string",
+           "test_belt_span_frequency_within_5_percent_of_the_moving_string")
+          for k in ("tight", "slack")))},
     **{name: (("test_belt3d_checks", "test_model2_and_model1_checks"), QUICK_SKIPPED)
        for name in BELT3D_ROWS[:7]},
     **{name: (("test_belt3d_checks", "test_settled_pretension_converges_with_the_element_count"),
