@@ -1,5 +1,6 @@
 """Closed-form and semi-analytic references, one file each (Timoshenko, Reissner,
-Bechtel, Navier, the dynamic references), and the SymPy generators of the shape
-functions and of the belt and plate energy densities.  Imports nothing of ``ancf``
-but the leaf ``ancf.common``.
+Bechtel, Bechtel's belt on N pulleys with its own wrapped path, Navier, the dynamic
+references, the natural frequencies of beams, plates and the moving string), and the SymPy
+generators of the shape functions and of the belt and plate energy densities.  Imports
+nothing of ``ancf`` but the leaf ``ancf.common``.
 """

@@ -49,3 +49,10 @@ def magnitude(what: str, factors: dict, const: float = 1.0) -> float:
     for v, p in factors.values():
         out *= v ** p
     return out
+
+
+def mode_count(name: str, val) -> int:
+    """``val`` as an int >= 1 (a number of modes), else ValueError naming ``name``."""
+    if isinstance(val, bool) or finite(name, val) != int(val) or val < 1:
+        raise ValueError(f"{name} must be an integer >= 1 (got {val!r})")
+    return int(val)

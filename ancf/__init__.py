@@ -1,6 +1,6 @@
 """ancf-bench: the Absolute Nodal Coordinate Formulation for beams, plates and belt drives.
 
-The Python API (``ancf.run``, ``ancf.analytic``, ``ancf.scenes``, ``ancf.sweep``,
+The Python API (``ancf.run``, ``ancf.analytic``, ``ancf.modes``, ``ancf.scenes``, ``ancf.sweep``,
 ``ancf.recommend``, ``ancf.Result``, ``ancf.InputError``) lives in :mod:`ancf.api`, loaded on
 first use by the module ``__getattr__`` below: importing ``ancf`` (every command and every
 numba worker process does) stays cheap.
@@ -35,7 +35,7 @@ os.environ.setdefault("NUMBA_CACHE_DIR", str(numba_cache_dir()))
 
 
 #: the names of the Python API (:mod:`ancf.api`), loaded on first use
-API = ("run", "analytic", "scenes", "sweep", "recommend", "Result", "InputError")
+API = ("run", "analytic", "modes", "scenes", "sweep", "recommend", "Result", "InputError")
 
 
 def __getattr__(name):

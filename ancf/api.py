@@ -1,7 +1,8 @@
 """Python API: the command line's runs as functions returning result objects.
 
-``import ancf`` is cheap; ``ancf.run``, ``ancf.analytic``, ``ancf.scenes``, ``ancf.sweep``,
-``ancf.recommend``, ``ancf.Result`` and ``ancf.InputError`` load this module on first use.
+``import ancf`` is cheap; ``ancf.run``, ``ancf.analytic``, ``ancf.modes``, ``ancf.scenes``,
+``ancf.sweep``, ``ancf.recommend``, ``ancf.Result`` and ``ancf.InputError`` load this module
+on first use.
 
 A scene run (``ancf run SCENE``) with keyword parameters, which are checked as
 ``--set`` values are (bad input raises :class:`InputError` with the message the command
@@ -61,7 +62,7 @@ ancf.common.params.InputError: n_elements = 0 is out of range; allowed: an integ
 >>> ancf.run("cantileverr")
 Traceback (most recent call last):
 ...
-ancf.common.params.InputError: run: unknown name 'cantileverr'; allowed: simply-supported, cantilever, axial-bar, pendulum, spinning-beam, belt-free-static, belt2d, plate-square, plate-strip, beam3d-cantilever, belt3d
+ancf.common.params.InputError: run: unknown name 'cantileverr'; allowed: simply-supported, cantilever, axial-bar, pendulum, spinning-beam, belt-free-static, belt2d, plate-square, plate-strip, beam3d-cantilever, belt3d, princeton-beam, beam3d-bending, belt-drive
 """
 from __future__ import annotations
 
@@ -77,7 +78,7 @@ import ancf.scenes  # noqa: F401 - cheap (loads no scene); makes ``ancf.scenes``
 from ancf.common.params import InputError
 from ancf.common.strict_json import dumps
 
-__all__ = ["InputError", "Result", "analytic", "recommend", "run", "scenes", "sweep"]
+__all__ = ["InputError", "Result", "analytic", "modes", "recommend", "run", "scenes", "sweep"]
 
 
 @dataclass
@@ -86,7 +87,7 @@ class Result:
     ``extra`` and the arrays a user wants as properties (``None`` where the run has none:
     an analytic reference has no mesh, a static run no time history).
 
-    ``command`` is ``"run"`` or ``"analytic"``, ``scene`` the name.
+    ``command`` is ``"run"``, ``"analytic"`` or ``"modes"``, ``scene`` the name.
     """
 
     command: str
@@ -244,6 +245,29 @@ def run(scene: str, overrides: dict | None = None, /, *, vtk=None, **params) -> 
     (True, 'axial-bar', 'run')
     """
     return _execute("run", scene, overrides, params, vtk)
+
+
+def modes(scene: str, overrides: dict | None = None, /, *, count=None, about="reference",
+          **params) -> Result:
+    """Natural frequencies and mode shapes of a static scene, as ``ancf modes SCENE --set
+    k=v ... --count K --about STATE``: ``count`` modes (default 6, or the reduced size - 1),
+    the tangent stiffness at the ``"reference"`` state or at the static ``"equilibrium"``.
+    ``results["frequencies_hz"]`` ascending; ``extra["vectors"]`` the global mode vectors
+    (n_dofs, count); ``q`` the state vibrated about.
+
+    >>> import ancf
+    >>> m = ancf.modes("cantilever", n_elements=4, count=2)
+    >>> m.command, m.results["about"], len(m.results["frequencies_hz"])
+    ('modes', 'reference', 2)
+    >>> m.params["rho"], m.extra["vectors"].shape
+    (7850.0, (20, 2))
+    """
+    from ancf.scenes.modes import execute
+    sets = {k: _as_set(v) for k, v in {**dict(overrides or {}), **params}.items()}
+    out, res = execute(scene, sets, count, about)
+    return Result("modes", scene, out["params"], out["converged"], out["message"],
+                  out["results"], out["cpu_time_s"], out["warnings"],
+                  out.get("compile_cpu_s", 0.0), res.extra, out)
 
 
 def analytic(name: str, overrides: dict | None = None, /, **params) -> Result:

@@ -1,5 +1,5 @@
 """Command line: ``ancf scenes``, ``ancf run SCENE``, ``ancf analytic NAME``,
-``ancf sweep SCENE --grid k=v1,v2``, ``ancf recommend SCENE --tol TOL``.
+``ancf modes SCENE``, ``ancf sweep SCENE --grid k=v1,v2``, ``ancf recommend SCENE --tol TOL``.
 
 ``--json`` prints one JSON object ``{scene, params, converged, message, results,
 cpu_time_s, compile_cpu_s, warnings}``.  Exit codes: 0 ok, 2 bad input (one line on stderr naming the
@@ -16,6 +16,10 @@ import sys
 from ancf.common.diagnostics import numerical_warnings
 from ancf.common.params import InputError
 from ancf.common.strict_json import dumps
+
+
+#: the scenes that read their input from a file (``ancf run NAME --file PATH``)
+FILE_SCENES = ("belt-drive",)
 
 
 def _registries():
@@ -79,14 +83,37 @@ def _run(registry, kind, args) -> int:
     vtk = getattr(args, "vtk", None)
     if vtk is not None:  # --vtk: the input, then the directory, checked before the run
         from ancf.scenes.vtk import check_directory
-        registry[args.name].resolve(_parse_sets(args.set))
+        registry[args.name].resolve(_overrides(args))
         check_directory(vtk)
-    out, res = registry[args.name].execute(_parse_sets(args.set))
+    out, res = registry[args.name].execute(_overrides(args))
     if vtk is not None:
         from ancf.scenes.vtk import write_run
         pvd, steps = write_run(args.name, res.extra, vtk)
         if not args.json:  # stdout stays one JSON object; stderr errors and warnings only
             print(f"vtk: wrote {pvd} ({steps} step{'s' if steps != 1 else ''})")
+    return _print(out, args)
+
+
+def _overrides(args) -> dict:
+    """The --set overrides, with ``file`` from --file (the belt-drive scene only)."""
+    sets = _parse_sets(args.set)
+    path = getattr(args, "file", None)
+    if path is not None:
+        if args.name not in FILE_SCENES:
+            raise InputError(f"--file: scene {args.name!r} takes no file; allowed: the scenes "
+                             f"{', '.join(FILE_SCENES)}")
+        sets["file"] = path
+    return sets
+
+
+def _modes(args) -> int:
+    from ancf.scenes.modes import execute
+    out, _ = execute(args.name, _parse_sets(args.set), args.count, args.about)
+    return _print(out, args)
+
+
+def _print(out: dict, args) -> int:
+    """Print a run's warnings (stderr) and its JSON or summary; the exit code."""
     for w in out["warnings"]:
         print(f"warning: {w}", file=sys.stderr)
     if args.json:
@@ -97,7 +124,7 @@ def _run(registry, kind, args) -> int:
               + (f" (+ {out['compile_cpu_s']:.3f} s compiling or loading kernels)"
                  if out.get("compile_cpu_s") else ""))
         for k, v in out["results"].items():
-            if not isinstance(v, list):
+            if not isinstance(v, list) or k == "frequencies_hz":
                 print(f"  {k} = {v}")
     return 0 if out["converged"] else 3
 
@@ -185,6 +212,18 @@ def main(argv=None) -> int:
     sub.choices["run"].add_argument(
         "--vtk", metavar="DIR", help="write the deformed mesh as a ParaView time series: "
         "DIR/SCENE.pvd and one .vtu per output step")
+    sub.choices["run"].add_argument(
+        "--file", metavar="PATH", help="the drive file of the belt-drive scene (TOML); --set "
+        "section.key=value overrides its keys")
+    p = sub.add_parser("modes", help="natural frequencies and mode shapes of a static scene")
+    p.add_argument("name")
+    p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter")
+    p.add_argument("--count", metavar="K", help="number of modes, lowest first (default 6, "
+                   "or the reduced size - 1 if smaller)")
+    p.add_argument("--about", default="reference", metavar="STATE",
+                   help="reference (default) or equilibrium: the tangent stiffness at the "
+                        "scene's static equilibrium under its load (pre-stressed)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
     p = sub.add_parser("sweep", help="run the cartesian product of parameter values")
     p.add_argument("name")
     p.add_argument("--grid", action="append", metavar="KEY=V1,V2,...",
@@ -242,6 +281,8 @@ def _dispatch(args) -> int:
                 gc.freeze()
                 gc.enable()
             return _run({args.name: sc}, "run", args)
+        if args.cmd == "modes":  # the scene's modules and the eigensolver only
+            return _modes(args)
         if args.cmd == "scenes":
             return _scenes()
         if args.cmd == "sweep":

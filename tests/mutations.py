@@ -17,6 +17,7 @@ TD, TP = "tests/test_dynamics.py::", "tests/test_published_tables.py::"
 TA = "tests/test_analytic.py::"
 TB = "tests/test_belt_drive.py::"
 T3 = "tests/test_contact3d.py::"
+TM = "tests/test_modes.py::"
 
 
 def plus_1_percent(before: str, value: str, after: str = "") -> tuple[str, str]:
@@ -90,6 +91,24 @@ MUTATIONS = [
     ("3D Jacobian without the damper's dn/dr", "ancf/belts/contact3d.py",
      ("gF[c] = -kp * n[c] - cp * tv * t[c] / rho", "gF[c] = -kp * n[c]"),
      T3 + "test_jacobians_match_central_differences"),
+    ("modes' steel density +1 %", "ancf/scenes/base.py",
+     plus_1_percent('STEEL_DENSITY = Param("rho", ', "7850.0"),
+     TM + "test_first_three_bending_frequencies_within_half_a_percent_of_timoshenko"),
+    ("modes about the reference at the equilibrium too", "ancf/scenes/modes.py",
+     ("_, K = mm.pattern.assemble(mm.assembly, q)", "_, K = mm.pattern.assemble(mm.assembly, mm.q0)"),
+     TM + "test_axial_bar_first_bending_frequency_vanishes_at_the_euler_load"),
+    ("modes' Sturm check without the extra mode", "ancf/solvers/eigen.py",
+     ("k = min(count + 1, n - 1)", "k = count"),
+     TM + "test_the_sturm_check_tells_a_repeated_pair_from_a_missed_mode"),
+    ("tip moment's torque split evenly (unweighted fit)", "ancf/models/beam3d.py",
+     ('SectionMoment(m.n_dofs, dofs, M, (moments["Q2_0"],', 'SectionMoment(m.n_dofs, dofs, M, (1.0,'),
+     "tests/test_beam3d_benchmarks.py::test_tip_moment_small_deflection_is_the_closed_form"),
+    ("section moment's Jacobian without the turning of the slopes", "ancf/core/forces.py",
+     ("J[3 * k:3 * k + 3, 3 * k:3 * k + 3] += wk * _skew(m)", "J[3 * k:3 * k + 3, 3 * k:3 * k + 3] += 0.0"),
+     "tests/test_beam3d_benchmarks.py::test_section_moment_jacobian_matches_differences"),
+    ("Princeton beam's torsion factor from h only", "ancf/scenes/princeton_beam.py",
+     ('torsion_factor(v["h"], v["b"])', 'torsion_factor(v["h"], v["h"])'),
+     "tests/test_beam3d_benchmarks.py::test_princeton_linear3d_and_belt3d_against_ansys"),
 ]
 
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from ancf.belts import friction
 from ancf.belts.contact2d import SUPPORTED_POINTS, contact_forces, contact_points, contact_state
 from ancf.elements._generated import cubic2d_S
 
@@ -58,10 +59,16 @@ def _ring(nel, rho, centre, omega_b=0.0, gauss_points=7):
     return E, V, S0, w, l
 
 
+def _creep_rate(mu, nu):
+    return friction.contact_vector(KP, CP, "creep-rate", mu, nu)
+
+
 def _branches(state, prm):
-    """Per point and pulley: 0 out, 1 clamped, 2 linear, +-3 saturated (sign of v_t)."""
+    """Per point and pulley: 0 out, 1 clamped, 2 linear (or the smooth law's one branch),
+    +-3 saturated (sign of v_t)."""
     _, d, Fn, phi, vt = state
-    sat = (Fn > 0) & (prm[3] * np.abs(vt) >= prm[2] * Fn)
+    creep = prm[2] == friction.CODES["creep-rate"]
+    sat = creep & (Fn > 0) & (prm[4] * np.abs(vt) >= prm[3] * Fn)
     return np.where(d < 0, 0, np.where(Fn <= 0, 1, np.where(sat, 3 * np.sign(vt), 2)))
 
 
@@ -76,7 +83,9 @@ def _fd_state(case):
     E = E + 1e-4 * rng.standard_normal(E.shape)
     V = V + case["v_noise"] * rng.standard_normal(V.shape)
     omegas = np.array([case["omega"], 3.0])
-    return E, V, S0, w, centres, radii, omegas, np.array(case["prm"], dtype=float)
+    kp, cp, *values = case["prm"]
+    prm = friction.contact_vector(kp, cp, case.get("law", friction.LAW), *values)
+    return E, V, S0, w, centres, radii, omegas, prm
 
 
 CASES = {  # ring gap (m), offset from pulley 0 (m), rotation and noise (rad/s, m/s), prm
@@ -88,6 +97,8 @@ CASES = {  # ring gap (m), offset from pulley 0 (m), rotation and noise (rad/s, 
                       v_noise=0.05, omega=5.0, prm=[KP, CP, MU, 1e7]),
     "mixed-clamped": dict(seed=3, gap=0.0, offset=np.array([-0.0007, 0.0019]), omega_b=5.0,
                           v_noise=0.5, omega=3.0, prm=[KP, 5e3, MU, 1e3]),
+    "coulomb": dict(seed=3, gap=0.0, offset=np.array([-0.0007, 0.0019]), omega_b=5.0,
+                    v_noise=0.5, omega=3.0, prm=[KP, 5e3, MU, 0.2], law="coulomb"),
 }
 
 
@@ -158,13 +169,15 @@ def test_jacobians_match_central_differences(case):
         assert counts[3] > 0 and counts[-3] > 0 and counts[2] == 0, counts
     if case == "mixed-clamped":
         assert min(counts[1], counts[2], counts[3] + counts[-3]) > 0, counts
+    if case == "coulomb":
+        assert min(counts[1], counts[2]) > 0 and counts[3] + counts[-3] == 0, counts
 
 
 @pytest.mark.parametrize("case", list(CASES))
 def test_point_law_follows_eqs_3_20_to_3_25(case):
     """contact_state against the equations written out in numpy, every branch."""
     E, V, S0, w, centres, radii, omegas, prm = _fd_state(CASES[case])
-    kp, cp, mu, nu = prm
+    kp, cp, _, mu, q = prm[:5]
     r, d, Fn, phi, vt = contact_state(E, V, S0, centres, radii, omegas, prm)
     rdot = np.einsum("egk,ekd->egd", S0, V)
     a = np.einsum("egk,ekd->egd", S0, E)[:, :, None, :] - centres
@@ -175,7 +188,8 @@ def test_point_law_follows_eqs_3_20_to_3_25(case):
     ddot = -np.sum(n * rdot[:, :, None], axis=-1)
     Fn_ref = np.where(d_ref >= 0, np.maximum(kp * d_ref + cp * ddot, 0.0), 0.0)
     vt_ref = np.sum(t * (rdot[:, :, None] - (omegas * radii)[:, None] * t), axis=-1)
-    phi_ref = -np.sign(vt_ref) * np.minimum(nu * np.abs(vt_ref), mu * Fn_ref)
+    phi_ref = (-mu * Fn_ref * np.tanh(vt_ref / q) if CASES[case].get("law") == "coulomb"
+               else -np.sign(vt_ref) * np.minimum(q * np.abs(vt_ref), mu * Fn_ref))
     pairs = ((r[:, :, None], a + centres), (d, d_ref), (Fn, Fn_ref), (vt, vt_ref), (phi, phi_ref))
     for got, ref in pairs:  # 64 ulps of the largest value: sums of 6 products, a sqrt
         np.testing.assert_allclose(np.broadcast_to(got, ref.shape), ref, rtol=0,
@@ -209,7 +223,7 @@ def _ring_deviation(E, l, centre, rho, n=201):
 
 def _ring_case(omega_b, omega, nu, offset=np.zeros(2), gauss_points=7):
     E, V, S0, w, l = _ring(N_RING, RHO, PULLEY[0] + offset, omega_b, gauss_points)
-    prm = np.array([KP, CP, MU, nu])
+    prm = _creep_rate(MU, nu)
     args = (E, V, S0, PULLEY, np.array([R0]), np.array([omega]), prm)
     return E, l, w, _forces(E, V, S0, w, *args[3:], want_J=False), contact_state(*args)
 
@@ -304,7 +318,7 @@ def test_bounding_test_never_skips_a_pair_in_contact():
     rng = np.random.default_rng(7)
     E, V, l = _random_elements(rng, 400)
     centres, radii = np.array([[0.0, 0.0], [0.12, 0.05]]), np.array([0.1, 0.04])
-    omegas, prm = np.array([3.0, -2.0]), np.array([KP, CP, MU, 100.0])
+    omegas, prm = np.array([3.0, -2.0]), _creep_rate(MU, 100.0)
     S0, w, _ = contact_points(l, 7)
     # pair by pair: a skipped pair has its whole centreline outside the pulley
     x = np.linspace(0.0, 1.0, 401)[None, :] * l[:, None]

@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from ancf.belts import friction
 from ancf.belts.contact2d import contact_forces, contact_points, contact_state
 from ancf.belts.contact3d import (SUPPORTED_RULES, contact_forces3d, contact_points3d,
                             contact_state3d)
@@ -137,7 +138,13 @@ def _fd_state(case):
     E = E + 1e-4 * rng.standard_normal(E.shape)
     V = V + case["v_noise"] * rng.standard_normal(V.shape)
     omegas = np.array([case["omega"], 3.0])
-    return E, V, S0, w, pul, omegas, np.array(case["prm"], dtype=float)
+    kp, cp, *values = case["prm"]
+    prm = friction.contact_vector(kp, cp, case.get("law", friction.LAW), *values)
+    return E, V, S0, w, pul, omegas, prm
+
+
+def _creep_rate(mu, nu):
+    return friction.contact_vector(KP, CP, "creep-rate", mu, nu)
 
 
 # the strip (over -0.3 .. 1.3 rad) at R0 + GAP from a centre off by 2 mm towards -0.5 rad:
@@ -156,6 +163,8 @@ CASES = {  # gap (m), offset in the pulley plane (m), rotation (rad/s), axial an
                       v_noise=0.05, omega=2.0, prm=[KP, CP, MU, 1e8]),
     "mixed-clamped": dict(seed=1, gap=GAP, offset=OFFSET, omega_b=5.0, axial=0.0,
                           v_noise=0.5, omega=4.5, prm=[KP, 5e6, MU, 1e6]),
+    "coulomb": dict(seed=1, gap=GAP, offset=OFFSET, omega_b=5.0, axial=0.0, v_noise=0.5,
+                    omega=4.5, prm=[KP, 5e6, MU, 0.2], law="coulomb"),
 }
 
 
@@ -218,7 +227,7 @@ def test_jacobians_match_central_differences(case):
     errs["dTw"] = _check(fd["dTw"][:, None], base["dTw"][:, None], sT, "dTw")
     print(case, {k: f"{v:.1e}" for k, v in errs.items()})
 
-    counts = {b: int(np.sum(labels == b)) for b in range(4)}
+    counts = {b: int(np.sum(labels == b)) for b in range(5)}
     assert not labels[:, :, 1].any()  # pulley 1 is far
     if case == "none":
         assert base["pairs"] > 0 and counts[0] == labels.size and not base["Q"].any()
@@ -235,13 +244,15 @@ def test_jacobians_match_central_differences(case):
     if case == "mixed-clamped":
         assert min(counts[1], counts[2], counts[3]) > 0, counts
         assert vsn[labels == 3].min() > 1e3 * H
+    if case == "coulomb":
+        assert min(counts[1], counts[friction.SMOOTH]) > 0 and counts[2] + counts[3] == 0, counts
 
 
 @pytest.mark.parametrize("case", list(CASES))
 def test_point_law_follows_eqs_4_43_and_4_44(case):
     """contact_state3d against the equations written out in numpy, every branch."""
     E, V, S0, w, pul, omegas, prm = _fd_state(CASES[case])
-    kp, cp, mu, nu = prm
+    kp, cp, _, mu, q = prm[:5]
     r, d, Fn, ft, vs, _ = _state(E, V, S0, pul, omegas, prm)
     p = pul["axes"] / np.linalg.norm(pul["axes"], axis=-1, keepdims=True)
     rdot = np.einsum("eqk,ekd->eqd", S0, V)[:, :, None, :]
@@ -256,9 +267,13 @@ def test_point_law_follows_eqs_4_43_and_4_44(case):
     wrel = rdot - u
     vs_ref = wrel - np.sum(wrel * n, axis=-1, keepdims=True) * n
     vsn = np.linalg.norm(vs_ref, axis=-1)
-    lin = nu * vsn <= mu * Fn_ref
-    ft_ref = np.where(lin[..., None], -nu * vs_ref,
-                      -(mu * Fn_ref / np.where(lin, 1.0, vsn))[..., None] * vs_ref)
+    if CASES[case].get("law") == "coulomb":
+        g = mu * Fn_ref * np.tanh(vsn / q) / np.where(vsn > 0, vsn, 1.0)
+        ft_ref = -g[..., None] * vs_ref
+    else:
+        lin = q * vsn <= mu * Fn_ref
+        ft_ref = np.where(lin[..., None], -q * vs_ref,
+                          -(mu * Fn_ref / np.where(lin, 1.0, vsn))[..., None] * vs_ref)
     ft_ref = np.where((Fn_ref > 0)[..., None], ft_ref, 0.0)
     pairs = ((r[:, :, None], rn + pul["centres"]), (d, d_ref), (Fn, Fn_ref), (vs, vs_ref),
              (ft, ft_ref))
@@ -320,7 +335,7 @@ def test_wrapped_strip_geometry_is_a_cylinder_within_the_tolerance():
 def test_strip_at_rest_presses_k_p_d0_times_the_area(rule):
     """Full wrap: total normal force k_p D0 x area, no net force, no moment, no friction;
     half wrap: the resultant int f dA = k_p D0 (2 rho) width along the mean normal."""
-    prm = np.array([KP, CP, MU, 1e5])
+    prm = _creep_rate(MU, 1e5)
     E, V, S0, w, _ = _wrap(N_WRAP, RHO, PULLEY["centres"][0], AXIS, rule=rule)
     out = _forces(E, V, S0, w, PULLEY, np.zeros(1), prm, want_J=False)
     _, d, Fn, ft, _, _ = _state(E, V, S0, PULLEY, np.zeros(1), prm)
@@ -352,7 +367,7 @@ def test_sliding_strip_follows_the_creep_rate_law(omega, ratio, branch):
     vt = omega_b * RHO - omega * R0
     speed = np.hypot(vt, axial)
     nu = ratio * MU * KP * D0 / speed
-    prm = np.array([KP, CP, MU, nu])
+    prm = _creep_rate(MU, nu)
     out = _forces(E, V, S0, w, PULLEY, np.array([omega]), prm, want_J=False)
     r, _, Fn, ft, vs, br = _state(E, V, S0, PULLEY, np.array([omega]), prm)
     rn = r - PULLEY["centres"][0]
@@ -387,8 +402,8 @@ def test_plane_motion_reduces_to_the_2d_law_per_unit_width():
     normal force, friction, sliding speed, moment and nodal forces equal those of
     ancf/belts/contact2d.py for the same centre line, with k_p, c_p, nu_s divided by the width."""
     n, b, nel = 7, 0.04, 6
-    prm2 = np.array([1e6, 50.0, MU, 1e3])               # N/m^2, N s/m^2, -, kg/(m s)
-    prm3 = prm2 / np.array([b, b, 1.0, b])               # N/m^3, N s/m^3, -, kg/(m^2 s)
+    prm2 = friction.contact_vector(1e6, 50.0, "creep-rate", MU, 1e3)  # N/m^2, N s/m^2, kg/(m s)
+    prm3 = friction.contact_vector(1e6 / b, 50.0 / b, "creep-rate", MU, 1e3 / b)  # per metre
     rng = np.random.default_rng(11)
     centre = np.array([0.02, -0.01])
     # a 2D arc of the belt: ring nodes of radius R0 off-centre, perturbed, with a velocity field
@@ -505,7 +520,7 @@ def test_bounding_test_never_skips_a_pair_in_contact():
     E, V, a, b = _random_elements(rng, 400)
     pul = _pulleys([[0.0, 0.0, 0.0], [0.12, 0.05, -0.03]], [[0.0, 0.0, 2.0], [0.6, 0.0, 0.8]],
                    [0.1, 0.04], odot=[[0.1, 0.0, 0.0], [0.0, -0.2, 0.3]])
-    omegas, prm = np.array([3.0, -2.0]), np.array([KP, CP, MU, 1e5])
+    omegas, prm = np.array([3.0, -2.0]), _creep_rate(MU, 1e5)
     S0, w = contact_points3d(a, b, 25)
     # pair by pair: a skipped pair has its whole mid surface outside the cylinder
     g = np.linspace(0.0, 1.0, 41)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 import subprocess
+import re
 import sys
 from pathlib import Path
 
@@ -14,7 +15,8 @@ HEAVY = ("sympy", "pandas", "dask", "matplotlib", "meshio")
 
 
 @pytest.mark.parametrize("argv", [["run", "cantilever", "--json"],
-                                  ["run", "pendulum", "--set", "t_end=0.05", "--json"]])
+                                  ["run", "pendulum", "--set", "t_end=0.05", "--json"],
+                                  ["modes", "plate-square", "--json"]])
 def test_run_imports_no_heavy_library(argv):
     code = ("import sys\nfrom ancf import cli\nrc = cli.main(%r)\n"
             "print(sorted(m for m in %r if m in sys.modules), file=sys.stderr)\n") % (argv, HEAVY)
@@ -54,13 +56,32 @@ def test_run_loads_its_scene_only():
                            "ancf.scenes.beam_static"}
 
 
+def test_modes_loads_its_scene_only():
+    """``ancf modes cantilever`` imports the cantilever's modules, the mode shapes' sampler
+    and the eigensolver: no other scene, no belt, no analytic reference."""
+    loaded = _loaded_after(["modes", "cantilever", "--json"],
+                           ("ancf.scenes.", "ancf.belts", "ancf.elements.belt3d",
+                            "ancf.elements.dufva2d", "analytic", "ancf.solvers.eigen"))
+    assert set(loaded) == {"ancf.scenes.cantilever", "ancf.scenes.base", "ancf.scenes.accuracy",
+                           "ancf.scenes.beam_static", "ancf.scenes.frames", "ancf.scenes.modes",
+                           "ancf.solvers.eigen"}
+
+
+def test_the_scenes_with_modes_are_those_that_declare_them():
+    """ancf.scenes.modes.MODAL (what ``ancf modes`` accepts by name) is every scene with a
+    modal model, in the order of the scenes."""
+    import ancf.scenes as scenes
+    from ancf.scenes.modes import MODAL
+    assert list(MODAL) == [n for n, sc in scenes.SCENES.items() if sc.modal is not None]
+
+
 def test_scene_table_names_every_scene():
     """ancf.scenes.MODULES (what ``ancf run`` imports by name) matches the scenes' own names."""
     import ancf.scenes as scenes
     assert list(scenes.SCENES) == list(scenes.MODULES)
     assert all(scenes.scene(n).name == n for n in scenes.MODULES)
     mods = {p.stem for p in (ROOT / "ancf" / "scenes").glob("*.py")
-            if "SCENE = Scene(" in p.read_text()}
+            if re.search(r"^SCENE = \w*Scene\(", p.read_text(), flags=re.M)}
     assert mods == set(scenes.MODULES.values())
 
 

@@ -13,6 +13,7 @@ import pytest
 
 from ancf.checks.belt3d import CHECK_NAMES as BELT3D_ROWS
 from ancf.checks.belt2d import GAUSS_CHECK
+from ancf.checks.frequencies import ACCEPT_MESH, AXIAL_MESHES, SUPPORTS
 from ancf.study.extremes import AXES, QUICK_SKIPPED
 from ancf.reports.__main__ import CHAPTERS
 
@@ -110,6 +111,42 @@ AGREES = {
         ("Rigid rotation: zero strain energy, 3D beam", "test_rigid_rotation_has_no_strain"),
         ("Rigid rotation: zero elastic force, 3D beam", "test_rigid_rotation_has_no_strain"),
         ("Rigid rotation: zero strain energy, plate", "test_rigid_rotation_has_no_strain"))},
+    **{name: (("test_beam3d_benchmarks", test), "PASS") for name, test in (
+        ("Tip moment, small rotation: tip = M L²/(2EI), twist = M L/(k_s G I_p) (both "
+         "elements)", "test_tip_moment_small_deflection_is_the_closed_form"),
+        *((f"Princeton beam, {el} (16 el.): u_{c} vs ANSYS beam, every load and angle",
+           "test_princeton_linear3d_and_belt3d_against_ansys")
+          for el in ("linear3d", "belt3d") for c in "yz"),
+        ("Princeton beam, linear3d exact integration locks: u_z at 90° below 20 % of ANSYS",
+         "test_princeton_exact_integration_locks"),
+        ("Princeton beam, linear3d k_s = 5/6: torsion too stiff, u_y (F3, 45°) low by more "
+         "than 15 %", "test_princeton_default_ks_is_too_stiff_in_torsion"),
+        ("3D general bending, linear3d (32 el.): u_z vs Table 4 ANSYS",
+         "test_general_bending_u_z_against_table_4"),
+        ("3D general bending, linear3d (32 el.): u_x, u_y vs Table 4 ANSYS",
+         "test_general_bending_u_x_u_y_against_table_4"),
+        ("3D general bending: ours − ANSYS = the continuum's second-order terms (u_x, u_y; "
+         "128 el.)", "test_general_bending_difference_is_the_continuum_terms"))},
+    **{name: (("test_modes", test), "PASS") for name, test in (
+        *((f"Beam {s}, linear thesis, L/h = 20, {ACCEPT_MESH[s]} el.: first three frequencies "
+           "within 0.5 % of Timoshenko",
+           "test_first_three_bending_frequencies_within_half_a_percent_of_timoshenko")
+          for s in SUPPORTS),
+        *((f"Beam {s}, linear thesis: convergence order 2 (fit over n = 8…64, modes 1-2)",
+           "test_bending_frequencies_converge_at_second_order") for s in SUPPORTS),
+        ("Plate simply supported, 8 × 8: fundamental within 1 % of Navier",
+         "test_plate_square_fundamental_within_one_percent_of_navier_at_8x8"),
+        *((f"Axial bar, {n} el.: ω₁ about the equilibrium vanishes within 1 % of Euler's load",
+           "test_axial_bar_first_bending_frequency_vanishes_at_the_euler_load")
+          for n in AXIAL_MESHES))},
+    **{name: (("test_frequencies", test), "PASS") for name, test in (
+        ("Plate free-free, 8 × 8: first three ratios within 0.2 % of the Ritz series",
+         "test_free_free_plate_ratios_within_0p2_percent_of_the_ritz_series_and_exudyn"),
+        ("Plate free-free: Ritz series = Exudyn's published ratios to their last digit",
+         "test_free_free_plate_ratios_within_0p2_percent_of_the_ritz_series_and_exudyn"),
+        *((f"Belt 120 rad/s, {k} span: mid-span frequency within 5 % of the moving string",
+           "test_belt_span_frequency_within_5_percent_of_the_moving_string")
+          for k in ("tight", "slack")))},
     **{name: (("test_belt3d_checks", "test_model2_and_model1_checks"), QUICK_SKIPPED)
        for name in BELT3D_ROWS[:7]},
     **{name: (("test_belt3d_checks", "test_settled_pretension_converges_with_the_element_count"),

@@ -1,11 +1,13 @@
-"""One JSON schema per scene and analytic reference (issue 15, item 16): every default run,
-and a non-converging run of each scene, validates against its schema; the validator
-rejects what the schema forbids; reports/schemas.md is the generated text."""
+"""One JSON schema per scene and analytic reference (issue 15, item 16) and per scene with
+modes (issue 24): every default run, and a non-converging run of each scene, validates
+against its schema; the validator rejects what the schema forbids; reports/schemas.md is
+the generated text."""
 import json
 from pathlib import Path
 
 import pytest
 
+from ancf.scenes.modes import MODAL, execute as modes
 from ancf.study.schemas import RESULTS, registries, schema, schemas_markdown, validate
 
 NAMES = list(registries())
@@ -19,6 +21,8 @@ FAILING = {"simply-supported": {"max_iterations": 1, "load_steps": 1},
            "plate-square": {"a": 1e70},  # the stiffness overflows: a non-finite deflection
            "plate-strip": {"max_iterations": 1, "load_steps": 1},
            "beam3d-cantilever": {"max_iterations": 1, "load_steps": 1},
+           "princeton-beam": {"max_iterations": 1, "load_steps": 1},
+           "beam3d-bending": {"max_iterations": 1, "load_steps": 1},
            "belt3d": {"max_steps": 5, "t_end": 0.1}}
 #: shortened "default" runs where the default is a long study (the keys are the same)
 SHORT = {"belt3d": {"t_end": 0.02, "output_dt": 0.01}}
@@ -46,6 +50,24 @@ def test_non_converged_run_matches_its_schema(name):
     out = _run(name, FAILING[name])
     assert not out["converged"]
     assert validate(out, schema(name)) == []
+
+
+@pytest.mark.parametrize("about", ["reference", "equilibrium"])
+@pytest.mark.parametrize("name", MODAL)
+def test_modes_match_their_schema(name, about):
+    out = json.loads(json.dumps(modes(name, {}, None, about)[0]))
+    assert out["converged"] and out["results"]["about"] == about
+    assert validate(out, schema(f"modes {name}")) == []
+    assert ("lowest_frequency_reference_hz" in out["results"]) == (about == "equilibrium")
+
+
+@pytest.mark.parametrize("name", [n for n in MODAL if n != "plate-square"])
+def test_modes_without_an_equilibrium_match_their_schema(name):
+    """Newton stopped (the failing input of the scene's run): results null where the
+    eigenpairs would be."""
+    out = json.loads(json.dumps(modes(name, FAILING[name], None, "equilibrium")[0]))
+    assert not out["converged"] and out["results"]["frequencies_hz"] is None
+    assert validate(out, schema(f"modes {name}")) == []
 
 
 def test_the_validator_rejects_what_the_schema_forbids():
@@ -76,8 +98,13 @@ def test_schema_names_as_the_readme_writes_them():
     assert schema("run cantilever") == schema("cantilever") == schema("ancf run cantilever")
     assert schema("analytic reissner")["title"] == "ancf analytic reissner --json"
     assert schema("analytic reissner")["properties"]["scene"]["const"] == "reissner"
-    assert set(names()) == {f"{c} {n}" for n, (c, _) in registries().items()}
-    for bad in ("run reissner", "analytic cantilever", "run", "cantilever beam", "nope"):
+    assert set(names()) == ({f"{c} {n}" for n, (c, _) in registries().items()}
+                            | {f"modes {n}" for n in MODAL})
+    assert schema("modes cantilever")["title"] == "ancf modes cantilever --json"
+    assert "rho" in schema("modes cantilever")["properties"]["params"]["properties"]
+    assert "rho" not in schema("run cantilever")["properties"]["params"]["properties"]
+    for bad in ("run reissner", "analytic cantilever", "run", "cantilever beam", "nope",
+                "modes pendulum", "modes reissner"):
         with pytest.raises(KeyError) as exc:  # the old exception type still catches it
             schema(bad)
         assert isinstance(exc.value, (SchemaNameError, ValueError))

@@ -1,9 +1,10 @@
-"""The belt drive in one place: the wrapped path and the laid belt (``path``), the
-pulley laws (``pulleys``, Eqs 3.29-3.30, 4.46-4.47), distributed penalty contact with
-creep-rate friction in 2D and 3D (``contact2d``, ``contact3d``), the assembled drive
-models (``drive2d``, ``drive3d``), their compiled forces as named records (``forces``)
-and the bordered system they form for the shared generalised-alpha march
-(``system``), time integration (``dynamics``; ``bdf`` the scipy cross-check),
-the static pre-tension (``pretension``), post-processing (``post2d``, ``post3d``) and
-the axial strain measures of thesis 4.2 (``strains``).
+"""The belt drive in one place: the wrapped path round any sequence of pulleys and the laid
+belt (``path``), a drive as data (``drive_data``) read from a TOML drive file
+(``drive_file``), the pulley laws (``pulleys``, Eqs 3.29-3.30, 4.46-4.47), distributed
+penalty contact with creep-rate friction in 2D and 3D (``contact2d``, ``contact3d``),
+a tensioner's arm in 2D (``arm2d``), the assembled drive models (``drive2d``, ``drive3d``), their compiled forces as named
+records (``forces``) and the bordered system they form for the shared generalised-alpha
+march (``system``), time integration (``dynamics``; ``bdf`` the scipy cross-check), the
+static pre-tension (``pretension``), post-processing (``post2d``, ``post3d``) and the
+axial strain measures of thesis 4.2 (``strains``).
 """

@@ -4,7 +4,7 @@ speed-accuracy study.
 
 First-order form y = (x, v) of the equations of :mod:`ancf.belts.system`:
 
-    x' = v,    v' = -Mt^-1 f(x, v, t),    Mt = diag(M, I)
+    x' = v,    v' = -Mt^-1 f(x, v, t),    Mt = diag(M, I_1, ..., I_k)
 
 with the same compiled forces (:func:`ancf.belts.forces.evaluate`; the mass
 matrix is factored once).  The Jacobian is exact and dense,
@@ -25,7 +25,7 @@ from ancf.solvers.result import DynamicResult
 
 class _FirstOrder:
     def __init__(self, drive):
-        self.d, self.drive, self.n = drive, drive.kernel(), drive.n
+        self.d, self.drive, self.n, self.k = drive, drive.kernel(), drive.n, drive.k
         self.kl = drive.pattern.kl
         self.M = drive.Mb.copy()
         self.piv = np.zeros(self.n, dtype=np.int64)
@@ -33,39 +33,42 @@ class _FirstOrder:
         self.nfev = self.njev = 0
 
     def _inv_mass(self, F):
-        """Mt^-1 F for F (n + 1,) or (n + 1, k), in place."""
+        """Mt^-1 F for F (n + k,) or (n + k, m), in place."""
         cols = F if F.ndim == 2 else F[:, None]
         for j in range(cols.shape[1]):
             c = np.ascontiguousarray(cols[: self.n, j])
             banded.solve(self.M, self.kl, self.piv, c)
             cols[: self.n, j] = c
-        cols[self.n] /= self.drive.inertia
+        cols[self.n:] /= self.drive.inertia[:, None]
         return F
 
     def _laws(self, t):
         return self.d.laws(np.array([t]))[:, 0].copy()
 
     def fun(self, t, y):
-        m = self.n + 1
+        n, k = self.n, self.k
+        m = n + k
         f = np.zeros(m)
         evaluate(y[:m], y[m:], self._laws(t), self.drive, False, 0.0, 0.0, f, np.zeros((1, 1)),
-                 np.zeros(self.n), np.zeros(self.n))
+                 np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)))
         self.nfev += 1
         return np.concatenate([y[m:], -self._inv_mass(f)])
 
     def _block(self, t, y, bp, gp):
         """Dense d f / d(x or v) (bp, gp = 1, 0 or 0, 1)."""
-        m, n = self.n + 1, self.n
-        mat, col, row = self.d.pattern.zeros_matrix(), np.zeros(n), np.zeros(n)
-        corner, _ = evaluate(y[:m], y[m:], self._laws(t), self.drive, True, bp, gp, np.zeros(m),
-                             mat, col, row)
+        n, k = self.n, self.k
+        m = n + k
+        mat, col, row = self.d.pattern.zeros_matrix(), np.zeros((k, n)), np.zeros((k, n))
+        corner = np.zeros((k, k))
+        evaluate(y[:m], y[m:], self._laws(t), self.drive, True, bp, gp, np.zeros(m), mat, col,
+                 row, corner)
         D = np.zeros((m, m))
         D[:n, :n] = self.d.pattern.as_csr(mat).toarray()
-        D[:n, n], D[n, :n], D[n, n] = col, row, corner
+        D[:n, n:], D[n:, :n], D[n:, n:] = col.T, row, corner
         return D
 
     def jac(self, t, y):
-        m = self.n + 1
+        m = self.n + self.k
         self.njev += 1
         J = np.zeros((2 * m, 2 * m))
         J[:m, m:] = np.eye(m)
@@ -78,7 +81,7 @@ def simulate_bdf(drive, t_out, rtol: float, atol: float, x0, max_steps: int) -> 
     """Integrate with scipy's BDF from x0 at rest over the sample times t_out (s); at most
     max_steps steps."""
     sys_ = _FirstOrder(drive)
-    m = drive.n + 1
+    m = drive.n + drive.k
     solver = BDF(sys_.fun, t_out[0], np.concatenate([x0, np.zeros_like(x0)]), t_out[-1],
                  rtol=rtol, atol=atol, jac=sys_.jac)
     Y, k, steps, msg = [solver.y.copy()], 1, 0, "ok"

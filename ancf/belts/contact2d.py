@@ -2,8 +2,10 @@
 (thesis section 3.2, Eqs 3.20-3.27), compiled (numba).
 
 At every Gauss point of the centreline (y = 0) of a ``cubic2d`` element, with
-r = S0 e (m) and rdot = S0 edot (m/s), and for a pulley of centre o (m), radius R (m)
-and angular velocity omega (rad/s, counter-clockwise positive):
+r = S0 e (m) and rdot = S0 edot (m/s; less the centre's velocity where the centre moves:
+a tensioner's, :mod:`ancf.belts.arm2d`), and for a pulley of centre o (m), radius R (m)
+and angular velocity omega (rad/s, counter-clockwise positive).  A pulley on the belt's
+back (side -1) is met the same way: the belt lies outside its disc either way.
 
     d    = R - |r - o|                   penetration, m                     (3.21)
     n    = (r - o) / |r - o|             outward normal of the pulley       (3.22)
@@ -159,11 +161,22 @@ def _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw):
 @njit(cache=True)
 def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
                    Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
+    """:func:`contact_forces_moving` with the pulley centres at rest."""
+    return contact_forces_moving(E, V, S0, w, centres, np.zeros_like(centres), radii, omegas,
+                                 prm, want_J, Q, Kq, Cv, Qw, T, dTq, dTv, dTw)
+
+
+@njit(cache=True)
+def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, want_J,
+                          Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
     """Add the contact forces of every element on every pulley.
 
     E, V (nel, 6, 2) element coordinates (m, slopes -) and velocities; S0, w from
-    :func:`contact_points` (the element length is sum_g w); centres (np, 2) m, radii
-    (np,) m, omegas (np,) rad/s; prm = [k_p N/m^2, c_p N s/m^2, mu -, nu_s kg/(m s)].
+    :func:`contact_points` (the element length is sum_g w); centres (np, 2) m and their
+    velocities odot (np, 2) m/s (rdot - odot enters the law: the point's velocity
+    relative to the centre), radii (np,) m, omegas (np,) rad/s; prm = [k_p N/m^2,
+    c_p N s/m^2, the friction law's code and parameters]
+    (:func:`ancf.belts.friction.contact_vector`).
     Adds Q (nel, 12) N and T (np,) N m and, if ``want_J``, their exact derivatives on the
     active branch: Kq, Cv (nel, 12, 12) dQ/de, dQ/dedot; Qw (nel, np, 12) dQ/domega_p;
     dTq, dTv (np, nel, 12) dT_p/de, dT_p/dedot; dTw (np,) dT_p/domega_p.  Returns the
@@ -185,6 +198,7 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
             for g in range(ng):
                 r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
                 a0, a1 = r0 - o0, r1 - o1
+                v0, v1 = v0 - odot[p, 0], v1 - odot[p, 1]
                 rho, _, Fn, vt, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, f)
                 if Fn <= 0.0:
                     continue
@@ -204,7 +218,14 @@ def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
 
 @njit(cache=True)
 def contact_state(E, V, S0, centres, radii, omegas, prm):
-    """Contact quantities at every Gauss point for post-processing (no bounding test).
+    """:func:`contact_state_moving` with the pulley centres at rest."""
+    return contact_state_moving(E, V, S0, centres, np.zeros_like(centres), radii, omegas, prm)
+
+
+@njit(cache=True)
+def contact_state_moving(E, V, S0, centres, odot, radii, omegas, prm):
+    """Contact quantities at every Gauss point for post-processing (no bounding test),
+    the pulley centres moving at odot (np, 2) m/s.
 
     Returns ``r`` (nel, ng, 2) centreline positions, m, and, each (nel, ng, np):
     penetration ``d`` (m, negative out of contact), normal force ``F_n`` (N/m),
@@ -221,7 +242,8 @@ def contact_state(E, V, S0, centres, radii, omegas, prm):
             r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
             r[e, g, 0], r[e, g, 1] = r0, r1
             for p in range(npul):
-                _, dd, F, vtp, _ = _point_law(r0 - centres[p, 0], r1 - centres[p, 1], v0, v1,
-                                              radii[p], omegas[p], prm, f)
+                _, dd, F, vtp, _ = _point_law(r0 - centres[p, 0], r1 - centres[p, 1],
+                                              v0 - odot[p, 0], v1 - odot[p, 1], radii[p],
+                                              omegas[p], prm, f)
                 d[e, g, p], Fn[e, g, p], phi[e, g, p], vt[e, g, p] = dd, F, f[0], vtp
     return r, d, Fn, phi, vt

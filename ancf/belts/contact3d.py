@@ -304,7 +304,8 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     E, V (nel, 12, 3) element coordinates (m, slopes -) and velocities; S0, w from
     :func:`contact_points3d`; centres (np, 3) m, axes (np, 3) (normalised here),
     radii (np,) m, omegas (np,) rad/s about the axes, centre_velocities (np, 3) m/s;
-    prm = [k_p N/m^3, c_p N s/m^3, mu -, nu_s kg/(m^2 s)].  Adds Q (nel, 36) N and
+    prm = [k_p N/m^3, c_p N s/m^3, the friction law's code and parameters]
+    (:func:`ancf.belts.friction.contact_vector`).  Adds Q (nel, 36) N and
     T (np,) N m and, if ``want_J``, their exact derivatives on the active branch:
     Kq, Cv (nel, 36, 36) dQ/de, dQ/dedot; Qw (nel, np, 36) dQ/domega_p; dTq, dTv
     (np, nel, 36) dT_p/de, dT_p/dedot; dTw (np,) dT_p/domega_p.  Returns the number

@@ -1,23 +1,28 @@
-"""The 2D belt drive as a model: a closed belt of Dufva elements on a two-pulley path,
-penalty contact with creep-rate friction on both pulleys, a driver with prescribed
-angular velocity and a driven pulley whose rotation is a generalised coordinate.
+"""The 2D belt drive as a model: a closed belt of Dufva elements on the wrapped path of
+its pulleys, penalty contact with creep-rate friction on every pulley, pulleys turned
+by their laws (a driver's prescribed angular velocity; a fixed pulley's zero) and free
+pulleys (driven pulleys and idlers) whose rotations are generalised coordinates.
 
 Coordinates: the belt's nodal coordinates (node by node r, r_x, r_y; the loop is
 closed by the last element sharing the first node, so there are no constraint
 equations, thesis section 3.3) in the numbering of a :class:`ReducedPattern`
 (reverse Cuthill-McKee: a ring has a narrow band once renumbered), followed by the
-driven pulley's angle theta (rad).  The mass matrix is constant: band storage
-``Mb`` for the belt, ``inertia`` for the pulley.
+free pulleys' angles theta_j (rad).  The mass matrix is constant: band storage ``Mb``
+for the belt, the free pulleys' ``inertia``.
 
-Pulley 0 is the driver (left, ``omega_driver(t)``), pulley 1 the driven one.
+The pulleys are a :class:`Rig`.  The thesis drive's (a :class:`BeltSpec`): pulley 0
+the driver (left, ``omega_driver(t)``), pulley 1 the driven one.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
 
+from ancf.belts import friction
+from ancf.belts.arm2d import COORD, arm_geometry
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact2d import contact_forces, contact_points, contact_state
 from ancf.belts.forces import Drive2D
@@ -43,8 +48,8 @@ class DriveSpec:
 
 
 @dataclass(frozen=True)
-class BeltSpec(DriveSpec):
-    """Everything that defines a belt drive (SI units; see the belt2d scene)."""
+class Belt2DSpec(DriveSpec):
+    """The belt and its contact (SI units; see the belt2d scene)."""
 
     b: float                    # section width, m
     h: float                    # section height, m
@@ -54,9 +59,15 @@ class BeltSpec(DriveSpec):
     nx: int                     # Gauss points of the elastic forces per element
     k_p: float                  # penalty stiffness per unit length, N/m^2
     c_p: float                  # penalty damping per unit length, N s/m^2
-    mu: float                   # friction coefficient
-    nu_s: float                 # creep-rate factor, kg/(m s)
+    friction: tuple             # (law, its parameters): a row of ancf.belts.friction.PARAMS
     gauss_points: int           # contact Gauss points per element (5, 7, 11)
+
+
+@dataclass(frozen=True)
+class BeltSpec(Belt2DSpec):
+    """Everything that defines the thesis's two-pulley drive (SI units; see the belt2d
+    scene)."""
+
     inertia: float              # driven pulley moment of inertia, kg m^2
     omega_final: float          # driver's final angular velocity, rad/s (Eq. 3.29)
     Ta_max: float               # final opposing torque, N m (Eq. 3.30)
@@ -64,21 +75,88 @@ class BeltSpec(DriveSpec):
     torque_law: str = "cosine-ramp"  # the load torque law (TORQUE_LAWS)
 
 
+@dataclass(frozen=True)
+class Rig:
+    """The pulleys of a drive as the march sees them (SI units): ``names`` (np,),
+    ``centres`` (np, dim) m, contact ``radii`` (np,) m, ``free`` (np,) int (the free
+    pulley's number j, -1 for a pulley turned by its law), the free pulleys' ``inertia``
+    (k,) kg m^2 and rotational ``damping`` (k,) N m s, one law per pulley, a function of
+    the time (s, an array): the angular velocity (rad/s) of a pulley turned by it, the
+    load torque T_a (N m) of a free one, and the tensioners' ``arms`` (na, 8)
+    (:mod:`ancf.belts.arm2d`; their angles are free coordinates too, with an inertia and
+    a damping)."""
+
+    names: tuple
+    centres: np.ndarray
+    radii: np.ndarray
+    free: np.ndarray
+    inertia: np.ndarray
+    damping: np.ndarray
+    laws: tuple[Callable, ...]
+    arms: np.ndarray = field(default_factory=lambda: np.zeros((0, 8)))
+
+
+def thesis_rig(spec: BeltSpec, speed, torque, dim: int = 2) -> Rig:
+    """The thesis drive's pulleys: the driver (``speed(t)``) and the driven pulley
+    (``torque(t)``, no damping), centres in the x-y plane of ``dim`` dimensions."""
+    path = spec.path
+    centres = np.zeros((2, dim))
+    centres[:, :2] = [path.O1, path.O2]
+    return Rig(("driver", "driven"), centres, np.array([path.R1, path.R2]),
+               np.array([-1, 0]), np.array([float(spec.inertia)]), np.zeros(1), (speed, torque))
+
+
 class PulleyDrive:
     """What the 2D and 3D belt drives share: a belt in the numbering of ``pattern``
-    (``n_dofs`` global coordinates) followed by the driven pulley's angle, and the contact
-    of its elements E (nel, nshape, dim) with the pulleys through the subclass's kernels
-    ``contact_state`` and ``contact_forces`` (staticmethods, the pulley arguments from
-    :meth:`pulleys_at_rest`)."""
+    (``n_dofs`` global coordinates) followed by the free pulleys' angles, the pulleys
+    (``rig``: :class:`Rig`), and the contact of its elements E (nel, nshape, dim) with
+    the pulleys through the subclass's kernels ``contact_state`` and ``contact_forces``
+    (staticmethods, the pulley arguments from :meth:`pulleys_at_rest`)."""
 
     @property
     def n(self) -> int:
-        """Belt coordinates (the pulley angle is coordinate n)."""
+        """Belt coordinates (the free pulleys' angles are coordinates n, n + 1, ...)."""
         return self.pattern.n
 
-    def state(self, q, theta=0.0) -> np.ndarray:
-        """System vector (belt in pattern numbering, then theta) from global belt q."""
-        return np.append(self.pattern.restrict(q), theta)
+    @property
+    def k(self) -> int:
+        """Free pulleys."""
+        return self.rig.inertia.size
+
+    @property
+    def centres(self) -> np.ndarray:
+        return self.rig.centres
+
+    @property
+    def radii(self) -> np.ndarray:
+        return self.rig.radii
+
+    def moved(self, x, v) -> tuple:
+        """The pulley centres (np, 2) m and their velocities (np, 2) m/s at the system
+        state x, v: a tensioner's on its arm."""
+        arms = self.rig.arms
+        o, odot = self.centres.copy(), np.zeros_like(self.centres)
+        for a in range(arms.shape[0]):
+            j = self.n + int(arms[a, COORD])
+            arm_geometry(arms, a, float(x[j]), float(v[j]), o, odot, np.zeros((arms.shape[0], 2)))
+        return o, odot
+
+    def laws(self, t) -> np.ndarray:
+        """The pulley laws (np, len(t)) of the march (:class:`Rig`)."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        return np.stack([law(t) for law in self.rig.laws])
+
+    def omegas(self, t: float, v) -> np.ndarray:
+        """Every pulley's angular velocity (np,) at time t (s) and system velocities v,
+        rad/s."""
+        law = self.laws(np.array([t]))[: self.radii.size, 0]
+        j = self.rig.free
+        return np.where(j < 0, law, np.asarray(v)[self.n + np.maximum(j, 0)])
+
+    def state(self, q) -> np.ndarray:
+        """System vector (belt in pattern numbering, then the pulley angles 0) from global
+        belt q."""
+        return np.append(self.pattern.restrict(q), np.zeros(self.k))
 
     def belt(self, x) -> np.ndarray:
         """Global belt coordinates from a system vector."""
@@ -89,7 +167,7 @@ class PulleyDrive:
         dQ/de (nel, ndof, ndof) N/m or None), ndof = nshape dim."""
         nel, nd, npul = E.shape[0], E.shape[1] * E.shape[2], self.radii.size
         V, pulleys = np.zeros_like(E), self.pulleys_at_rest()
-        prm = np.array([self.spec.k_p, 0.0, 0.0, 0.0])
+        prm = friction.contact_vector(self.spec.k_p, 0.0, "creep-rate", 0.0, 0.0)
         d = self.contact_state(E, V, self.S0, *pulleys, prm)[1]
         U = 0.5 * self.spec.k_p * np.einsum("eg,egp->", self.w, np.maximum(d, 0.0) ** 2)
         if not want_J:
@@ -102,12 +180,14 @@ class PulleyDrive:
 
 
 class BeltDrive(PulleyDrive):
-    """The assembled model of a :class:`BeltSpec`."""
+    """The assembled model of a belt on its pulleys: a :class:`BeltSpec` (the thesis
+    drive), or a :class:`Belt2DSpec` on any path with the pulleys of ``rig`` and the
+    belt's weight under ``gravity`` (m/s^2)."""
 
     contact_state = staticmethod(contact_state)
     contact_forces = staticmethod(contact_forces)
 
-    def __init__(self, spec: BeltSpec):
+    def __init__(self, spec: Belt2DSpec, rig: Rig | None = None, gravity=(0.0, 0.0)):
         self.spec = s = spec
         self.mesh = BeamMesh(s.belt_length, s.n_elements, SLOTS, closed=True)
         self.q0 = laid_belt(s.path, s.belt_length, s.n_elements).ravel()
@@ -120,23 +200,33 @@ class BeltDrive(PulleyDrive):
         self.Mb = self.pattern.zeros_matrix()
         scatter(np.zeros((s.n_elements, 12)), self.element.mass(), self.vidx, self.midx,
                 np.zeros(self.pattern.n), self.Mb, True)
+        self.weight = self.pattern.restrict(self._weight(gravity))
         self.S0, self.w, self.xi = contact_points(self.mesh.lengths, s.gauss_points)
-        self.centres = np.array([s.path.O1, s.path.O2], dtype=float)
-        self.radii = np.array([s.path.R1, s.path.R2])
-        self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
-        self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
-        self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
+        self.prm = friction.contact_vector(s.k_p, s.c_p, *s.friction)
+        if rig is None:
+            self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
+            self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
+            rig = thesis_rig(s, self.omega_driver, self.torque)
+        self.rig = rig
+
+    def _weight(self, gravity) -> np.ndarray:
+        """The belt's weight as global generalised forces, N: the consistent mass times
+        the uniform field (g at every node's r, 0 at its slopes; the position shape
+        functions sum to 1, so this is int rho A S^T g dx exactly)."""
+        G = np.zeros((self.mesh.n_nodes, len(SLOTS), 2))
+        G[:, 0] = gravity
+        Ge = G.ravel()[self.dofmap]
+        out = np.zeros(self.n_dofs)
+        np.add.at(out, self.dofmap, np.einsum("eab,eb->ea", self.element.mass(), Ge))
+        return out
 
     def omega_driver(self, t):
+        """The thesis driver's angular velocity (Eq. 3.29), rad/s."""
         return self.speed_law(t, self.spec.omega_final, T0, T1)
 
     def torque(self, t):
+        """The thesis drive's load torque on the driven pulley (Eq. 3.30), N m."""
         return self.torque_law(t, self.spec.Ta_max, T0, T1)
-
-    def laws(self, t) -> np.ndarray:
-        """Pulley laws (2, len(t)) of the march: driver omega (rad/s), T_a (N m)."""
-        t = np.atleast_1d(np.asarray(t, dtype=float))
-        return np.stack([self.omega_driver(t), self.torque(t)])
 
     @property
     def dofmap(self) -> np.ndarray:
@@ -151,9 +241,9 @@ class BeltDrive(PulleyDrive):
         return np.ascontiguousarray(np.asarray(q)[self.dofmap].reshape(-1, 6, 2))
 
     def pulleys_at_rest(self) -> tuple:
-        """The pulley arguments of the contact kernels, pulleys at rest: centres (2, 2) m,
-        radii (2,) m, omegas (2,) rad/s."""
-        return self.centres, self.radii, np.zeros(2)
+        """The pulley arguments of the contact kernels, pulleys at rest: centres (np, 2) m,
+        radii (np,) m, omegas (np,) rad/s."""
+        return self.centres, self.radii, np.zeros(self.radii.size)
 
     def fixed_dofs(self) -> list:
         """Node 0's coordinate along the path tangent (the larger component): the rigid
@@ -162,5 +252,7 @@ class BeltDrive(PulleyDrive):
 
     def kernel(self) -> Drive2D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""
+        r = self.rig
         return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
-                       self.centres, self.radii, self.prm, float(self.spec.inertia))
+                       r.centres, r.radii, self.prm, r.free, r.inertia, r.damping, self.weight,
+                       r.arms)

@@ -16,7 +16,8 @@ L0 / n, so a belt shorter than the path starts pre-tensioned), ``r_y`` = e_z.
 
 Coordinates: the belt's nodal coordinates in the numbering of a
 :class:`ancf.core.pattern.ReducedPattern` (band), then the driven pulley's angle.  The
-mass matrix is constant: band storage ``Mb`` for the belt, ``inertia`` for the pulley.
+mass matrix is constant: band storage ``Mb`` for the belt, ``inertia`` for the pulley;
+the pulleys are :func:`ancf.belts.drive2d.thesis_rig`'s.
 Pulley 0 is the driver (left), pulley 1 the driven one; the driver moves by u(t)
 along ``shift`` = -e_x (away from the driven pulley: it tightens the belt).
 """
@@ -27,7 +28,8 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from ancf.belts.drive2d import DriveSpec, PulleyDrive
+from ancf.belts import friction
+from ancf.belts.drive2d import DriveSpec, PulleyDrive, thesis_rig
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
 from ancf.belts.forces import Drive3D
@@ -49,8 +51,7 @@ class Belt3DSpec(DriveSpec):
     bending: bool               # Eq. 4.17 on (Model 1) or off (Model 2)
     k_p: float                  # penalty stiffness per unit area, N/m^3
     c_p: float                  # penalty damping per unit area, N s/m^3
-    mu: float                   # friction coefficient
-    nu_s: float                 # creep-rate factor, kg/(m^2 s)
+    friction: tuple             # (law, its parameters): a row of ancf.belts.friction.PARAMS
     contact_points: int         # surface rule per element (25, 49, 81)
     inertia: float              # driven pulley moment of inertia, kg m^2
     omega_final: float          # driver's final angular velocity, rad/s (Eq. 3.29)
@@ -104,12 +105,11 @@ class Belt3DDrive(PulleyDrive):
         scatter(np.zeros((n, 36)), self.element.mass(), self.vidx, self.midx,
                 np.zeros(self.pattern.n), self.Mb, True)
         self.S0, self.w = contact_points3d(self.lengths, np.full(n, s.width), s.contact_points)
-        self.centres = np.array([[*s.path.O1, 0.0], [*s.path.O2, 0.0]], dtype=float)
         self.axes = np.array([AXIS, AXIS])
-        self.radii = np.array([s.path.R1, s.path.R2])
-        self.prm = np.array([s.k_p, s.c_p, s.mu, s.nu_s])
+        self.prm = friction.contact_vector(s.k_p, s.c_p, *s.friction)
         self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
         self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
+        self.rig = thesis_rig(s, self.omega_driver, self.torque, dim=3)
 
     def omega_driver(self, t):
         return self.speed_law(t, self.spec.omega_final, self.spec.t0, self.spec.t1)
@@ -122,7 +122,7 @@ class Belt3DDrive(PulleyDrive):
         and its rate (m/s)."""
         t = np.atleast_1d(np.asarray(t, dtype=float))
         u, du = driver_shift(t, self.spec.u0, self.spec.t0)
-        return np.stack([self.omega_driver(t), self.torque(t), u, du])
+        return np.vstack([super().laws(t), u, du])
 
     def pulley_centres(self, t: float) -> np.ndarray:
         """Pulley centres (2, 3) at time t, m (the driver moved by Eq. 4.46)."""
@@ -147,6 +147,7 @@ class Belt3DDrive(PulleyDrive):
 
     def kernel(self) -> Drive3D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""
+        r = self.rig
         return Drive3D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
-                       self.centres, self.radii, self.prm, float(self.spec.inertia), self.axes,
-                       SHIFT.copy())
+                       r.centres, r.radii, self.prm, r.free, r.inertia, r.damping,
+                       np.zeros(self.n), r.arms, self.axes, SHIFT.copy())

@@ -55,16 +55,16 @@ class _March:
         self.system = self.system._replace(tabs=self.drive.laws(ts))
 
     def initial_acceleration(self, x, v):
-        s, n = self.system, self.drive.n
-        f = np.zeros(n + 1)
+        s, n, k = self.system, self.drive.n, self.drive.k
+        f = np.zeros(n + k)
         evaluate(x, v, s.tabs[:, 0].copy(), s.drive, False, 0.0, 0.0, f, np.zeros((1, 1)),
-                 np.zeros(n), np.zeros(n))
+                 np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)))
         M = s.Mb.copy()
         piv = np.zeros(n, dtype=np.int64)
         banded.lu(M, s.kl, piv, True)
         a = -f
         banded.solve(M, s.kl, piv, a[:n])
-        a[n] /= s.drive.inertia
+        a[n:] /= s.drive.inertia
         return a
 
     def run(self, st, k, k_stop, slot, out_x, out_v, limit):
@@ -94,7 +94,7 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
     ts = step_times(t_out, opt.dt)
     slot = np.full(ts.size, -1, dtype=np.int64)
     slot[np.searchsorted(ts, t_out[1:] - 1e-12)] = np.arange(1, t_out.size)
-    n1 = drive.n + 1
+    n1 = drive.n + drive.k
     x = drive.state(drive.q0) if x0 is None else np.array(x0, dtype=float)
     v = np.zeros(n1) if v0 is None else np.array(v0, dtype=float)
     m = _March(drive, opt, ts)
@@ -102,7 +102,7 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
     st = (x, v, a0, a0.copy())
     X, V = np.zeros((t_out.size, n1)), np.zeros((t_out.size, n1))
     X[0], V[0] = x, v
-    limit = opt.q_limit * (1 + np.max(np.abs(x[:-1])))
+    limit = opt.q_limit * (1 + np.max(np.abs(x[: drive.n])))
     t0, k, status, rejected = time.process_time(), 0, DONE, 0
     chunks = np.linspace(0, ts.size - 1, CHUNKS + 1).round().astype(int)[1:]
     for k_stop in chunks:

@@ -1,5 +1,5 @@
 """Compiled force evaluation of the belt drives: elastic and contact forces of the belt
-and the moment on the driven pulley, with the force part of the bordered iteration
+and the moments on the free pulleys, with the force part of the bordered iteration
 matrix of the march (:mod:`ancf.belts.system`).
 
 A drive reaches compiled code as named data, one record type per drive:
@@ -10,16 +10,22 @@ elements, :mod:`ancf.belts.contact2d`) and :class:`Drive3D` (of
 compile time by the record's type (:func:`drive_forces`).
 
 :func:`evaluate` returns the residual forces ``fz`` at the system state (x, v): belt
-``dU/dz - Q_c`` (band numbering of the drive's pattern) and ``fz[n] = -T_c + T_a``
-of the driven pulley, and, if ``want_J``, the force part of the iteration matrix:
-band ``mat`` = bp (K - dQ_c/dz) - gp dQ_c/dz' (without M), border ``col`` = -gp
-dQ_c/dtheta' and ``row`` = -bp dT_c/dz - gp dT_c/dz', and the corner's force part
--gp dT_c/dtheta' (returned with the number of element-pulley pairs the contact
-kernel evaluated).  bp, gp = 1, 0 or 0, 1 give df/dx and df/dv alone.
+``dU/dz - Q_c - F_g`` (band numbering of the drive's pattern; F_g the belt's weight)
+and, for free pulley j (pulley p with ``free[p] = j``; k of them, coordinates n + j
+their angles theta_j), ``fz[n + j] = -T_c,p + T_a,p + c_j theta_j'`` (Eq. 3.26 with
+the load torque T_a and the rotational damping c_j), and, if ``want_J``, the force
+part of the iteration matrix: band ``mat`` = bp (K - dQ_c/dz) - gp dQ_c/dz' (without
+M), border columns ``col[j]`` = -gp dQ_c/dtheta_j' and rows ``row[j]`` = -bp
+dT_c,p/dz - gp dT_c,p/dz', and the corner's force part ``corner`` (k, k), diagonal:
+gp (c_j - dT_c,p/dtheta_j').  A tensioner's arm (2D, :mod:`ancf.belts.arm2d`) is one
+more coordinate psi past the free pulleys' (:func:`_combine_arms`): its pulley's centre
+moves with psi, so the arm gets a row, a column and corner entries with its pulley's
+coordinate.  It returns the number of element-pulley pairs the contact kernel evaluated.  bp, gp = 1, 0 or 0, 1 give df/dx and df/dv alone.
 
-``laws`` are the pulley laws at the evaluation time: [omega_driver rad/s, T_a N m]
-in 2D, followed in 3D by the driver's displacement u (m) and its rate (m/s) along
-the drive's ``shift`` direction (Eq. 4.46).
+``laws`` are the pulley laws at the evaluation time, one row per pulley: a pulley
+turned by its law (``free[p] = -1``) its angular velocity (rad/s), a free one its load
+torque T_a (N m); in 3D followed by the driver's displacement u (m) and its rate (m/s)
+along the drive's ``shift`` direction (Eq. 4.46).
 """
 from __future__ import annotations
 
@@ -28,14 +34,12 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from ancf.belts.contact2d import contact_forces
+from ancf.belts.arm2d import COORD, PULLEY, PRELOAD, STIFFNESS, arm_geometry, arm_terms
+from ancf.belts.contact2d import contact_forces_moving
 from ancf.belts.contact3d import contact_forces3d
 from ancf.common.dispatch import implements
 from ancf.core.pattern import scatter
 from ancf.elements import dufva2d, plate36
-
-DRIVEN = 1  # index of the driven pulley in the pulley arrays
-
 
 class Drive2D(NamedTuple):
     """The compiled data of a 2D belt drive (SI units)."""
@@ -47,8 +51,12 @@ class Drive2D(NamedTuple):
     w: np.ndarray        # their weights (nel, ng), m
     centres: np.ndarray  # pulley centres (2, 2), m
     radii: np.ndarray    # pulley radii (2,), m
-    prm: np.ndarray      # [k_p, c_p, mu, nu_s] of the contact
-    inertia: float       # driven pulley's moment of inertia, kg m^2
+    prm: np.ndarray      # [k_p, c_p, friction law code, its parameters] (contact_vector)
+    free: np.ndarray     # (np,) int: the pulley's coordinate j past the belt's, -1: its law
+    inertia: np.ndarray  # (k,) the free pulleys' moments of inertia, kg m^2
+    damping: np.ndarray  # (k,) their rotational damping, N m s
+    weight: np.ndarray   # (n,) the belt's weight as generalised forces F_g, N
+    arms: np.ndarray     # (na, 8) tensioner arms (ancf.belts.arm2d), their psi coordinates j
 
 
 class Drive3D(NamedTuple):
@@ -62,26 +70,39 @@ class Drive3D(NamedTuple):
     centres: np.ndarray  # (2, 3), m
     radii: np.ndarray
     prm: np.ndarray
-    inertia: float
+    free: np.ndarray
+    inertia: np.ndarray
+    damping: np.ndarray
+    weight: np.ndarray   # (n,)
+    arms: np.ndarray     # (0, 8): no tensioner arms in 3D
     axes: np.ndarray     # pulley axes (2, 3)
     shift: np.ndarray    # direction the driver is moved in (3,)
 
 
-def drive_forces(drive, E, V, laws, omegas, want_J, g, K, c):
-    """Add the elastic forces (g, and K if want_J) and the contact outputs c of the
-    elements with coordinates E and velocities V; returns the pairs evaluated."""
+def drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
+    """Add the elastic forces (g, and K if want_J), the contact outputs c of the elements
+    with coordinates E and velocities V and the arm outputs ``arm`` (:func:`_arm_arrays`)
+    at the system state x, v; returns the pairs evaluated."""
     raise NotImplementedError("resolved at compile time by the type of drive")
 
 
 @implements(drive_forces, Drive2D)
-def _forces2d(drive, E, V, laws, omegas, want_J, g, K, c):
+def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
+    """The tensioners' pulleys at their arms' angles (:mod:`ancf.belts.arm2d`)."""
     dufva2d.gradient_tangent(E, drive.element, want_J, g, K)
-    return contact_forces(E, V, drive.S0, drive.w, drive.centres, drive.radii, omegas, drive.prm,
-                          want_J, *c)
+    arms, n = drive.arms, x.size - drive.inertia.size
+    o, odot, u = drive.centres.copy(), np.zeros_like(drive.centres), np.zeros((arms.shape[0], 2))
+    for a in range(arms.shape[0]):
+        j = n + int(arms[a, COORD])
+        p = arm_geometry(arms, a, x[j], v[j], o, odot, u)
+        arm_terms(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas, drive.prm, a, p, u,
+                  v[j], want_J, arm)
+    return contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas,
+                                 drive.prm, want_J, *c)
 
 
 @implements(drive_forces, Drive3D)
-def _forces3d(drive, E, V, laws, omegas, want_J, g, K, c):
+def _forces3d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
     """The driver's centre is moved by laws[2] along ``shift`` (at the rate laws[3])."""
     plate36.gradient_tangent(E, drive.element, want_J, g, K)
     o, odot = drive.centres.copy(), np.zeros_like(drive.centres)
@@ -112,33 +133,90 @@ def _arrays(nel, nd, npul, want_J):
 
 
 @njit(cache=True)
-def _combine(g, K, c, vidx, midx, bp, gp, want_J, Ta, fz, mat, col, row):
-    """Elastic gradient g, K and contact outputs c into fz, mat, col, row; the corner."""
+def _arm_arrays(nel, nd, na, want_J):
+    """Zeroed arm outputs (:func:`ancf.belts.arm2d.arm_terms`): A, dAq, dAv, dAw, dAp,
+    Qp, Tp."""
+    nj = nel if want_J else 0
+    return (np.zeros(na), np.zeros((na, nj, nd)), np.zeros((na, nj, nd)), np.zeros(na),
+            np.zeros((na, 2)), np.zeros((na, 2, nj, nd)), np.zeros((na, 2)))
+
+
+@njit(cache=True)
+def _combine_arms(drive, x, v, arm, bp, gp, want_J, fz, col, row, corner):
+    """The arms' rows and columns: arm a (coordinate ja, its pulley's j) obeys
+    I_a psi'' = A + preload - k psi - c_a psi' + c_j (theta_j' - psi'), the pulley's
+    bearing damping c_j acting on its turn relative to the arm (its row gets -c_j psi')."""
+    A, dAq, dAv, dAw, dAp, Qp, Tp = arm
+    arms, vidx = drive.arms, drive.vidx
+    n = fz.size - drive.inertia.size
+    for a in range(arms.shape[0]):
+        ja, j = int(arms[a, COORD]), drive.free[int(arms[a, PULLEY])]
+        cj, ca, k = drive.damping[j], drive.damping[ja], arms[a, STIFFNESS]
+        psi, psid, th = x[n + ja], v[n + ja], v[n + j]
+        fz[n + j] -= cj * psid
+        fz[n + ja] = -A[a] - arms[a, PRELOAD] + k * psi + ca * psid - cj * (th - psid)
+        if not want_J:
+            continue
+        for e in range(vidx.shape[0]):
+            for b in range(vidx.shape[1]):
+                i = vidx[e, b]
+                col[ja, i] -= bp * Qp[a, 0, e, b] + gp * Qp[a, 1, e, b]
+                row[ja, i] -= bp * dAq[a, e, b] + gp * dAv[a, e, b]
+        corner[j, ja] -= bp * Tp[a, 0] + gp * (Tp[a, 1] + cj)
+        corner[ja, ja] = bp * (k - dAp[a, 0]) + gp * (ca + cj - dAp[a, 1])
+        corner[ja, j] = -gp * (dAw[a] + cj)
+
+
+@njit(cache=True)
+def _combine(g, K, c, drive, bp, gp, want_J, laws, omegas, fz, mat, col, row, corner):
+    """Elastic gradient g, K and contact outputs c into fz, mat, col, row and the corner."""
     Q, Kq, Cv, Qw, T, dTq, dTv, dTw = c
+    vidx, free = drive.vidx, drive.free
     nel, nd = g.shape
-    n = fz.size - 1
+    n = fz.size - drive.inertia.size
     fz[:] = 0.0
     g -= Q
     if want_J:
         mat[:, :] = 0.0
-        col[:] = 0.0
-        row[:] = 0.0
+        col[:, :] = 0.0
+        row[:, :] = 0.0
+        corner[:, :] = 0.0
         for e in range(nel):
             for a in range(nd):
                 i = vidx[e, a]
-                col[i] -= gp * Qw[e, DRIVEN, a]
-                row[i] -= bp * dTq[DRIVEN, e, a] + gp * dTv[DRIVEN, e, a]
+                for p in range(free.size):
+                    j = free[p]
+                    if j >= 0:
+                        col[j, i] -= gp * Qw[e, p, a]
+                        row[j, i] -= bp * dTq[p, e, a] + gp * dTv[p, e, a]
                 for b in range(nd):
                     K[e, a, b] = bp * (K[e, a, b] - Kq[e, a, b]) - gp * Cv[e, a, b]
-    scatter(g, K, vidx, midx, fz, mat, want_J)
-    fz[n] = -T[DRIVEN] + Ta
-    return -gp * dTw[DRIVEN]
+    scatter(g, K, vidx, drive.midx, fz, mat, want_J)
+    for i in range(n):
+        fz[i] -= drive.weight[i]
+    for p in range(free.size):
+        j = free[p]
+        if j >= 0:
+            fz[n + j] = -T[p] + laws[p] + drive.damping[j] * omegas[p]
+            if want_J:
+                corner[j, j] = -gp * dTw[p] + gp * drive.damping[j]
 
 
 @njit(cache=True)
-def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row):
+def pulley_speeds(v, laws, free, k):
+    """Angular velocities (np,) rad/s: a free pulley's from v (its coordinate n + j), the
+    others' from their laws."""
+    n = v.size - k
+    omegas = np.empty(free.size)
+    for p in range(free.size):
+        omegas[p] = laws[p] if free[p] < 0 else v[n + free[p]]
+    return omegas
+
+
+@njit(cache=True)
+def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row, corner):
     """The residual forces and the force part of the iteration matrix (module docstring);
-    returns (corner, pairs)."""
+    returns the pairs the contact kernel evaluated."""
     nel, nd = drive.vidx.shape
     dim = drive.centres.shape[1]
     E, V = np.empty((nel, nd // dim, dim)), np.empty((nel, nd // dim, dim))
@@ -146,7 +224,9 @@ def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row):
     g = np.zeros((nel, nd))
     K = np.zeros((nel, nd, nd)) if want_J else np.zeros((0, 0, 0))
     c = _arrays(nel, nd, drive.radii.size, want_J)
-    omegas = np.array([laws[0], v[v.size - 1]])
-    pairs = drive_forces(drive, E, V, laws, omegas, want_J, g, K, c)
-    return _combine(g, K, c, drive.vidx, drive.midx, bp, gp, want_J, laws[1], fz, mat, col,
-                    row), pairs
+    arm = _arm_arrays(nel, nd, drive.arms.shape[0], want_J)
+    omegas = pulley_speeds(v, laws, drive.free, drive.inertia.size)
+    pairs = drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm)
+    _combine(g, K, c, drive, bp, gp, want_J, laws, omegas, fz, mat, col, row, corner)
+    _combine_arms(drive, x, v, arm, bp, gp, want_J, fz, col, row, corner)
+    return pairs

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ancf.belts.contact2d import contact_state
+from ancf.belts.contact2d import contact_state_moving
 from ancf.elements._generated import cubic2d_S
 
 
@@ -52,8 +52,9 @@ def sample(drive, x, v, t: float, npts: int = 8) -> BeltSample:
     dm = drive.mesh.dofmap
     E, V = q[dm].reshape(-1, 6, 2), qd[dm].reshape(-1, 6, 2)
     xi, S0 = _shapes(drive, npts)
-    omegas = np.array([float(drive.omega_driver(t)), float(v[-1])])
-    r, d, Fn, phi, vt = contact_state(E, V, S0, drive.centres, drive.radii, omegas, drive.prm)
+    omegas = drive.omegas(t, v)
+    o, odot = drive.moved(x, v)
+    r, d, Fn, phi, vt = contact_state_moving(E, V, S0, o, odot, drive.radii, omegas, drive.prm)
     s = (np.arange(drive.mesh.n_elements)[:, None] + xi[None, :]) * drive.mesh.lengths[0]
     N = drive.element.axial_force(q[dm], xi)
     flat = lambda a: np.asarray(a).reshape(s.size, *np.shape(a)[2:])  # noqa: E731
@@ -77,11 +78,22 @@ def _span_coords(points, span):
     return lam, off
 
 
+def _middle_third(smp: BeltSample, span, R: float) -> np.ndarray:
+    """The belt points in the middle third of ``span`` within R/2 of its line (bool)."""
+    lam, off = _span_coords(smp.r, span)
+    return (lam > 1 / 3) & (lam < 2 / 3) & (np.abs(off) < R / 2)
+
+
 def span_tension(smp: BeltSample, span, R: float) -> float:
     """Mean axial force (N) over the belt points in the middle third of ``span``."""
-    lam, off = _span_coords(smp.r, span)
-    sel = (lam > 1 / 3) & (lam < 2 / 3) & (np.abs(off) < R / 2)
+    sel = _middle_third(smp, span, R)
     return float(smp.N[sel].mean()) if sel.any() else float("nan")
+
+
+def span_speed(smp: BeltSample, span, R: float) -> float:
+    """Mean speed |v| (m/s) of the belt points in the middle third of ``span``."""
+    sel = _middle_third(smp, span, R)
+    return float(smp.speed[sel].mean()) if sel.any() else float("nan")
 
 
 def span_midpoint(smp: BeltSample, span, R: float) -> np.ndarray:

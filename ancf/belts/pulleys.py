@@ -1,6 +1,7 @@
 """Pulley laws of the belt drives (thesis sections 3.3 and 4.6): the driver's prescribed
 angular velocity (Eq. 3.29), the opposing torque on the driven pulley (Eq. 3.30; in 3D
-Eq. 4.47) and the driver's pre-tensioning displacement (Eq. 4.46).
+Eq. 4.47; the THREAD benchmark's cosine step) and the driver's pre-tensioning
+displacement (Eq. 4.46).
 
 Angular velocities are counter-clockwise positive (rad/s), torques in N m.  Both
 laws start at ``t0`` = 0.05 s and reach their final value at ``t1`` (0.6 s in 2D; in
@@ -42,10 +43,19 @@ def opposing_torque(t, Ta_max: float, t0: float = T0, t1: float = T1) -> np.ndar
     return np.where(t <= t0, 0.0, np.where(t <= t1, ramp, Ta_max))
 
 
+def cosine_step(t, final: float, t0: float, t1: float) -> np.ndarray:
+    """0 up to t0, ``final/2 (1 - cos(pi (t - t0) / (t1 - t0)))`` up to t1, then ``final``:
+    the load torque of the THREAD belt benchmark (Exudyn's SmoothStep; 25 N m over
+    1-1.5 s there)."""
+    t = np.asarray(t, dtype=float)
+    step = 0.5 * final * (1.0 - np.cos(np.pi * np.clip((t - t0) / (t1 - t0), 0.0, 1.0)))
+    return np.where(t <= t0, 0.0, np.where(t < t1, step, final))
+
+
 #: driver speed laws, name -> omega(t, omega_final, t0, t1), rad/s
 SPEED_LAWS = {"ramp": driver_omega}
 #: load torque laws, name -> T_a(t, Ta_max, t0, t1), N m
-TORQUE_LAWS = {"cosine-ramp": opposing_torque}
+TORQUE_LAWS = {"cosine-ramp": opposing_torque, "cosine-step": cosine_step}
 
 
 def law(table: dict, name: str, field: str):

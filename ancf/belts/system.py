@@ -1,27 +1,31 @@
 """A belt drive as a system of the compiled generalised-alpha march
 (:mod:`ancf.solvers.alpha_march`).
 
-Unknowns: the belt coordinates z (band numbering of the drive's pattern) and the driven
-pulley's angle theta:
+Unknowns: the belt coordinates z (band numbering of the drive's pattern) and the angles
+theta_j of the k free pulleys (driven pulleys, idlers and tensioners; pulley p is free
+pulley j = ``free[p]``) followed by the tensioners' arm angles (their rows and the corner
+off its diagonal: :mod:`ancf.belts.forces`):
 
-    M z'' + dU/dz - Q_c(z, z', omega_1(t), theta') = 0         (Eqs 2.27, 3.27)
-    I theta'' - T_c(z, z', theta') + T_a(t) = 0                 (Eq. 3.26)
+    M z'' + dU/dz - Q_c(z, z', omega(t), theta') - F_g = 0          (Eqs 2.27, 3.27)
+    I_j theta_j'' - T_c,p(z, z', theta_j') + T_a,p(t) + c_j theta_j' = 0     (Eq. 3.26)
 
-with the contact forces Q_c and pulley moment T_c (:mod:`ancf.belts.forces`); ``tabs``
-(nlaws, nts) holds the pulley laws at every step time (the drive's ``laws(ts)``).  The
-iteration matrix is bordered: a band block for the belt,
+with the contact forces Q_c, the pulley moments T_c,p and the belt's weight F_g
+(:mod:`ancf.belts.forces`); ``tabs`` (nlaws, nts) holds the pulley laws at every step
+time (the drive's ``laws(ts)``).  The iteration matrix is bordered: a band block for
+the belt,
 
     S_zz = M + beta' (K - dQ_c/dz) - gamma' dQ_c/dz'
 
-(non-symmetric: friction), one column ``-gamma' dQ_c/dtheta'``, one row
-``-beta' dT_c/dz - gamma' dT_c/dz'`` and the corner ``I - gamma' dT_c/dtheta'``.
-It is solved by the band LU of S_zz and the Schur complement of the corner (one
-extra band solve per factorisation).  Kept factors are unpivoted: the LU then works
-on kl instead of 2 kl columns per row, the mass matrix makes S_zz diagonally dominant
+(non-symmetric: friction), k columns ``C_j = -gamma' dQ_c/dtheta_j'``, k rows
+``R_j = -beta' dT_c,p/dz - gamma' dT_c,p/dz'`` and the corner ``diag(I_j) + gamma'
+diag(c_j - dT_c,p/dtheta_j')``.  It is solved by the band LU of S_zz and the k x k
+Schur complement ``corner - R S_zz^-1 C`` (LU with partial pivoting; k extra band
+solves per factorisation).  Kept factors are unpivoted: the LU then works on kl
+instead of 2 kl columns per row, the mass matrix makes S_zz diagonally dominant
 enough in practice, and fresh factors (the retry of a failed step) are pivoted.
 
 Newton increments are damped by backtracking; converged when beta' |d_z|_inf <= tol
-(1 + |z_n|_inf) and beta' |d_theta| <= tol (z_n: the step's start).  The blow-up
+(1 + |z_n|_inf) and beta' |d_theta_j| <= tol (z_n: the step's start).  The blow-up
 test looks at the belt coordinates only.  Counter ``count[5]``: element-pulley pairs
 evaluated by the contact kernel (after its bounding test).
 """
@@ -50,31 +54,75 @@ class BeltSystem(NamedTuple):
     tabs: np.ndarray     # pulley laws at the step times (nlaws, nts)
     S: np.ndarray        # work: S_zz, then its band LU
     piv: np.ndarray      # work: its pivots
-    u: np.ndarray        # work: S_zz^-1 col
-    row: np.ndarray      # work: the border row
-    col: np.ndarray      # work: the border column
-    corner: np.ndarray   # work: [force part of the corner, Schur complement]
+    U: np.ndarray        # work: (k, n) S_zz^-1 C_j
+    row: np.ndarray      # work: (k, n) the border rows
+    col: np.ndarray      # work: (k, n) the border columns
+    corner: np.ndarray   # work: (k, k) the corner's force part
+    schur: np.ndarray    # work: (k, k) the Schur complement, then its LU
+    spiv: np.ndarray     # work: (k,) its pivots
 
 
 def belt_system(drive, tabs) -> BeltSystem:
     """The system of a drive (:class:`~ancf.belts.drive2d.BeltDrive` or
     :class:`~ancf.belts.drive3d.Belt3DDrive`) over the step times of ``tabs``."""
-    n = drive.n
+    n, k = drive.n, drive.k
     return BeltSystem(drive.kernel(), drive.Mb, drive.pattern.kl, tabs,
-                      drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros(n),
-                      np.zeros(n), np.zeros(n), np.zeros(2))
+                      drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros((k, n)),
+                      np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)), np.zeros((k, k)),
+                      np.zeros(k, dtype=np.int64))
 
 
 @njit(cache=True)
-def bordered_solve(S, kl, piv, u, row, schur, f):
-    """Solve [[S, col], [row, corner]] d = f in place, with S factored, u = S^-1 col
-    and schur = corner - row . u."""
-    n = f.size - 1
+def small_lu(A, piv) -> bool:
+    """LU with partial pivoting of the small dense A in place; False if singular."""
+    k = A.shape[0]
+    for c in range(k):
+        p = c + np.argmax(np.abs(A[c:, c]))
+        piv[c] = p
+        if A[p, c] == 0.0:
+            return False
+        if p != c:
+            for j in range(k):
+                A[c, j], A[p, j] = A[p, j], A[c, j]
+        for i in range(c + 1, k):
+            A[i, c] /= A[c, c]
+            for j in range(c + 1, k):
+                A[i, j] -= A[i, c] * A[c, j]
+    return True
+
+
+@njit(cache=True)
+def small_solve(A, piv, b):
+    """b = A^-1 b in place with the factors of :func:`small_lu`."""
+    k = b.size
+    for c in range(k):  # the row swaps first: the factors' L holds the rows swapped later
+        p = piv[c]
+        b[c], b[p] = b[p], b[c]
+    for c in range(k):
+        for i in range(c + 1, k):
+            b[i] -= A[i, c] * b[c]
+    for c in range(k - 1, -1, -1):
+        for j in range(c + 1, k):
+            b[c] -= A[c, j] * b[j]
+        b[c] /= A[c, c]
+
+
+@njit(cache=True)
+def bordered_solve(S, kl, piv, U, row, schur, spiv, f):
+    """Solve [[S, C], [R, corner]] d = f in place, with S factored, U = S^-1 C and
+    schur = corner - R U factored."""
+    k = U.shape[0]
+    n = f.size - k
     y = f[:n].copy()
     banded.solve(S, kl, piv, y)
-    th = (f[n] - np.dot(row, y)) / schur
-    f[:n] = y - u * th
-    f[n] = th
+    th = np.empty(k)
+    for j in range(k):
+        th[j] = f[n + j] - np.dot(row[j], y)
+    small_solve(schur, spiv, th)
+    for j in range(k):
+        y -= U[j] * th[j]
+    f[:n] = y
+    f[n:] = th
 
 
 @implements(system_prepare, BeltSystem)
@@ -84,14 +132,13 @@ def _prepare(system, k):
 
 @implements(system_residual, BeltSystem)
 def _residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r):
-    n = x1.size - 1
-    corner, pairs = evaluate(x1, v1, system.tabs[:, k], system.drive, want_J, bp, gp, r,
-                             system.S, system.col, system.row)
-    count[PAIRS] += pairs
+    inertia = system.drive.inertia
+    n = x1.size - inertia.size
+    count[PAIRS] += evaluate(x1, v1, system.tabs[:, k], system.drive, want_J, bp, gp, r,
+                             system.S, system.col, system.row, system.corner)
     r[:n] += banded.matvec(system.Mb, system.kl, acc1[:n])
-    r[n] += system.drive.inertia * acc1[n]
-    if want_J:
-        system.corner[0] = corner
+    for j in range(inertia.size):
+        r[n + j] += inertia[j] * acc1[n + j]
 
 
 @implements(system_factor, BeltSystem)
@@ -100,15 +147,21 @@ def _factor(system, bp, pivoting):
     S += system.Mb
     if banded.lu(S, system.kl, system.piv, pivoting) != 0:
         return False
-    system.u[:] = system.col
-    banded.solve(S, system.kl, system.piv, system.u)
-    system.corner[1] = system.drive.inertia + system.corner[0] - np.dot(system.row, system.u)
-    return True
+    inertia, schur = system.drive.inertia, system.schur
+    for j in range(inertia.size):
+        system.U[j] = system.col[j]
+        banded.solve(S, system.kl, system.piv, system.U[j])
+    for i in range(inertia.size):
+        for j in range(inertia.size):
+            m = inertia[i] + system.corner[i, j] if i == j else system.corner[i, j]
+            schur[i, j] = m - np.dot(system.row[i], system.U[j])
+    return small_lu(schur, system.spiv)
 
 
 @implements(system_solve, BeltSystem)
 def _solve(system, d):
-    bordered_solve(system.S, system.kl, system.piv, system.u, system.row, system.corner[1], d)
+    bordered_solve(system.S, system.kl, system.piv, system.U, system.row, system.schur,
+                   system.spiv, d)
 
 
 @implements(system_tests, BeltSystem)

@@ -1,5 +1,6 @@
 """Acceptance checks computed from runs, each returning rows a report prints and a
 test pins: the belt element on its own (``belt_element``), the 2D belt drive
 (``belt2d``), the thin plate and 3D beam (``elements3d``), the 3D belt drive
-(``belt3d``).
+(``belt3d``), the 3D beam benchmarks: Princeton beam, 3D general bending, tip moments
+(``beam3d_benchmarks``).
 """

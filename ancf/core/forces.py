@@ -80,6 +80,75 @@ class EndMoment:
                              shape=(self.n_dofs, self.n_dofs)), None
 
 
+def _skew(a) -> np.ndarray:
+    """The matrix of a x (.)."""
+    return np.array([[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]])
+
+
+class SectionMoment:
+    """A moment ``M`` (3,) N m of fixed global direction on a spatial section whose
+    orientation is carried by the slopes r_y = a, r_z = b (6 global ``dofs``: a then b),
+    the section's second moments ``weights`` = (int y^2 dA, int z^2 dA) (m^4).
+
+    Derivation.  With slopes instead of rotations, the end face moves by
+    du = y dr_y + z dr_z relative to its centre.  Its virtual rotation dtheta is the rigid
+    rotation that fits du best: it minimises ``int |du - dtheta x (y r_y + z r_z)|^2 dA =
+    sum_k w_k |dr_k - dtheta x r_k|^2`` (w_y = int y^2, w_z = int z^2; the odd moments
+    vanish), i.e. ``W dtheta = sum_k w_k r_k x dr_k``, ``W = sum_k w_k (|r_k|^2 I - r_k
+    r_k^T)`` (symmetric, positive definite while the slopes are not parallel).  For a rigid
+    rotation of the slopes (orthonormal or not) this is that rotation exactly.  The virtual
+    work ``M . dtheta = sum_k w_k (m x r_k) . dr_k``, ``m = W^-1 M``, gives the generalised
+    forces
+
+        Q_a = w_y m x a,    Q_b = w_z m x b.
+
+    In the reference (a = e_y, b = e_z) these are the linear end tractions of M: the torque
+    M_x is carried by r_y and r_z in the shares w_y/I_p and w_z/I_p (I_p = w_y + w_z), the
+    bending moment about e_y by r_z alone, about e_z by r_y alone.  Planar case: with
+    b = e_z fixed and M = M e_z, ``Q_a = M e_z x a/|a|^2``, the gradient of M times the angle
+    of a in the x-y plane (:class:`EndMoment` on r_y): the load is then conservative.  In
+    general a moment about a fixed axis is not (no potential is declared).  The Jacobian,
+    from ``dm = -W^-1 (dW) m``:
+
+        dQ_i/dr_k = w_i (skew(r_i) W^-1 D_k + delta_ik skew(m)),
+        D_k = w_k (2 m r_k^T - (r_k . m) I - r_k m^T),
+
+    not symmetric in general.
+    """
+
+    def __init__(self, n_dofs: int, dofs, M, weights):
+        self.n_dofs, self.dofs = n_dofs, np.asarray(dofs, dtype=np.int64)
+        self.M, self.w = np.asarray(M, dtype=float), np.asarray(weights, dtype=float)
+        if self.dofs.shape != (6,) or self.M.shape != (3,) or self.w.shape != (2,):
+            raise ValueError("SectionMoment needs 6 dofs (r_y then r_z), a 3-vector M and "
+                             "2 weights")
+        self.dofmap = self.dofs[None, :]
+
+    def _state(self, q):
+        r = (q[self.dofs[:3]], q[self.dofs[3:]])
+        W = sum(w * ((rk @ rk) * np.eye(3) - np.outer(rk, rk)) for w, rk in zip(self.w, r))
+        Winv = np.linalg.inv(W)
+        return r, Winv, Winv @ self.M
+
+    def value(self, q, v, t) -> np.ndarray:
+        r, _, m = self._state(q)
+        out = np.zeros(self.n_dofs)
+        out[self.dofs] = np.concatenate([w * np.cross(m, rk) for w, rk in zip(self.w, r)])
+        return out
+
+    def jacobians(self, q, v, t):
+        r, Winv, m = self._state(q)
+        J = np.zeros((6, 6))
+        for k, (wk, rk) in enumerate(zip(self.w, r)):
+            dm = -Winv @ (wk * (2.0 * np.outer(m, rk) - (rk @ m) * np.eye(3) - np.outer(rk, m)))
+            for i, (wi, ri) in enumerate(zip(self.w, r)):
+                J[3 * i:3 * i + 3, 3 * k:3 * k + 3] = -wi * _skew(ri) @ dm
+            J[3 * k:3 * k + 3, 3 * k:3 * k + 3] += wk * _skew(m)
+        rows, cols = np.meshgrid(self.dofs, self.dofs, indexing="ij")
+        return sp.csr_matrix((J.ravel(), (rows.ravel(), cols.ravel())),
+                             shape=(self.n_dofs, self.n_dofs)), None
+
+
 class Forces:
     """Sum of force terms; an empty sum is a zero force."""
 

@@ -153,7 +153,7 @@ class ReducedPattern:
         """Largest absolute row sum of the stored matrix."""
         if self.band:
             return float(np.abs(data).sum(axis=1).max(initial=0.0))
-        return float(abs(self.as_csr(data)).sum(axis=1).max(initial=0.0))
+        return float(np.asarray(abs(self.as_csr(data)).sum(axis=1)).max(initial=0.0))
 
     # --- vectors -----------------------------------------------------------------------
     def expand(self, z, g) -> np.ndarray:

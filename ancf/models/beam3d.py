@@ -12,6 +12,7 @@ import numpy as np
 
 from ancf.core.assembly import Assembly, ElementGroup
 from ancf.core.constraints import Elimination
+from ancf.core.forces import Forces, SectionMoment
 from ancf.elements.belt3d import DufvaBelt3D
 from ancf.elements.linear3d import LinearBeam3D
 from ancf.core.mesh import BeamMesh
@@ -73,21 +74,37 @@ def elimination(m: BeamMesh, q0: np.ndarray, supports) -> Elimination:
     return elim
 
 
-def solve(p: dict, supports, loads: dict):
-    """(static result, mesh, q0) with ``supports`` (mesh -> [(node, slot, component)])
-    and ``loads``; Newton options from p (load_steps, rtol, max_iterations)."""
+def solve(p: dict, supports, loads: dict, moments=None):
+    """(static result, mesh, q0, assembly) with ``supports`` (mesh -> [(node, slot,
+    component)]), ``loads`` and the moment terms ``moments`` (mesh -> Forces or None, as
+    :func:`tip_moment`); Newton options from p (load_steps, rtol, max_iterations)."""
     m, q0, asm = model(p)
     res = solve_static(asm, elimination(m, q0, supports(m)), load_vector(m, loads), q0,
                        NewtonOptions(n_steps=p["load_steps"], rtol=p["rtol"],
-                                     max_iter=p["max_iterations"]))
+                                     max_iter=p["max_iterations"]),
+                       forces=moments(m) if moments else None)
     return res, m, q0, asm
 
 
-def torsion_constant_square(a: float, terms: int = 50) -> float:
-    """St-Venant's J of a square of side a, m^4, from the series (Timoshenko and
-    Goodier): J = a^4/3 (1 - 192/pi^5 sum_{n odd} tanh(n pi/2)/n^5) (0.1406 a^4)."""
+def torsion_constant_rectangle(h: float, b: float, terms: int = 50) -> float:
+    """St-Venant's J of an h x b rectangle, m^4, from the series (Timoshenko and Goodier),
+    with c >= d its long and short sides:
+    J = c d^3/3 (1 - 192/pi^5 (d/c) sum_{n odd} tanh(n pi c/(2 d))/n^5)."""
+    c, d = max(h, b), min(h, b)
     n = np.arange(1, 2 * terms, 2)
-    return a**4 / 3.0 * (1.0 - 192.0 / np.pi**5 * np.sum(np.tanh(n * np.pi / 2.0) / n**5))
+    return c * d**3 / 3.0 * (1.0 - 192.0 / np.pi**5 * d / c
+                             * np.sum(np.tanh(n * np.pi * c / (2.0 * d)) / n**5))
+
+
+def torsion_constant_square(a: float, terms: int = 50) -> float:
+    """St-Venant's J of a square of side a, m^4 (0.1406 a^4)."""
+    return torsion_constant_rectangle(a, a, terms)
+
+
+def torsion_factor(h: float, b: float) -> float:
+    """k_s = J/(I_y + I_z) (-): the shear correction that gives the 3D beams, whose
+    torsional stiffness is k_s G (I_y + I_z) (no warping), St-Venant's G J."""
+    return float(torsion_constant_rectangle(h, b) / (b * h * (h * h + b * b) / 12.0))
 
 
 def tip_load(p: dict) -> dict:
@@ -96,3 +113,18 @@ def tip_load(p: dict) -> dict:
     a = np.radians(p["load_angle_deg"])
     n = p["n_elements"]
     return {(n, "r", 1): p["F"] * float(np.cos(a)), (n, "r", 2): p["F"] * float(np.sin(a))}
+
+
+def tip_moment(m: BeamMesh, p: dict):
+    """The tip moment (``Mx``, ``My``, ``Mz`` of p, N m, fixed global axes) on the section
+    slopes r_y, r_z of the last node, weighted by the section's int y^2 dA, int z^2 dA
+    (:class:`~ancf.core.forces.SectionMoment`), as a :class:`~ancf.core.forces.Forces`;
+    None when all three are zero."""
+    M = [float(p.get(k, 0.0)) for k in ("Mx", "My", "Mz")]
+    if not any(M):
+        return None
+    n = m.n_nodes - 1
+    dofs = [m.dof(n, s, k) for s in ("r_y", "r_z") for k in range(3)]
+    moments = RectangularSection(p["b"], p["h"]).moments_yz()
+    return Forces(m.n_dofs, [SectionMoment(m.n_dofs, dofs, M, (moments["Q2_0"],
+                                                                moments["Q0_2"]))])

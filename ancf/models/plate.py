@@ -9,6 +9,10 @@ shared by the scenes ``plate-square`` and ``plate-strip``, the tests and the rep
 * :func:`edge_load`: consistent forces of an end load spread uniformly over the edge x = a.
 * :func:`strip_linear_tip` / :func:`strip_model`: the strip clamped at x = 0 (``r``,
   ``r_x`` and ``r_y`` of every root node, all three components).
+* :func:`simply_supported_model`: the simply supported rectangle for a nonlinear solve
+  or its modes; :func:`grid_points`: the mid surface's nodes of a coordinate vector.
+
+A density ``rho`` (kg/m^3) gives the elements their mass (default 0: statics).
 """
 from __future__ import annotations
 
@@ -23,10 +27,11 @@ from ancf.models.plate_mesh import SLOTS, PlateMesh
 from ancf.core.quadrature import gauss01
 
 
-def assembly(m: PlateMesh, h: float, E: float, nu: float, ng: int = 4) -> Assembly:
+def assembly(m: PlateMesh, h: float, E: float, nu: float, ng: int = 4,
+             rho: float = 0.0) -> Assembly:
     """One group of bending plate elements over the mesh."""
-    return Assembly(m.n_dofs, [ElementGroup(Plate36(m.lengths, m.widths, h=h, E=E, nu=nu, ng=ng),
-                                            m.dofmap)])
+    return Assembly(m.n_dofs, [ElementGroup(Plate36(m.lengths, m.widths, h=h, E=E, nu=nu,
+                                                    rho=rho, ng=ng), m.dofmap)])
 
 
 def _linear_solve(m: PlateMesh, asm: Assembly, fixed: set, f: np.ndarray) -> np.ndarray:
@@ -56,13 +61,30 @@ def simply_supported(n: int, a: float, b: float, h: float, E: float, nu: float,
     """(mesh, displacements u (n_dofs,) from the flat reference) of an n x n mesh of the
     simply supported a x b plate under the pressure p (Pa, along +z)."""
     m = PlateMesh(a, b, n, n)
+    return m, _linear_solve(m, assembly(m, h, E, nu, ng), _supports(m), m.pressure_load(p))
+
+
+def _supports(m: PlateMesh) -> set:
+    """The simply supported plate's fixed coordinates: in-plane ones, w and the slope
+    along the edge on the boundary."""
     fixed = in_plane(m)
     for k in range(m.n_nodes):
-        on_x, on_y = m.X[k] in (0.0, a), m.Y[k] in (0.0, b)
+        on_x, on_y = m.X[k] in (0.0, m.a), m.Y[k] in (0.0, m.b)
         fixed |= {m.dof(k, "r", 2)} if on_x or on_y else set()
         fixed |= {m.dof(k, "r_y", 2)} if on_x else set()
         fixed |= {m.dof(k, "r_x", 2)} if on_y else set()
-    return m, _linear_solve(m, assembly(m, h, E, nu, ng), fixed, m.pressure_load(p))
+    return fixed
+
+
+def simply_supported_model(n: int, a: float, b: float, h: float, E: float, nu: float,
+                           p: float, ng: int = 4, rho: float = 0.0):
+    """(mesh, q0, assembly, elimination, load vector) of the n x n simply supported plate
+    under the pressure p (Pa, along +z) for a nonlinear solve or its modes."""
+    m = PlateMesh(a, b, n, n)
+    q0 = m.reference()
+    fixed = sorted(_supports(m))
+    return (m, q0, assembly(m, h, E, nu, ng, rho), Elimination(m.n_dofs).fix(fixed, q0[fixed]),
+            m.pressure_load(p))
 
 
 def edge_load(m: PlateMesh, P: float) -> np.ndarray:
@@ -97,12 +119,12 @@ def strip_linear_tip(nx: int, ny: int, L: float, b: float, h: float, E: float, n
 
 
 def strip_model(nx: int, ny: int, L: float, b: float, h: float, E: float, nu: float,
-                ng: int = 4):
+                ng: int = 4, rho: float = 0.0):
     """(mesh, q0, assembly, elimination) of the clamped strip for a nonlinear solve."""
     m = PlateMesh(L, b, nx, ny)
     q0 = m.reference()
     fixed = root(m)
-    return m, q0, assembly(m, h, E, nu, ng), Elimination(m.n_dofs).fix(fixed, q0[fixed])
+    return m, q0, assembly(m, h, E, nu, ng, rho), Elimination(m.n_dofs).fix(fixed, q0[fixed])
 
 
 def tip_mean(m: PlateMesh, q: np.ndarray) -> dict:
@@ -110,3 +132,9 @@ def tip_mean(m: PlateMesh, q: np.ndarray) -> dict:
     tips = tip_nodes(m)
     return {f"tip_{c}": float(np.mean([q[m.dof(k, "r", i)] for k in tips]))
             for i, c in enumerate("xyz")}
+
+
+def grid_points(m: PlateMesh):
+    """Global coordinates -> positions r (n_nodes, 3) of the mesh's nodes, m."""
+    idx = np.array([[m.dof(k, "r", c) for c in range(3)] for k in range(m.n_nodes)])
+    return lambda q: np.asarray(q, float)[idx]

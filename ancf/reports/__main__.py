@@ -1,6 +1,7 @@
 """Regenerate ``reports/`` (the main job): ``python -m ancf.reports [--out DIR] [--quick]``."""
 from __future__ import annotations
 
+import re
 import sys
 import time
 from pathlib import Path
@@ -15,7 +16,9 @@ from analytic import timoshenko
 from ancf.reports.belt2d import belt2d_chapter
 from ancf.reports.bechtel import bechtel_chapter
 from ancf.reports.belt3d import belt3d_chapter
+from ancf.reports.beam3d_benchmarks import beam3d_benchmarks_chapter
 from ancf.reports.extremes import extremes_chapter
+from ancf.reports.frequencies import frequencies_chapter
 from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
 from ancf.reports.elements3d import elements3d_chapter
@@ -190,7 +193,7 @@ def static_chapter() -> tuple[str, dict]:
 
 
 CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md", "belt2d.md",
-            "bechtel.md", "elements3d.md", "belt3d.md")
+            "bechtel.md", "elements3d.md", "belt3d.md", "beam3d_benchmarks.md", "frequencies.md")
 
 _INDEX = [
     "| report | contents |", "|---|---|",
@@ -216,6 +219,16 @@ _INDEX = [
     "(full and capstan), torque balance per strain measure, tension / det F / speed / contact "
     "forces along the belt (Figs 4.11-4.18), pulley speeds of Models 1 and 2 (Figs 4.10, "
     "4.16), contact points and element count; acceptance checks |",
+    "| [beam3d_benchmarks.md](beam3d_benchmarks.md) | The 3D beam benchmarks: a tip moment on "
+    "slope coordinates, the Princeton beam (F2, F3, every angle) against ANSYS beam and solid "
+    "elements per element and scheme (locking, torsion), mesh convergence; Nachbagauer et "
+    "al.'s 3D general bending against Table 4, the continuum's second-order terms; "
+    "acceptance checks |",
+    "| [frequencies.md](frequencies.md) | Natural frequencies: beams per element and "
+    "integration scheme vs Timoshenko (convergence orders, locking from slender to thick), "
+    "the simply supported plate vs Navier, the free-free plate's ratios vs Exudyn and the "
+    "Ritz series, the axial bar's first frequency falling to zero at Euler's load, the "
+    "running belt's span spectra vs the axially moving string; acceptance checks |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
@@ -226,22 +239,36 @@ _INDEX = [
     "`--json` output |"]
 
 
-def write_chapters(root: Path) -> dict:
-    """Write every chapter into ``root``; returns the acceptance statuses."""
-    text, status = static_chapter()
-    (root / "static_beams.md").write_text(text)
-    for name, chapter in (("dynamics.md", dynamics_chapter),
-                          ("speed_accuracy.md", speed_accuracy_chapter),
-                          ("extremes.md", extremes_chapter),
-                          ("belt2d.md", belt2d_chapter),
-                          ("bechtel.md", bechtel_chapter),
-                          ("elements3d.md", elements3d_chapter),
-                          ("belt3d.md", belt3d_chapter)):
-        text, st = chapter()
-        (root / name).write_text(text)
-        status.update(st)
-    (root / "schemas.md").write_text(schemas_markdown())
+def _chapters() -> dict:
+    """Chapter file -> its generator (``() -> (markdown, statuses)``), in CHAPTERS order."""
+    return dict(zip(CHAPTERS, (static_chapter, dynamics_chapter, speed_accuracy_chapter,
+                               extremes_chapter, belt2d_chapter, bechtel_chapter,
+                               elements3d_chapter, belt3d_chapter, beam3d_benchmarks_chapter,
+                               frequencies_chapter)))
+
+
+def write_chapters(root: Path, only: str | None = None) -> dict:
+    """Write every chapter (or the chapter ``only``) into ``root``; returns the acceptance
+    statuses of the chapters written."""
+    status = {}
+    for name, chapter in _chapters().items():
+        if only in (None, name):
+            text, st = chapter()
+            (root / name).write_text(text)
+            status.update(st)
+    if only is None:
+        (root / "schemas.md").write_text(schemas_markdown())
     return status
+
+
+def _previous_statuses(root: Path) -> dict:
+    """The acceptance rows of an existing README.md in root (none if there is none)."""
+    path = root / "README.md"
+    if not path.exists():
+        return {}
+    text = path.read_text().split("## Acceptance summary", 1)[-1]
+    rows = re.findall(r"^\| (.+?) \| (.+?) \|$", text, flags=re.M)
+    return {k: v for k, v in rows if k != "check"}
 
 
 def main(argv=None) -> int:
@@ -251,11 +278,16 @@ def main(argv=None) -> int:
     ap.add_argument("--quick", action="store_true",
                     help="reduced configuration (smaller grids and element counts, shorter "
                          "simulated times): a smoke run of every chapter, not the published data")
+    ap.add_argument("--chapter", choices=CHAPTERS,
+                    help="write this chapter only; README.md keeps the acceptance rows it "
+                         "has and takes this chapter's")
     args = ap.parse_args(argv)
     t0 = time.time()
     root = configure(args.out, args.quick).root
     root.mkdir(parents=True, exist_ok=True)
-    status = write_chapters(root)
+    status = write_chapters(root, args.chapter)
+    if args.chapter:
+        status = {**_previous_statuses(root), **status}
     note = (" Reduced configuration (`--quick`): not the published data." if args.quick else "")
     idx = ["# ancf-bench reports\n", "Generated by `make reports` (`python -m ancf.reports`); do "
            "not edit by hand." + note + "\n", *_INDEX,

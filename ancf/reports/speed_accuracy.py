@@ -227,7 +227,7 @@ def scene_section(name: str, s, df: pd.DataFrame) -> tuple[list, bool]:
         parts += ["Against the converged self-reference (`--reference self`: discretisation "
                   "error only):\n",
                   markdown_table(cheapest_table(df, s.dynamic, "error_self", defaults), 3), ""]
-        extra = _self_note(df)
+        extra = _self_note(df, s.reference().kind)
     parts += [f"Pareto front: {len(front)} of {len(df)} runs. " + _front_text(front, s.dynamic)
               + extra + "\n", f"Data: `data/speed_accuracy_{slug}.csv`.\n"]
     return parts, bool(len(front)) and len(table) == len(TOLERANCES)
@@ -292,16 +292,17 @@ def _front_text(front: pd.DataFrame, dynamic: bool) -> str:
     return "Models on the front: " + ", ".join(f"{m} ({c})" for m, c in models.items()) + "."
 
 
-def _self_note(df: pd.DataFrame) -> str:
+def _self_note(df: pd.DataFrame, kind: str) -> str:
+    """``kind``: of the default reference (analytic, or published: another code's values)."""
     ok = df[df["status"] == "ok"]
     if not len(ok) or "error_self" not in ok:
         return ""
     best = ok["error"].min()
     best_self = ok["error_self"].min()
     if best_self < best / 10:
-        return (f" The error against the analytic reference levels off at {best:.1e} while the "
+        return (f" The error against the {kind} reference levels off at {best:.1e} while the "
                 f"self-reference error keeps falling (to {best_self:.1e}): that floor is the "
-                "difference between the ANCF continuum and the analytic model, not "
+                f"difference between the ANCF continuum and the {kind} model, not "
                 "discretisation.")
     return (f" Both references give the same picture (best errors {best:.1e} and "
             f"{best_self:.1e}).")

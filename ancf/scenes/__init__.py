@@ -2,8 +2,10 @@
 (``base``: ``Scene``, ``SceneResult``); ``analytic`` exposes the references of
 ``analytic/`` the same way (``ancf analytic NAME``); ``accuracy`` the per-scene
 accuracy warnings; ``beam_static``, ``beam_dynamic`` and ``belt_common`` the builders
-the scenes share; ``frames`` the deformed geometry of a finished run per output step and
-``vtk`` its ParaView output (``--vtk``).
+the scenes share; ``beam3d_published`` the published data of the 3D beam benchmarks
+(``princeton-beam``, ``beam3d-bending``); ``frames`` the deformed geometry of a finished
+run per output step and ``vtk`` its ParaView output (``--vtk``); ``modes`` the natural
+frequencies and mode shapes of the static scenes (``ancf modes NAME``).
 
 ``SCENES`` is built on first use, so that importing ``ancf.scenes.base`` loads no
 scene, solver or element; :func:`scene` loads one scene's module only (``ancf run
@@ -23,7 +25,9 @@ MODULES = {"simply-supported": "simply_supported", "cantilever": "cantilever",
            "axial-bar": "axial_bar", "pendulum": "pendulum", "spinning-beam": "spinning_beam",
            "belt-free-static": "belt_free_static", "belt2d": "belt2d",
            "plate-square": "plate_square", "plate-strip": "plate_strip",
-           "beam3d-cantilever": "beam3d_cantilever", "belt3d": "belt3d"}
+           "beam3d-cantilever": "beam3d_cantilever", "belt3d": "belt3d",
+           "princeton-beam": "princeton_beam", "beam3d-bending": "beam3d_bending",
+           "belt-drive": "belt_drive"}
 
 
 def scene(name: str):

@@ -11,20 +11,26 @@ from ancf.scenes import accuracy
 from ancf.core.constraints import Elimination
 from ancf.scenes import beam_static as bs
 from ancf.common.params import Param
-from ancf.scenes.base import Scene
+from ancf.scenes.base import STEEL_DENSITY, Scene
 from ancf.core.validity import check_static
 
 
-def run(p):
+def setup(p):
+    """(mesh, q0, assembly, elimination, load vector) of the bar (density ``p["rho"]`` if
+    given)."""
     mesh, q0, asm = bs.build(p)
     n = p["n_elements"]
     elim = Elimination(mesh.n_dofs)
-    iy_tip = mesh.dof(n, "r", 1)
-    for d in (mesh.dof(0, "r", 0), mesh.dof(0, "r", 1), iy_tip):
+    for d in (mesh.dof(0, "r", 0), mesh.dof(0, "r", 1), mesh.dof(n, "r", 1)):
         elim.fix(d, q0[d])
     Qk = np.zeros(mesh.n_dofs)
-    ix = mesh.dof(n, "r", 0)
-    Qk[ix] = p["F"]
+    Qk[mesh.dof(n, "r", 0)] = p["F"]
+    return mesh, q0, asm, elim, Qk
+
+
+def run(p):
+    mesh, q0, asm, elim, Qk = setup(p)
+    ix, iy_tip = mesh.dof(p["n_elements"], "r", 0), mesh.dof(p["n_elements"], "r", 1)
 
     def results(q):
         return {"elongation_m": float(q[ix] - q0[ix]),
@@ -32,8 +38,13 @@ def run(p):
     return check_static(bs.solve(p, mesh, q0, asm, elim, Qk, results), asm, q0)
 
 
+def modal(p):
+    return bs.modal(p, *setup(p))
+
+
 SCENE = Scene(
     "axial-bar",
     "Pinned bar pulled by an axial tip force (linear axial deformation test).",
     bs.element_params(n_elements=4) + (Param("F", 5.0e4, float, "N", "axial tip force"),),
-    run, bs.check_integration, warn=accuracy.static)
+    run, bs.check_integration, warn=accuracy.static, modal=modal,
+    modal_params=(STEEL_DENSITY,))

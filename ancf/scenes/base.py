@@ -9,16 +9,27 @@ and turns the outcome into the public JSON shape
 kernels or their loading from numba's on-disk cache (a first call in a process), which
 is ``compile_cpu_s`` (:mod:`ancf.common.compile_time`): the same solve reports about the
 same ``cpu_time_s`` with an empty cache, a warm cache or in a warm process.
+
+A static scene that ``ancf modes`` serves (:mod:`ancf.scenes.modes`) also declares
+``modal``: ``params -> ModalModel``, its model with a density, and ``modal_params``, the
+parameters ``ancf modes`` adds to the scene's own (the density, where the static run
+needs none: :data:`STEEL_DENSITY`).
 """
 from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, NamedTuple
 
 from ancf.common.compile_time import compile_cpu
 from ancf.common.diagnostics import nonfinite, numerical_warnings
-from ancf.common.params import InputError
+from ancf.common.params import InputError, Param
+
+#: the density ``ancf modes`` adds to the scenes of steel beams and plates, whose static
+#: runs need no mass: steel, the material of their E = 2.07e11 (2.1e11) Pa
+STEEL_DENSITY = Param("rho", 7850.0, float, "kg/m^3",
+                      "density (ancf modes only: the static run needs no mass; default steel)",
+                      lo=0, lo_open=True)
 
 
 @dataclass
@@ -28,6 +39,33 @@ class SceneResult:
     results: dict
     extra: dict = field(default_factory=dict)  # arrays etc. for reports, not in the JSON
     warnings: list = field(default_factory=list)  # accuracy diagnoses, one line each
+
+
+class Equilibrium(NamedTuple):
+    """A static solve's outcome as ``ancf modes --about equilibrium`` needs it."""
+
+    q: object                # global coordinates reached
+    converged: bool
+    message: str
+    newton_iterations: int
+
+
+@dataclass(frozen=True)
+class ModalModel:
+    """A static scene's model for ``ancf modes``: the element groups with their density
+    (``assembly``: tangent stiffness and consistent mass), the reduced numbering of the
+    scene's constraints (``pattern``, as its static solve eliminates them), the reference
+    state ``q0``, a function solving for the static equilibrium, and ``points``: global
+    coordinates -> positions (m, dim) of the sample points of the mode shapes (linear in
+    the coordinates), ``sampling`` naming them; ``mesh`` for the result's arrays."""
+
+    assembly: object
+    pattern: object
+    q0: object
+    equilibrium: Callable[[], Equilibrium]
+    points: Callable
+    sampling: str
+    mesh: object
 
 
 @dataclass(frozen=True)
@@ -46,6 +84,13 @@ class Scene:
     reference: str | None = None
     # accuracy checks of a finished run: (params, result) -> list of one-line warnings
     warn: Callable[[dict, SceneResult], list] | None = None
+    # ancf modes: params -> ModalModel (None: the scene has no modes), and the parameters
+    # it adds to the scene's own
+    modal: Callable[[dict], ModalModel] | None = None
+    modal_params: tuple = ()
+    # in the reports' speed-accuracy sweeps (False: a drive-file scene, whose model
+    # choices live in its file)
+    swept: bool = True
 
     def resolve(self, overrides: dict | None = None) -> dict:
         """All parameter values: defaults, then ``overrides`` (strings or values)."""

@@ -5,11 +5,15 @@ The 2D cantilever's parameters (``L``, ``h`` along y, ``b`` along z, ``E``, ``nu
 the cross-section plane, from -y towards -z for a negative ``F`` (force F (0, cos a,
 sin a) on the tip position).  0 is the 2D case: the beam stays in the x-y plane and
 reproduces the 2D scene (element ``linear``) to round-off; 90 bends it about y.
+``Mx``, ``My``, ``Mz``: tip moments about the fixed global axes, on the section slopes
+(:class:`ancf.core.forces.SectionMoment`).
 Clamp: every slot of the first node but r_x (position and section orientation), all
 three components.  ``element``: the 3D elements of :data:`ancf.models.beam3d.BUILDERS`.
 Results ``tip_x``, ``tip_y``, ``tip_z``: the tip node's position.
 """
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 
@@ -17,11 +21,13 @@ from ancf.scenes import accuracy
 from ancf.models import beam3d
 from ancf.scenes import beam_static as bs
 from ancf.common.params import InputError, Param
-from ancf.scenes.base import Scene
+from ancf.scenes.base import STEEL_DENSITY, Scene
 from ancf.scenes.cantilever import cantilever_params
 
 
-def params() -> tuple:
+def params(presets: dict | None = None) -> tuple:
+    """The scene's parameters; ``presets`` {name: (default, doc)} replaces the default and
+    the description of some (the benchmark scenes built on this one)."""
     out = []
     for q in cantilever_params():
         if q.name == "element":
@@ -36,7 +42,7 @@ def params() -> tuple:
         elif q.name == "clamp_x_slope":
             continue
         out.append(q)
-    return tuple(out) + (
+    out += [
         Param("load_angle_deg", 0.0, float, "deg",
               "angle of the tip force in the section plane, from -y towards -z "
               "(0 = the 2D cantilever)", lo=-360, hi=360),
@@ -44,7 +50,13 @@ def params() -> tuple:
               lo_open=True, hi=10),
         Param("alpha2", 1.0, float, "-", "belt3d: bending and shear stiffness parameter "
               "(Eqs 4.40-4.42)", lo=0, lo_open=True, hi=10),
-        Param("elastic_points", 5, int, doc="belt3d: Gauss points along the axis", lo=1, hi=12),)
+        Param("elastic_points", 5, int, doc="belt3d: Gauss points along the axis", lo=1, hi=12)]
+    out += [Param(f"M{c}", 0.0, float, "N m", f"tip moment about the global {c} axis (fixed "
+                  f"direction{', torsion' if c == 'x' else ''}; acts on the section slopes "
+                  "r_y, r_z)") for c in "xyz"]
+    presets = presets or {}
+    return tuple(replace(q, default=presets[q.name][0], doc=presets[q.name][1])
+                 if q.name in presets else q for q in out)
 
 
 def check(p: dict) -> None:
@@ -59,16 +71,27 @@ def check(p: dict) -> None:
                          "or a spec 'normal=NXxNY,shear=NXxNY'") from None
 
 
-def run(p):
+def setup(p):
+    """(mesh, q0, assembly, elimination, load vector) of the 3D cantilever (density
+    ``p["rho"]`` if given)."""
     m, q0, asm = beam3d.model(p)
     elim = beam3d.elimination(m, q0, beam3d.clamp(m))
-    n = p["n_elements"]
-    dofs = [m.dof(n, "r", c) for c in range(3)]
-    return bs.solve(p, m, q0, asm, elim, beam3d.load_vector(m, beam3d.tip_load(p)),
-                    lambda q: {f"tip_{c}": float(q[d]) for c, d in zip("xyz", dofs)})
+    return m, q0, asm, elim, beam3d.load_vector(m, beam3d.tip_load(p))
+
+
+def run(p):
+    m, q0, asm, elim, Qk = setup(p)
+    dofs = [m.dof(p["n_elements"], "r", c) for c in range(3)]
+    return bs.solve(p, m, q0, asm, elim, Qk,
+                    lambda q: {f"tip_{c}": float(q[d]) for c, d in zip("xyz", dofs)},
+                    forces=beam3d.tip_moment(m, p))
+
+
+def modal(p):
+    return bs.modal(p, *setup(p))
 
 
 SCENE = Scene(
     "beam3d-cantilever",
     "The cantilever with a 3D beam element, tip force at an angle in the section plane.",
-    params(), run, check, warn=accuracy.static)
+    params(), run, check, warn=accuracy.static, modal=modal, modal_params=(STEEL_DENSITY,))

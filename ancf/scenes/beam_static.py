@@ -4,8 +4,12 @@ Element parameters common to the scenes, the model builder, and a static solve
 that also checks that the equilibrium found is stable (a converged Newton point
 with negative tangent eigenvalues is reported as non-convergence: it is how the
 spurious zero-energy modes of the report's 1-point shear scheme show up).
+:func:`modal` gives a scene's model to ``ancf modes`` (``ancf.scenes.modes``), with
+:func:`centreline` the sample points of its mode shapes.
 """
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -13,12 +17,16 @@ from ancf.core.assembly import Assembly, ElementGroup
 from ancf.core.constraints import Elimination
 from ancf.elements.catalogue import ELEMENTS, element_kwargs
 from ancf.core.mesh import BeamMesh
+from ancf.core.pattern import ReducedPattern
 from ancf.core.quadrature import RectangularSection
 from ancf.common.params import InputError, Param
-from ancf.scenes.base import SceneResult
+from ancf.scenes.base import Equilibrium, ModalModel, SceneResult
 from ancf.solvers.linear import ZERO_EIGENVALUE_REL
 from ancf.solvers.static import NewtonOptions, solve_static, stability_at
 
+#: a beam's mode shapes are sampled at this many points along it at least (each element
+#: at the same number of points, its nodes among them)
+CENTRELINE_POINTS = 32
 
 
 def element_params(E=2.07e11, nu=0.0, h=0.1, n_elements=8) -> tuple:
@@ -69,10 +77,18 @@ def build(p: dict):
     return mesh, q0, Assembly(mesh.n_dofs, [ElementGroup(el, mesh.dofmap)])
 
 
-def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> SceneResult:
-    """Static solve + stability check, packaged as a scene result."""
-    res = solve_static(assembly, elim, Qk, q0, NewtonOptions(n_steps=p["load_steps"], rtol=p["rtol"],
-                                                             max_iter=p["max_iterations"]))
+def newton_options(p: dict) -> NewtonOptions:
+    """The Newton options of the parameters ``load_steps``, ``rtol``, ``max_iterations``
+    (the defaults of :class:`NewtonOptions` for those a scene does not have)."""
+    names = {"load_steps": "n_steps", "rtol": "rtol", "max_iterations": "max_iter"}
+    return NewtonOptions(**{opt: p[name] for name, opt in names.items() if name in p})
+
+
+def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn,
+          forces=None) -> SceneResult:
+    """Static solve + stability check, packaged as a scene result; ``forces``: the
+    configuration-dependent force terms (an ``ancf.core.forces.Forces``) or None."""
+    res = solve_static(assembly, elim, Qk, q0, newton_options(p), forces=forces)
     results = {"newton_iterations": res.iterations, "load_steps_taken": res.load_steps,
                "load_factor": res.load_factor, "tangent_evaluations": res.tangent_evaluations,
                "factorizations": res.factorizations}
@@ -80,7 +96,7 @@ def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> Sce
     results.update(results_fn(res.q) if converged else dict.fromkeys(results_fn(q0)))
     if converged:
         neg, zero, lowest = ((None, None, None) if p["stability_check"] == "off"
-                             else stability_at(assembly, res.pattern, res.q))
+                             else stability_at(assembly, res.pattern, res.q, forces))
         results["negative_tangent_eigenvalues"] = neg
         results["zero_tangent_eigenvalues"] = zero
         results["lowest_tangent_eigenvalue_rel"] = lowest
@@ -96,3 +112,26 @@ def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn) -> Sce
     return SceneResult(converged, message, results,
                        extra={"q": res.q, "q0": q0, "mesh": mesh, "residuals": res.residual_history,
                               "assembly": assembly, "pattern": res.pattern})
+
+
+def centreline(mesh):
+    """Global coordinates -> points (m, dim) along a beam mesh's centreline, at least
+    :data:`CENTRELINE_POINTS` of them, each element sampled alike from its first node."""
+    from ancf.scenes.frames import beam_sampler  # not needed by ancf run
+    return beam_sampler(mesh, max(1, math.ceil(CENTRELINE_POINTS / mesh.n_elements)))[0]
+
+
+def modal(p: dict, mesh, q0, assembly, elim: Elimination, Qk, points=None,
+          sampling: str = "centreline") -> ModalModel:
+    """The model of a scene solved by :func:`solve` for ``ancf modes``: its constraints'
+    reduced numbering, its static equilibrium under ``Qk`` (Newton options from ``p``) and
+    the sample points (default: the beam's :func:`centreline`)."""
+    T, _, _ = elim.build()
+    pattern = ReducedPattern(assembly.n_dofs, [grp.dofmap for grp in assembly.groups], T)
+
+    def equilibrium() -> Equilibrium:
+        res = solve_static(assembly, elim, Qk, q0, newton_options(p))
+        return Equilibrium(res.q, res.converged, res.message, res.iterations)
+
+    return ModalModel(assembly, pattern, q0, equilibrium,
+                      points or centreline(mesh), sampling, mesh)

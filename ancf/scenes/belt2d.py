@@ -21,6 +21,7 @@ import math
 import numpy as np
 
 from ancf.belts.drive2d import BeltDrive, BeltSpec
+from ancf.belts.friction import LAW
 from ancf.belts.post2d import sample, span_midpoint, span_tension, spans
 from ancf.common.inputs import MAX_STEPS
 from ancf.scenes import belt_common as bc
@@ -64,7 +65,7 @@ def check(p: dict) -> None:
 def spec(p: dict) -> BeltSpec:
     return BeltSpec(bc.path_of(p), bc.belt_length(p), p["n_elements"], p["E"], p["nu"], p["rho"],
                     p["b"], p["h"], p["ks"], p["alpha1"], p["alpha2"], p["elastic_points"],
-                    p["k_p"], p["c_p"], p["mu"], p["nu_s"], p["gauss_points"], p["inertia"],
+                    p["k_p"], p["c_p"], (LAW, p["mu"], p["nu_s"]), p["gauss_points"], p["inertia"],
                     p["omega_final"], p["Ta_max"])
 
 

@@ -32,6 +32,7 @@ import math
 import numpy as np
 
 from ancf.belts.drive3d import Belt3DDrive, Belt3DSpec
+from ancf.belts.friction import LAW
 from ancf.belts.post3d import MEASURES, end_state
 from ancf.belts.path import TwoPulleyPath
 from ancf.belts.contact3d import SUPPORTED_RULES
@@ -154,9 +155,9 @@ def check(p: dict) -> None:
 
 def spec(p: dict) -> Belt3DSpec:
     return Belt3DSpec(path_of(p), belt_length(p), p["n_elements"], p["E"], p["nu"], p["rho"],
-                      p["width"], p["h"], p["bending"] == "on", p["k_p"], p["c_p"], p["mu"],
-                      p["nu_s"], p["contact_points"], p["inertia"], p["omega_final"], T0, p["t1"],
-                      p["Ta_max"], TA_T1, p["u0"])
+                      p["width"], p["h"], p["bending"] == "on", p["k_p"], p["c_p"],
+                      (LAW, p["mu"], p["nu_s"]), p["contact_points"], p["inertia"],
+                      p["omega_final"], T0, p["t1"], p["Ta_max"], TA_T1, p["u0"])
 
 
 def _slip(t, wd, wn, window) -> float | None:

@@ -12,6 +12,10 @@ have the same properties, so the equilibrium is a circle of circumference
 Results: the mean distance of the centreline from its centroid and the largest
 deviation from that mean (200 points per element), against L/(2 pi); the Newton
 iterations.
+
+``ancf modes belt-free-static`` adds the belt's density ``rho`` (Table 3.1); its
+reference state is the laid belt (bent straight elements: not an equilibrium), its
+equilibrium the circle.
 """
 from __future__ import annotations
 
@@ -30,7 +34,7 @@ from ancf.core.pattern import ReducedPattern
 from ancf.core.quadrature import RectangularSection
 from ancf.scenes import belt_common as bc
 from ancf.common.params import InputError, Param
-from ancf.scenes.base import Scene, SceneResult
+from ancf.scenes.base import Equilibrium, ModalModel, Scene, SceneResult
 from ancf.solvers.minimize import minimize
 
 CURVE_POINTS = 200  # per element, for the radius statistics
@@ -58,8 +62,8 @@ def _model(p):
     mesh = BeamMesh(L0, n, ("r", "r_x", "r_y"), closed=True)
     q0 = laid_belt(path, L0, n).ravel()
     el = DufvaBelt2D(mesh.lengths, q0[mesh.dofmap], RectangularSection(p["b"], p["h"]), E=p["E"],
-                     nu=p["nu"], alpha1=p["alpha1"], alpha2=p["alpha2"], ks=p["ks"],
-                     nx=p["elastic_points"])
+                     nu=p["nu"], rho=p.get("rho", 0.0), alpha1=p["alpha1"], alpha2=p["alpha2"],
+                     ks=p["ks"], nx=p["elastic_points"])
     elim = Elimination(mesh.n_dofs)
     A, B = 0, n // 2
     elim.fix([mesh.dof(A, "r", 0), mesh.dof(A, "r", 1), mesh.dof(B, "r", 1)],
@@ -77,8 +81,8 @@ def curve(mesh, q) -> np.ndarray:
     return np.einsum("eqk,ekd->eqd", S, E).reshape(-1, 2)
 
 
-def run(p: dict) -> SceneResult:
-    mesh, q0, el, pat, g = _model(p)
+def _settle(p, mesh, q0, el, pat, g):
+    """Newton on the strain energy from the laid belt (:func:`ancf.solvers.minimize`)."""
     dm = mesh.dofmap
     asm = Assembly(mesh.n_dofs, [ElementGroup(el, dm)])
 
@@ -88,8 +92,13 @@ def run(p: dict) -> SceneResult:
     def grad_tangent(z):
         return pat.assemble(asm, pat.expand(z, g))
 
-    out = minimize(energy, grad_tangent, pat.restrict(q0), pat.kl, rtol=p["rtol"],
-                   max_iter=p["max_iterations"])
+    return minimize(energy, grad_tangent, pat.restrict(q0), pat.kl, rtol=p["rtol"],
+                    max_iter=p["max_iterations"])
+
+
+def run(p: dict) -> SceneResult:
+    mesh, q0, el, pat, g = _model(p)
+    out = _settle(p, mesh, q0, el, pat, g)
     q = pat.expand(out.z, g)
     pts = curve(mesh, q)
     rad = np.linalg.norm(pts - pts.mean(axis=0), axis=1)
@@ -105,8 +114,21 @@ def run(p: dict) -> SceneResult:
                               "q0": q0})
 
 
+def modal(p: dict) -> ModalModel:
+    from ancf.scenes.beam_static import centreline  # not needed by ancf run
+    mesh, q0, el, pat, g = _model(p)
+
+    def equilibrium() -> Equilibrium:
+        out = _settle(p, mesh, q0, el, pat, g)
+        return Equilibrium(pat.expand(out.z, g), out.converged, out.message, out.iterations)
+
+    return ModalModel(Assembly(mesh.n_dofs, [ElementGroup(el, mesh.dofmap)]), pat, q0,
+                      equilibrium, centreline(mesh), "centreline", mesh)
+
+
 SCENE = Scene(
     "belt-free-static",
     "Belt released from the pulleys: Newton from the wrapped shape to the circle "
     "(thesis Figs 3.4-3.5).",
-    params(), run, check)
+    params(), run, check, modal=modal,
+    modal_params=tuple(q for q in bc.belt_params() if q.name == "rho"))

@@ -10,11 +10,13 @@ from ancf.scenes import accuracy
 from ancf.core.constraints import Elimination
 from ancf.scenes import beam_static as bs
 from ancf.common.params import Param
-from ancf.scenes.base import Scene
+from ancf.scenes.base import STEEL_DENSITY, Scene
 from ancf.core.validity import check_static
 
 
-def run(p):
+def setup(p):
+    """(mesh, q0, assembly, elimination, load vector) of the cantilever (density
+    ``p["rho"]`` if given)."""
     mesh, q0, asm = bs.build(p)
     n = p["n_elements"]
     elim = Elimination(mesh.n_dofs)
@@ -24,10 +26,19 @@ def run(p):
             d = mesh.dof(0, slot, k)
             elim.fix(d, q0[d])
     Qk = np.zeros(mesh.n_dofs)
-    ix, iy = mesh.dof(n, "r", 0), mesh.dof(n, "r", 1)
-    Qk[iy] = p["F"]
+    Qk[mesh.dof(n, "r", 1)] = p["F"]
+    return mesh, q0, asm, elim, Qk
+
+
+def run(p):
+    mesh, q0, asm, elim, Qk = setup(p)
+    ix, iy = mesh.dof(p["n_elements"], "r", 0), mesh.dof(p["n_elements"], "r", 1)
     res = bs.solve(p, mesh, q0, asm, elim, Qk, lambda q: {"tip_x": float(q[ix]), "tip_y": float(q[iy])})
     return check_static(res, asm, q0)
+
+
+def modal(p):
+    return bs.modal(p, *setup(p))
 
 
 def cantilever_params():
@@ -46,4 +57,5 @@ def cantilever_params():
 SCENE = Scene(
     "cantilever",
     "Cantilever with a vertical tip force, large deflection (Models 1 and 2 via h, nu).",
-    cantilever_params(), run, bs.check_integration, warn=accuracy.static)
+    cantilever_params(), run, bs.check_integration, warn=accuracy.static, modal=modal,
+    modal_params=(STEEL_DENSITY,))

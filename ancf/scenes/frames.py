@@ -101,7 +101,7 @@ def _pad3(a: np.ndarray) -> np.ndarray:
 
 # --- beams: the centreline -------------------------------------------------------------
 
-def _beam_sampler(mesh, per_element: int):
+def beam_sampler(mesh, per_element: int):
     """(function q -> points (m, dim), line cells) of a beam mesh's centreline."""
     from ancf.elements.basis import family_shapes
     dim = _mesh_dim(mesh)
@@ -137,7 +137,7 @@ def _beam_sampler(mesh, per_element: int):
 def _beam_frames(extra, per_element):
     times, qs, q0 = states(extra)
     vs = velocities(extra)
-    points, cells = _beam_sampler(extra["mesh"], per_element)
+    points, cells = beam_sampler(extra["mesh"], per_element)
     ref = _pad3(points(q0))
     out = []
     for i, q in enumerate(qs):

@@ -10,15 +10,29 @@ the centre deflection is small against the thickness (h/47 at the defaults).
 Navier's double series (``ancf analytic navier-plate``, summed as Lévy's single series;
 Kirchhoff's rigidity D = E h^3 / (12 (1 - nu^2))).  Inputs whose rigidity, a^4 or
 deflection scale p a^4 / D leave double precision are refused, naming the field.
+
+``ancf modes plate-square`` vibrates the same model (density ``rho``, default steel);
+about the equilibrium it is Newton's nonlinear equilibrium under the pressure (the
+linear solve's deflection is small against h, so the two differ little).  Its
+``supports`` (``ancf modes`` only) are ``simple`` (the static run's) or ``free``: no
+coordinate fixed, the free-free plate of Exudyn's ``TestModels/ANCFThinPlateTests.py``,
+whose six rigid motions are its zero-frequency modes; it has no equilibrium under a
+pressure, so ``--about equilibrium`` finds none (exit 3, saying so).
 """
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from analytic import navier_plate
-from ancf.models.plate import simply_supported
+from ancf.core.constraints import Elimination
+from ancf.models.plate import grid_points, simply_supported, simply_supported_model
 from ancf.common.params import InputError, Param
-from ancf.scenes.base import Scene, SceneResult
+from ancf.scenes.base import STEEL_DENSITY, Equilibrium, Scene, SceneResult
+
+SUPPORTS = Param("supports", "simple", str, doc="edge supports (ancf modes only): 'simple' "
+                 "(the static run's) or 'free' (no coordinate fixed: six rigid-body modes)",
+                 choices=("simple", "free"))
 
 
 def params() -> tuple:
@@ -65,7 +79,20 @@ def run(p: dict) -> SceneResult:
         extra={"mesh": m, "q0": m.reference(), "q": m.reference() + u})
 
 
+def modal(p: dict):
+    from ancf.scenes import beam_static as bs  # its modal model; not needed by ancf run
+    m, q0, asm, elim, load = simply_supported_model(p["n_elements"], p["a"], p["a"], p["h"],
+                                                    p["E"], p["nu"], p["p"], p["ng"], p["rho"])
+    if p["supports"] == "simple":
+        return bs.modal(p, m, q0, asm, elim, load, grid_points(m), "mid-surface grid")
+    free = bs.modal(p, m, q0, asm, Elimination(m.n_dofs), load, grid_points(m),
+                    "mid-surface grid")
+    return replace(free, equilibrium=lambda: Equilibrium(
+        q0, False, "a free plate has no static equilibrium under a pressure", 0))
+
+
 SCENE = Scene(
     "plate-square",
     "Simply supported square thin plate under uniform pressure, linear, against Navier.",
-    params(), run, check)
+    params(), run, check, modal=modal,
+    modal_params=(STEEL_DENSITY, SUPPORTS))

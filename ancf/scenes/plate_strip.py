@@ -20,10 +20,10 @@ to the Euler-Bernoulli / Reissner rod (reports/elements3d.md).
 from __future__ import annotations
 
 from ancf.scenes import accuracy
-from ancf.models.plate import edge_load, strip_model, tip_mean
+from ancf.models.plate import edge_load, grid_points, strip_model, tip_mean
 from ancf.scenes import beam_static as bs
 from ancf.common.params import Param
-from ancf.scenes.base import Scene
+from ancf.scenes.base import STEEL_DENSITY, Scene
 
 
 def params() -> tuple:
@@ -45,13 +45,25 @@ def params() -> tuple:
     )
 
 
-def run(p):
+def setup(p):
+    """(mesh, q0, assembly, elimination, load vector) of the strip (density ``p["rho"]``
+    if given)."""
     m, q0, asm, elim = strip_model(p["n_elements"], p["n_width"], p["L"], p["b"], p["h"],
-                                   p["E"], p["nu"], p["ng"])
-    return bs.solve(p, m, q0, asm, elim, edge_load(m, p["F"]), lambda q: tip_mean(m, q))
+                                   p["E"], p["nu"], p["ng"], p.get("rho", 0.0))
+    return m, q0, asm, elim, edge_load(m, p["F"])
+
+
+def run(p):
+    m, q0, asm, elim, Qk = setup(p)
+    return bs.solve(p, m, q0, asm, elim, Qk, lambda q: tip_mean(m, q))
+
+
+def modal(p):
+    m, q0, asm, elim, Qk = setup(p)
+    return bs.modal(p, m, q0, asm, elim, Qk, grid_points(m), "mid-surface grid")
 
 
 SCENE = Scene(
     "plate-strip",
     "The cantilever as a clamped thin-plate strip, out-of-plane tip load, large deflection.",
-    params(), run, warn=accuracy.static)
+    params(), run, warn=accuracy.static, modal=modal, modal_params=(STEEL_DENSITY,))

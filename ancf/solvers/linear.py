@@ -93,7 +93,9 @@ def _sparse_count_below(A, shift) -> int:
     return int(np.sum(lu.U.diagonal() < 0))
 
 
-def _counter(pattern, data):
+def counter(pattern, data):
+    """The function ``s -> number of eigenvalues of the stored symmetric matrix below s``
+    (-1 where a pivot of the LDL^T of ``data - s I`` is exactly zero)."""
     if pattern.band:
         return lambda s: banded.count_below(data, pattern.kl, s)
     A = pattern.as_csr(data)
@@ -147,7 +149,7 @@ def stability(pattern, data):
     top = _top(pattern, data)
     if top == 0.0:
         return 0, pattern.n, 0.0
-    count = _counter(pattern, data)
+    count = counter(pattern, data)
     neg = count(-NEGATIVE_EIGENVALUE_REL * top)
     below_zero_band = count(ZERO_EIGENVALUE_REL * top)
     zero = 0 if below_zero_band == neg else below_zero_band - count(-ZERO_EIGENVALUE_REL * top)

@@ -205,7 +205,13 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
     return result(True, "converged", 1.0)
 
 
-def stability_at(assembly, pattern, q):
-    """(negative, zero, lowest/largest) eigenvalues of the reduced tangent at q, by inertia."""
+def stability_at(assembly, pattern, q, forces=None):
+    """(negative, zero, lowest/largest) eigenvalues of the reduced tangent at q, by inertia.
+    With force terms (``forces``, at full load) the tangent is K - dQ/dq, of which the
+    symmetric part is taken (a moment about a fixed axis has a non-symmetric load
+    stiffness in general; the inertia needs a symmetric matrix)."""
     _, K = pattern.assemble(assembly, q)
+    Kq = None if forces is None else forces.jacobians(q, np.zeros_like(q), 0.0)[0]
+    if Kq is not None:
+        pattern.add_global(K, 0.5 * (Kq + Kq.T), -1.0)
     return stability(pattern, K)

@@ -113,11 +113,12 @@ def check_data(data) -> None:
 
 
 def check_reference(scene: str, ref, params: dict) -> None:
-    """Before any run: an analytic reference must exist for these physical parameters
-    (e.g. Bechtel's belt cannot transmit more than its largest torque); else InputError
+    """Before any run: an analytic or published reference must exist for these physical
+    parameters (e.g. Bechtel's belt cannot transmit more than its largest torque, published
+    values exist for the published problem only); else InputError
     naming why.  Self-references (a much finer model) are not run here: a failure of
     theirs shows in the rows and the message."""
-    if ref.kind != "analytic":
+    if ref.kind == "self":
         return
     try:
         ref.values(params)
@@ -269,10 +270,10 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
             evidence["reference_missing"] = why
         else:
             lines.append(f"{scene}: no converged run among {len(df)}.")
-        if ref.kind == "analytic":
+        if ref.kind != "self":
             others = [n for n, r in s.references.items() if r.kind == "self"]
             if others:
-                lines.append(f"Against an analytic reference the error may have a floor that is "
+                lines.append(f"Against an {ref.kind} reference the error may have a floor that is "
                              f"not discretisation (see the reference: {ref.doc}); "
                              f"`--reference {others[0]}` measures the discretisation error.")
         code = 3

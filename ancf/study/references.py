@@ -84,7 +84,8 @@ class Reference:
 
     ``values(params) -> dict`` (JSON-serialisable; raises :class:`ReferenceFailed`);
     ``error(results, values, params) -> float`` (dimensionless); ``kind`` is
-    ``analytic`` or ``self``; ``doc`` names the reference and defines the error.
+    ``analytic``, ``published`` (transcribed values of another code, for the published
+    problem only) or ``self``; ``doc`` names the reference and defines the error.
     ``fine`` (self-references): the knob values of the much finer model.
     """
 
@@ -606,6 +607,8 @@ def _plate_strip_spec() -> SceneSpec:
 
 def _reissner_3d(p):
     """The Reissner rod in the load plane (h = b, or the load along a principal axis)."""
+    if any(p.get(f"M{c}", 0.0) for c in "xyz"):
+        raise ReferenceFailed("Reissner reference: a tip force only (Mx = My = Mz = 0)")
     a = math.radians(p["load_angle_deg"])
     c, s = math.cos(a), math.sin(a)
     if abs(p["h"] - p["b"]) > 1e-12 * p["h"] and min(abs(c), abs(s)) > 1e-12:
@@ -639,6 +642,98 @@ def _beam3d_spec() -> SceneSpec:
                            "element (alpha1 = alpha2 = 1) against the Reissner rod.")
 
 
+def _published_problem(p: dict, data: dict, what: str) -> None:
+    """ReferenceFailed unless the problem parameters of p are the published ``data``."""
+    for k, v in data.items():
+        if not math.isclose(p[k], v, rel_tol=1e-12, abs_tol=0.0):
+            raise ReferenceFailed(f"{what}: published for {k} = {v:g} only (got {p[k]:g})")
+
+
+def _princeton(p):
+    """The published ANSYS beam tip displacements of the Princeton beam at p's load and
+    angle, as signed tip positions y, z of our load (F (0, cos a, sin a))."""
+    from ancf.scenes import beam3d_published as pub
+    what = "Princeton beam (ANSYS, Obrezkov et al. 2022)"
+    _published_problem(p, {**pub.PRINCETON, "Mx": 0.0, "My": 0.0, "Mz": 0.0}, what)
+    load = [k for k, f in pub.PRINCETON_LOADS.items() if math.isclose(abs(p["F"]), f,
+                                                                     rel_tol=1e-12)]
+    a = abs(p["load_angle_deg"])
+    at = [i for i, b in enumerate(pub.PRINCETON_ANGLES) if math.isclose(a, b, abs_tol=1e-12)]
+    if not load or not at:
+        raise ReferenceFailed(f"{what}: published for |F| in {sorted(pub.PRINCETON_LOADS.values())} N "
+                              f"and |load_angle_deg| in {list(pub.PRINCETON_ANGLES)} only")
+    uy, uz = (c[at[0]] for c in pub.PRINCETON_ANSYS[load[0]][pub.PRINCETON_REFERENCE])
+    r = math.radians(p["load_angle_deg"])
+    return {"tip_y": math.copysign(uy, p["F"] * math.cos(r)),
+            "tip_z": math.copysign(uz, p["F"] * math.sin(r))}
+
+
+def _yz_error(res, ref, p):
+    """|(y, z) - (y, z)_ref| / |(y, z)_ref| of the tip."""
+    return (math.hypot(res["tip_y"] - ref["tip_y"], res["tip_z"] - ref["tip_z"])
+            / math.hypot(ref["tip_y"], ref["tip_z"]))
+
+
+def _general_bending(p):
+    """Nachbagauer et al. 2013, Table 4, ANSYS: the tip position (it moves to -x, -y, -z)."""
+    from ancf.scenes import beam3d_published as pub
+    _published_problem(p, {**pub.GENERAL_BENDING, "Mz": 0.0, "F": 0.0},
+                       "3D general bending (Nachbagauer et al. 2013, Table 4)")
+    ux, uy, uz = pub.GENERAL_BENDING_TABLE_4[pub.GENERAL_BENDING_REFERENCE][1]
+    return {"tip_x": p["L"] - ux, "tip_y": -uy, "tip_z": -uz}
+
+
+def _displacement_error(res, ref, p):
+    """Largest relative error of the three tip displacements u = tip - (L, 0, 0)."""
+    return max(abs((res[k] - ref[k]) / (ref[k] - o))
+               for k, o in (("tip_x", p["L"]), ("tip_y", 0.0), ("tip_z", 0.0)))
+
+
+_BEAM3D_GRIDS = (
+    {"element": ["linear3d"], "integration": ["thesis", "exact", "report-fix"],
+     "n_elements": [2, 4, 8, 16, 32, 64], "rtol": [1e-8]},
+    {"element": ["belt3d"], "n_elements": [2, 4, 8, 16, 32], "rtol": [1e-8]})
+
+
+def _self_3d(scene: str, quantities: tuple, error, what: str) -> Reference:
+    return self_reference(
+        scene, {"element": "linear3d", "integration": "thesis", "n_elements": 256,
+                "rtol": 1e-10, "load_steps": 10, "max_iterations": 25},
+        quantities, error, "converged self-reference: linear3d, thesis scheme, 256 elements, "
+        f"Newton rtol 1e-10 (cached); error = {what}; measures the discretisation error only",
+        check={"n_elements": 128})
+
+
+def _princeton_spec() -> SceneSpec:
+    what = "|(y, z) − (y, z)_ref| / |(y, z)_ref| of the tip"
+    refs = {"published": Reference(
+        "published", "published",
+        "ANSYS beam elements (Obrezkov et al. 2022, as Exudyn's TestModels/ANCFBeamTest.py "
+        f"lists them; F2, F3 at 0-90° in steps of 15°); error = {what}", _princeton,
+        _yz_error), "self": _self_3d("princeton-beam", ("tip_x", "tip_y", "tip_z"), _yz_error,
+                                     what)}
+    return SceneSpec("princeton-beam", STATIC_KNOBS,
+                     frozenset({"bending", "large-rotation", "3D"}), refs, "published",
+                     report_grids=_BEAM3D_GRIDS, recommend_grids=_BEAM3D_GRIDS,
+                     notes="The Princeton beam, F2 at 0° (defaults), against ANSYS beam "
+                           "elements.")
+
+
+def _bending_spec() -> SceneSpec:
+    what = "largest relative error of the tip displacements u_x, u_y, u_z"
+    refs = {"published": Reference(
+        "published", "published",
+        "Nachbagauer et al. 2013, Table 4, ANSYS (40 elements), as Exudyn's "
+        f"TestModels/ANCFBeamTest.py lists it; error = {what}", _general_bending,
+        _displacement_error), "self": _self_3d("beam3d-bending", ("tip_x", "tip_y", "tip_z"),
+                                               _displacement_error, what)}
+    return SceneSpec("beam3d-bending", STATIC_KNOBS, frozenset({"bending", "large-rotation",
+                                                                 "3D"}),
+                     refs, "published", report_grids=_BEAM3D_GRIDS,
+                     recommend_grids=_BEAM3D_GRIDS,
+                     notes="3D general bending (Mx = 0.5e6, My = 2e6 N m) against ANSYS.")
+
+
 #: Scene name -> spec factory.  One entry per scene; dynamic ones activate with their scene.
 SPECS: dict[str, Callable[[], SceneSpec]] = {
     "cantilever": _cantilever_spec,
@@ -652,6 +747,8 @@ SPECS: dict[str, Callable[[], SceneSpec]] = {
     "plate-square": _plate_square_spec,
     "plate-strip": _plate_strip_spec,
     "beam3d-cantilever": _beam3d_spec,
+    "princeton-beam": _princeton_spec,
+    "beam3d-bending": _bending_spec,
 }
 
 
@@ -686,9 +783,9 @@ def spec(scene: str) -> SceneSpec:
 
 
 def specs() -> dict:
-    """Specs of every scene present in ``SCENES`` (declaration order of the registry)."""
+    """Specs of every swept scene of ``SCENES`` (declaration order of the registry)."""
     from ancf.scenes import SCENES
-    return {name: spec(name) for name in SCENES}
+    return {name: spec(name) for name, s in SCENES.items() if s.swept}
 
 
 def model_physics(scene: str, params: dict) -> frozenset:

@@ -1,11 +1,13 @@
-"""JSON schemas of the public output of ``ancf run SCENE --json`` and ``ancf analytic NAME
---json``: one per scene and per analytic reference, generated from declarations.
+"""JSON schemas of the public output of ``ancf run SCENE --json``, ``ancf analytic NAME
+--json`` and ``ancf modes SCENE --json``: one per scene, per analytic reference and per
+scene with modes, generated from declarations.
 
 The top level is the same for all (``scene``, ``params``, ``converged``, ``message``,
 ``results``, ``cpu_time_s``, ``compile_cpu_s``, ``warnings``); ``params`` follows the scene's parameter
-declarations (:class:`ancf.scenes.base.Param`); ``results`` follows :data:`RESULTS` below,
-the one place where a result key is declared: its JSON type, whether it is always present
-and whether it is ``null`` when the run does not converge.  Result keys not declared are
+declarations (:class:`ancf.scenes.base.Param`); ``results`` follows :data:`RESULTS` below
+(:data:`MODES` for ``ancf modes``), the one place where a result key is declared: its JSON
+type, whether it is always present and whether it is ``null`` when the run does not
+converge.  Result keys not declared are
 an error of the schema (``additionalProperties: false``), so a new result key must be
 declared here, which publishes it (``python -m ancf.study.schemas`` writes
 ``reports/schemas.md``).  :func:`validate` is a small validator for the subset of JSON
@@ -18,6 +20,7 @@ import sys
 from pathlib import Path
 
 from ancf.common.paths import REPORTS
+from ancf.solvers.linear import ZERO_EIGENVALUE_REL
 
 NUM, INT, STR, BOOL = "number", "integer", "string", "boolean"
 
@@ -166,6 +169,42 @@ RESULTS = {
                                             "(0: start = laid)"),
         "belt_length_m": field(NUM, "reference (unstretched) belt length used, m"),
         "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle")},
+    "belt-drive": {
+        **_DYNAMIC,
+        "pulleys": field("array", "per pulley, in belt order (null when the run stopped)",
+                         items="object", nullable=True, keys={
+            "name": field(STR, "pulley name"),
+            "omega": series("angular velocity, counter-clockwise positive, rad/s"),
+            "torque_Nm": series("the belt's moment on it (friction), counter-clockwise "
+                                "positive, N m"),
+            "omega_mean": field(NUM, "mean angular velocity over run.steady_window, rad/s"),
+            "slip": field(NUM, "1 - its mean rim speed / the driver's (the first prescribed "
+                               "pulley) over the window")}),
+        "arms": field("array", "per tensioner, in belt order (null when the run stopped)",
+                      items="object", nullable=True, keys={
+            "name": field(STR, "the tensioner pulley's name"),
+            "angle_rad": series("its arm's angle (centre - pivot, counter-clockwise from x), "
+                                "rad"),
+            "angle_mean_rad": field(NUM, "its mean over run.steady_window, rad")}),
+        "spans": field("array", "per span (pulley k to k + 1), in belt order (null when the "
+                       "run stopped)", items="object", nullable=True, keys={
+            "from": field(STR, "pulley the span leaves"), "to": field(STR, "pulley it reaches"),
+            "tension_mean_N": field(NUM, "mean axial force over its middle third, averaged "
+                                         "over the samples of run.steady_window, N"),
+            "tension_N": field(NUM, "the same at t_end, N")}),
+        "belt_s_m": field("array", "belt arc coordinate (reference length from node 0) of "
+                          "the points along the belt, m", nullable=True, items=NUM),
+        "axial_force_N": field("array", "axial force at those points at t_end, N",
+                               nullable=True, items=NUM),
+        "speed_m_s": field("array", "belt speed at those points at t_end, m/s", nullable=True,
+                           items=NUM),
+        "penetration_max_m": _nullable("largest penetration of the belt's centreline sample "
+                                       "points into a pulley at t_end, m"),
+        "total_dofs": field(INT, "belt coordinates plus the free pulleys' angles"),
+        "contact_pairs": field(INT, "element-pulley pairs whose Gauss points were evaluated "
+                                    "(after the bounding test), summed over force evaluations"),
+        "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
+                                            "(0: start = laid)")},
     "plate-square": {
         "center_deflection_m": _nullable("centre deflection along the pressure (linear solve), m"),
         "navier_center_deflection_m": _nullable("Navier's series at the same parameters, m"),
@@ -178,20 +217,107 @@ RESULTS = {
                     "tip_z": _nullable("mean z of the tip-edge nodes (along the load), m")},
     "beam3d-cantilever": {**_STATIC, "tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
                           "tip_z": _nullable("tip z, m")},
+    "princeton-beam": {**_STATIC, "tip_x": _nullable("tip x, m"),
+                       "tip_y": _nullable("tip y, m (u_y = tip_y)"),
+                       "tip_z": _nullable("tip z, m (u_z = tip_z: the mirror image of the "
+                                          "published +z)")},
+    "beam3d-bending": {**_STATIC, "tip_x": _nullable("tip x, m (u_x = tip_x - L)"),
+                       "tip_y": _nullable("tip y, m"), "tip_z": _nullable("tip z, m")},
     "navier-plate": {"center_deflection_m": _nullable("centre deflection along the pressure, m"),
                      "terms": field(INT, "largest odd series index summed")},
     "timoshenko": {"mid_deflection_m": _nullable("midspan deflection, m")},
+    "beam-modes": {
+        "frequencies_hz": field("array", "Timoshenko natural frequencies (both spectra), "
+                                "ascending, Hz", items=NUM),
+        "euler_bernoulli_hz": field("array", "Euler-Bernoulli natural frequencies, ascending, Hz",
+                                    items=NUM),
+        "cutoff_hz": _nullable("the second spectrum's cut-off sqrt(ks G A / (rho I)) / (2 pi), "
+                               "Hz")},
+    "plate-modes": {
+        "frequencies_hz": field("array", "natural frequencies, ascending, Hz", items=NUM),
+        "m": field("array", "half-waves along a of each frequency", items=INT),
+        "n": field("array", "half-waves along b of each frequency", items=INT)},
+    "moving-string": {
+        "frequencies_hz": field("array", "transverse span frequencies n c (1 - v^2/c^2) / (2 L), "
+                                "ascending, Hz", items=NUM),
+        "wave_speed_m_s": _nullable("c = sqrt(T / rho_A), m/s")},
     "reissner": {"tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
                  "tip_rotation_rad": _nullable("tip section rotation, rad")},
     "spinning-extension": {
         "axial_extension_m": _nullable("steady axial extension (Eq. 2.36), m"),
         "al": _nullable("the parameter a L of Eq. 2.36"),
         "axial_extension_thesis_m": _nullable("the same as printed in the thesis, m")},
+    "belt-steady": {
+        "path_length_m": field(NUM, "length of the wrapped path at the tensioner's equilibrium, m"),
+        "L0_m": field(NUM, "stress-free belt length used, m"),
+        "spans": field("array", "per span, in belt order", items="object", keys={
+            "from": field(STR, "pulley the span leaves"), "to": field(STR, "pulley it reaches"),
+            "length_m": field(NUM, "span length (common tangent), m"),
+            "tension_N": field(NUM, "tension T, N"), "speed": field(NUM, "belt speed, m/s")}),
+        "pulleys": field("array", "per pulley, in belt order", items="object", keys={
+            "name": field(STR, "pulley name"), "law": field(STR, "prescribed, driven, idler or "
+                                                            "tensioner"),
+            "wrap_rad": field(NUM, "wrap angle, rad"),
+            "stick_arc_rad": field(NUM, "stick arc (from the entry), rad"),
+            "creep_arc_rad": field(NUM, "creep arc (at the exit), rad"),
+            "omega": field(NUM, "angular speed, positive counter-clockwise, rad/s"),
+            "torque_Nm": field(NUM, "the belt's moment on it along its rotation (the driver's: "
+                                    "minus its driving torque), N m"),
+            "slip": field(NUM, "1 - its rim speed / the driver's"),
+            "arm_angle_rad": _nullable("a tensioner's arm angle at equilibrium, pivot to "
+                                       "centre, counter-clockwise from x, rad (null: no arm)")})},
     "bechtel": {**_BELT_STEADY, "capstan": field("object", "the same keys with the belt's "
                                                  "inertia neglected (capstan model)",
                                                  keys=_BELT_STEADY)},
     "rigid-pendulum": {"times": series("sample times, s"), "theta": series("angle, rad"),
                        "tip_x": series("tip x, m"), "tip_y": series("tip y, m")},
+}
+
+_MODES_NULL = "null when no eigenpairs were found"
+#: result keys of ``ancf modes SCENE --json`` (every scene with modes)
+MODES = {
+    "about": field(STR, "state the tangent stiffness is taken at: reference or equilibrium"),
+    "count": field(INT, "number of modes asked for (default 6, or the reduced size - 1)"),
+    "method": field(STR, "eigensolver: dense LAPACK eigh, or shift-invert Lanczos (ARPACK) on "
+                         "the band LU or SuperLU of K - sigma M", nullable=True),
+    "reduced_size": field(INT, "unknowns of the reduced system (constraints eliminated)"),
+    "frequencies_hz": field("array", "the lowest count natural frequencies, ascending, Hz "
+                            "(negative: -sqrt(-omega^2)/(2 pi) of an unstable mode); "
+                            + _MODES_NULL, nullable=True, items=NUM),
+    "eigenvalues_rad2_s2": field("array", "their omega^2, rad^2/s^2; " + _MODES_NULL,
+                                 nullable=True, items=NUM),
+    "rigid_body_modes": field(INT, "zero-frequency modes (rigid motion, a mechanism or a "
+                              "zero-energy mode of the integration scheme): |phi^T K phi| <= "
+                              "rigid_body_threshold_rel |K|_inf phi^T phi", nullable=True),
+    "rigid_body_threshold_rel": field(NUM, "that threshold (the static stability check's zero, "
+                                           f"{ZERO_EIGENVALUE_REL:g})"),
+    "sampling": field(STR, "where the mode shapes are sampled: centreline (beams, the belt) or "
+                           "mid-surface grid (plates: the nodes)"),
+    "sample_points": field("array", "positions of the sample points in the state vibrated "
+                                    "about, m (one [x, y] or [x, y, z] each)", items="array"),
+    "mode_shapes": field("array", "per mode, the displacement [dx, dy(, dz)] of every sample "
+                                  "point, scaled to a largest magnitude of 1 (its largest "
+                                  "component positive; all zero for a mode that leaves the "
+                                  "points in place, e.g. a beam section's torsion); "
+                                  + _MODES_NULL, nullable=True, items="array"),
+    "mode_direction_shares": field("array", "per mode, the share of the squared sampled "
+                                            "displacement along x, y(, z) (all zero where the "
+                                            "points stay in place); " + _MODES_NULL,
+                                   nullable=True, items="array"),
+    "newton_iterations": field(INT, "Newton iterations of the static equilibrium (0 about the "
+                                    "reference)"),
+    "factorizations": field(INT, "factorisations: inertia counts (the shift, the Sturm check) "
+                                 "and the shift-inverted LU or Cholesky", nullable=True),
+    "solves": field(INT, "Lanczos steps: solves with the factorisation (dense: 0)",
+                    nullable=True),
+    "shift_rad2_s2": _nullable("the shift sigma, below the lowest eigenvalue"),
+    "sturm_count": field(INT, "eigenvalues below the Sturm check's point, by inertia (between "
+                              "the highest reported and the next, or above the next where the "
+                              "two are one repeated eigenvalue)", nullable=True),
+    "missed_modes": field(INT, "sturm_count minus the eigenvalues found below that point (0: "
+                               "none missed)", nullable=True),
+    "lowest_frequency_reference_hz": field(NUM, "about the equilibrium: the lowest frequency "
+                                                "about the reference, Hz", required=False),
 }
 
 _PARAM_TYPES = {float: NUM, int: INT, str: STR, bool: BOOL}
@@ -205,9 +331,11 @@ def _result_schema(decl: dict) -> dict:
     props = {}
     for k, f in decl.items():
         props[k] = {"type": _type(f["kind"], f["nullable"]), "description": f["doc"]}
-        if f["items"]:
+        if f["items"] and f["keys"]:  # an array of objects
+            props[k]["items"] = _result_schema(f["keys"])
+        elif f["items"]:
             props[k]["items"] = {"type": [f["items"], "null"]}
-        if f["keys"]:
+        elif f["keys"]:
             props[k].update({kk: v for kk, v in _result_schema(f["keys"]).items() if kk != "type"})
     return {"type": "object", "properties": props, "additionalProperties": False,
             "required": [k for k, f in decl.items() if f["required"]]}
@@ -238,23 +366,29 @@ class SchemaNameError(KeyError, ValueError):
 
 
 def names() -> list[str]:
-    """Every schema name in the README's form: ``run SCENE`` and ``analytic NAME``."""
-    return [f"{command} {n}" for n, (command, _) in registries().items()]
+    """Every schema name in the README's form: ``run SCENE``, ``analytic NAME`` and
+    ``modes SCENE``."""
+    from ancf.scenes.modes import MODAL
+    return [f"{command} {n}" for n, (command, _) in registries().items()] + [
+        f"modes {n}" for n in MODAL]
 
 
 def _lookup(name: str) -> tuple[str, str, object]:
-    """(command, bare name, Scene) of ``run SCENE``, ``analytic NAME`` (also with a leading
-    ``ancf``) or the bare ``SCENE`` / ``NAME``."""
+    """(command, bare name, Scene) of ``run SCENE``, ``analytic NAME``, ``modes SCENE``
+    (also with a leading ``ancf``) or the bare ``SCENE`` / ``NAME`` (its run)."""
+    from ancf.scenes.modes import MODAL, modal_scene
     regs = registries()
     words = name.split() if isinstance(name, str) else []
     if words[:1] == ["ancf"]:
         words = words[1:]
-    if len(words) == 2 and words[0] in ("run", "analytic"):
+    if len(words) == 2 and words[0] in ("run", "analytic", "modes"):
         command, bare = words
     elif len(words) == 1:
         command, bare = None, words[0]
     else:
         command, bare = None, None
+    if command == "modes" and bare in MODAL:
+        return command, bare, modal_scene(bare)
     if bare in regs and command in (None, regs[bare][0]):
         return regs[bare][0], bare, regs[bare][1]
     raise SchemaNameError(f"schema: unknown name {name!r}; allowed: {', '.join(names())} "
@@ -262,13 +396,14 @@ def _lookup(name: str) -> tuple[str, str, object]:
 
 
 def schema(name: str) -> dict:
-    """The JSON schema of ``ancf run|analytic NAME --json``; ``name`` as the README writes
-    it (``"run cantilever"``, ``"analytic reissner"``) or bare (``"cantilever"``).  An
-    unknown name raises :class:`SchemaNameError` (a ``KeyError``) listing the allowed ones."""
+    """The JSON schema of ``ancf run|analytic|modes NAME --json``; ``name`` as the README
+    writes it (``"run cantilever"``, ``"analytic reissner"``, ``"modes cantilever"``) or
+    bare (``"cantilever"``: its run).  An unknown name raises :class:`SchemaNameError` (a
+    ``KeyError``) listing the allowed ones."""
     command, name, sc = _lookup(name)
     props = {"scene": {"type": STR, "const": name}, "params": _params_schema(sc),
              "converged": {"type": BOOL}, "message": {"type": STR},
-             "results": _result_schema(RESULTS[name]), "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
+             "results": _result_schema(MODES if command == "modes" else RESULTS[name]), "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
                             "compiling or loading numba kernels"},
              "compile_cpu_s": {"type": NUM, "description": "process CPU seconds spent compiling "
                                "numba kernels or loading them from numba's cache during the run "
@@ -346,7 +481,10 @@ def _validate(value, sch: dict, path: str) -> list[str]:
 def _type_text(s: dict) -> str:
     t = s["type"]
     text = " or ".join(t) if isinstance(t, list) else t
-    return text + (f" of {' or '.join(s['items']['type'])}" if "items" in s else "")
+    if "items" not in s:
+        return text
+    item = s["items"]["type"]
+    return f"{text} of {item if isinstance(item, str) else ' or '.join(item)}"
 
 
 def schemas_markdown() -> str:
@@ -354,16 +492,18 @@ def schemas_markdown() -> str:
     import json
     parts = ["# JSON output schemas\n",
              "Generated from `ancf/study/schemas.py` (`python -m ancf.study.schemas`); do not edit. One "
-             "schema per `ancf run SCENE --json` and `ancf analytic NAME --json`; the suite "
-             "validates every scene's and reference's default run against it "
+             "schema per `ancf run SCENE --json`, `ancf analytic NAME --json` and `ancf modes "
+             "SCENE --json`; the suite validates every scene's and reference's default run "
+             "(and every scene's modes) against it "
              "(`tests/test_schemas.py`). Top level: `scene`, `params` (every parameter used), "
              "`converged`, `message`, `results`, `cpu_time_s` (the run's process CPU seconds "
              "without compiling or loading numba kernels), `compile_cpu_s` (those), "
              "`warnings` (a list of strings, "
              "empty when none). Result keys marked nullable are `null` where the run did not "
              "converge; optional keys are absent when the solver did not get that far.\n"]
-    for name, (command, _) in registries().items():
-        s = schema(name)
+    for full in names():
+        command, name = full.split()
+        s = schema(full)
         res = s["properties"]["results"]
         parts += [f"## `ancf {command} {name}`\n", "| result key | type | required | meaning |",
                   "|---|---|---|---|"]

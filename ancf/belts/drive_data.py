@@ -1,0 +1,260 @@
+"""A belt drive as data: the keys of a drive file (:mod:`ancf.belts.drive_file` reads it),
+their units, defaults and ranges, and the validated description it becomes.
+
+A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these tables
+(the key lists below are the declarations; every key has its unit and range there):
+
+* ``[belt]``: the element (``dufva2d``), ``n_elements``, the material (``E`` Pa or
+  ``EA`` N = E b h, one of them), the section ``h`` x ``b`` (m), ``rho`` (kg/m^3), ``nu``,
+  ``ks``, Dufva's ``alpha1``, ``alpha2`` (Eqs 3.18-3.19), the reference length
+  ``length`` L0 (m) or the ``prestretch`` L0 / P - 1 on the wrapped path P (one of them),
+  the axial and bending strain-rate damping ``damping_axial`` (dEA, N s) and
+  ``damping_bending`` (dEI, N m^2 s) and ``contact_offset`` (m): the distance of the
+  belt's running surfaces from its centreline, so the centreline's path runs at
+  radius + offset round every pulley.
+* ``[[pulleys]]``, in the belt's counter-clockwise running order (:mod:`ancf.belts.path`):
+  ``name``, ``centre`` [x, y] (m), ``radius`` (m), ``side`` (+1 the belt's inner side on
+  it, -1 its back) and a ``law`` with the law's own keys (:data:`LAW_KEYS`):
+  ``prescribed`` (``speed``: a law of :data:`ancf.belts.pulleys.SPEED_LAWS` with
+  ``omega_final`` rad/s, ``t0``, ``t1`` s, or ``table`` with ``speed_table``),
+  ``driven`` (``inertia``, ``damping`` and ``load``: a law of
+  :data:`ancf.belts.pulleys.TORQUE_LAWS` with ``load_torque`` N m, ``t0``, ``t1``,
+  ``constant`` with ``load_torque``, or ``table`` with ``load_table``), ``idler``
+  (``inertia``, ``damping``), ``tensioner`` (an idler on an arm turning about ``pivot``:
+  the arm's ``arm_inertia`` about the pivot, torsion spring ``arm_stiffness`` and
+  ``arm_preload``, ``arm_damping``; the arm's length is |centre - pivot|) and ``fixed``.
+  Angular velocities are counter-clockwise positive; a load torque T_a resists the
+  pulley's running direction (Eq. 3.26 with -T_a; counter-clockwise on the belt's inner
+  side, clockwise on its back); a table is ``[[t, value], ...]``, t increasing,
+  interpolated linearly and held beyond its ends.
+* ``[friction]``: ``law``, a name of :data:`ancf.belts.friction.LAWS`, and that law's
+  parameters (:data:`FRICTION_KEYS`).
+* ``[contact]``: the penalty ``k_p`` (N/m^2), ``c_p`` (N s/m^2) and ``gauss_points``.
+* ``[run]``: ``t_end``, ``dt``, ``output_dt``, ``steady_window`` (s: the averaging window
+  before t_end), ``start`` (``settled`` or ``laid``), ``rho_inf``, ``newton_tol``,
+  ``max_steps``.
+
+Keys without a default (:data:`REQUIRED`) must be given.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ancf.belts import friction
+from ancf.belts.contact2d import SUPPORTED_POINTS
+from ancf.belts.path import PulleyPath
+from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS
+from ancf.common.inputs import MAX_STEPS
+from ancf.common.params import InputError, Param
+
+REQUIRED = None  # the default of a key that must be given (Param's "no default")
+BOUND = 1e3      # m: coordinates of centres and pivots within +-BOUND
+
+
+@dataclass(frozen=True)
+class Vector:
+    """A key whose value is [x, y], each a finite number within +-bound."""
+
+    name: str
+    default: object = REQUIRED
+    unit: str = "m"
+    doc: str = ""
+    bound: float = BOUND
+
+    def allowed(self) -> str:
+        return f"[x, y], two numbers in [-{self.bound:g}, {self.bound:g}] {self.unit}"
+
+    def parse(self, value) -> tuple:
+        try:
+            v = tuple(float(x) for x in value)
+        except (TypeError, ValueError):
+            v = ()
+        if len(v) != 2 or not all(math.isfinite(x) and abs(x) <= self.bound for x in v):
+            raise InputError(f"{self.name} = {value!r} is out of range; allowed: {self.allowed()}")
+        return v
+
+
+@dataclass(frozen=True)
+class Table:
+    """A key whose value is [[t, value], ...]: at least two rows, t (s) increasing."""
+
+    name: str
+    unit: str
+    doc: str = ""
+    default: object = REQUIRED
+
+    def allowed(self) -> str:
+        return (f"[[t, value], ...], at least 2 rows of finite numbers, t (s) from 0 up and "
+                f"increasing, value {self.unit}")
+
+    def parse(self, value) -> tuple:
+        try:
+            rows = tuple((float(t), float(y)) for t, y in value)
+        except (TypeError, ValueError):
+            rows = ()
+        t = np.array([r[0] for r in rows])
+        if (len(rows) < 2 or not np.all(np.isfinite(rows)) or np.any(np.diff(t) <= 0)
+                or t[0] < 0):
+            raise InputError(f"{self.name} = {value!r} is out of range; allowed: {self.allowed()}")
+        return rows
+
+
+def _keys(*keys) -> dict:
+    return {k.name: k for k in keys}
+
+
+TOP = _keys(Vector("gravity", (0.0, 0.0), "m/s^2", "gravity vector"))
+
+BELT = _keys(
+    Param("element", "dufva2d", str, doc="belt element", choices=("dufva2d",)),
+    Param("n_elements", REQUIRED, int, doc="belt elements", lo=4, hi=2000),
+    Param("E", REQUIRED, float, "Pa", "Young's modulus (or EA)", lo=0, lo_open=True, hi=1e12),
+    Param("EA", REQUIRED, float, "N", "axial stiffness E b h (or E)", lo=0, lo_open=True, hi=1e10),
+    Param("nu", 0.3, float, "-", "Poisson's ratio (the shear modulus only)", lo=0, hi=0.5,
+          hi_open=True),
+    Param("h", REQUIRED, float, "m", "section height", lo=0, lo_open=True, hi=0.05),
+    Param("b", REQUIRED, float, "m", "section width", lo=0, lo_open=True, hi=1.0),
+    Param("rho", REQUIRED, float, "kg/m^3", "density", lo=0, lo_open=True, hi=1e5),
+    Param("ks", 5.0 / 6.0, float, "-", "shear correction factor", lo=0, lo_open=True, hi=2),
+    Param("alpha1", 1.0, float, "-", "axial stiffness parameter (Eq. 3.18)", lo=0,
+          lo_open=True, hi=10),
+    Param("alpha2", 1.0, float, "-", "bending stiffness parameter (Eqs 3.18-3.19)", lo=0,
+          lo_open=True, hi=10),
+    Param("elastic_points", 5, int, doc="Gauss points per element of the elastic forces",
+          lo=2, hi=12),
+    Param("length", REQUIRED, float, "m", "reference (unstretched) length L0 (or prestretch)",
+          lo=0, lo_open=True, hi=1e3),
+    Param("prestretch", REQUIRED, float, "-", "L0 / P - 1 on the wrapped path P (or length)",
+          lo=-0.5, hi=0.0),
+    Param("damping_axial", 0.0, float, "N s", "axial strain-rate damping dEA", lo=0, hi=1e9),
+    Param("damping_bending", 0.0, float, "N m^2 s", "bending strain-rate damping dEI", lo=0,
+          hi=1e9),
+    Param("contact_offset", 0.0, float, "m", "running surfaces' distance from the centreline",
+          lo=0, hi=0.05),
+)
+#: pairs of belt keys of which exactly one is given
+ONE_OF = (("E", "EA"), ("length", "prestretch"))
+
+LAWS = ("prescribed", "driven", "idler", "tensioner", "fixed")
+PULLEY = _keys(
+    Param("name", REQUIRED, str, doc="the pulley's name"),
+    Vector("centre", doc="centre"),
+    Param("radius", REQUIRED, float, "m", "radius", lo=0, lo_open=True, hi=10),
+    Param("side", 1, int, doc="+1: the belt's inner side on it, -1: its back", choices=(1, -1)),
+    Param("law", REQUIRED, str, doc="how the pulley turns", choices=LAWS),
+)
+_INERTIA = Param("inertia", REQUIRED, float, "kg m^2", "moment of inertia", lo=0, lo_open=True,
+                 hi=1e3)
+_DAMPING = Param("damping", REQUIRED, float, "N m s", "rotational damping", lo=0, hi=1e6)
+LAW_PARAMS = _keys(
+    _INERTIA, _DAMPING,
+    Param("speed", REQUIRED, str, doc="speed law", choices=(*SPEED_LAWS, "table")),
+    Param("load", REQUIRED, str, doc="load torque law",
+          choices=(*TORQUE_LAWS, "constant", "table")),
+    Param("omega_final", REQUIRED, float, "rad/s", "final angular velocity", lo=-1e4, hi=1e4),
+    Param("load_torque", REQUIRED, float, "N m", "(final) load torque T_a", lo=-1e5, hi=1e5),
+    Param("t0", REQUIRED, float, "s", "start of the law", lo=0, hi=100),
+    Param("t1", REQUIRED, float, "s", "end of the law (> t0)", lo=0, lo_open=True, hi=100),
+    Table("speed_table", "rad/s", "angular velocity against time"),
+    Table("load_table", "N m", "load torque T_a against time"),
+    Vector("pivot", doc="the tensioner arm's pivot"),
+    Param("arm_inertia", REQUIRED, float, "kg m^2", "the arm's moment of inertia about the "
+          "pivot (with the pulley's mass)", lo=0, lo_open=True, hi=1e3),
+    Param("arm_stiffness", REQUIRED, float, "N m/rad", "torsion spring stiffness", lo=0,
+          lo_open=True, hi=1e7),
+    Param("arm_preload", REQUIRED, float, "N m", "the spring's moment on the arm at the given "
+          "centre (counter-clockwise positive)", lo=-1e5, hi=1e5),
+    Param("arm_damping", REQUIRED, float, "N m s", "the arm's rotational damping", lo=0, hi=1e6),
+)
+#: the keys of each pulley law (beyond PULLEY's); "speed" and "load" add SUB_KEYS
+LAW_KEYS = {"prescribed": ("speed",), "driven": ("inertia", "damping", "load"),
+            "idler": ("inertia", "damping"),
+            "tensioner": ("inertia", "damping", "pivot", "arm_inertia", "arm_stiffness",
+                          "arm_preload", "arm_damping"),
+            "fixed": ()}
+
+
+def sub_keys(law_key: str, name: str) -> tuple:
+    """The keys that the speed or load law ``name`` needs (``law_key`` "speed" or "load")."""
+    if name == "table":
+        return (f"{law_key}_table",)
+    if name == "constant":
+        return ("load_torque",)
+    return ("omega_final" if law_key == "speed" else "load_torque", "t0", "t1")
+
+
+#: each friction law's parameters (ancf.belts.friction.PARAMS), all required
+FRICTION_KEYS = {law: _keys(*(replace(q, default=REQUIRED) for q in params))
+                 for law, params in friction.PARAMS.items()}
+
+CONTACT = _keys(
+    Param("k_p", REQUIRED, float, "N/m^2", "penalty stiffness per unit length", lo=0,
+          lo_open=True, hi=1e12),
+    Param("c_p", 0.0, float, "N s/m^2", "penalty damping per unit length", lo=0, hi=1e8),
+    Param("gauss_points", 7, int, doc="contact Gauss points per element", choices=SUPPORTED_POINTS),
+)
+
+RUN = _keys(
+    Param("t_end", REQUIRED, float, "s", "simulated time", lo=0, lo_open=True, hi=100),
+    Param("dt", REQUIRED, float, "s", "time step", lo=1e-7, hi=1e-2),
+    Param("output_dt", 0.005, float, "s", "sampling interval (at most t_end)", lo=0,
+          lo_open=True, hi=10),
+    Param("steady_window", 0.1, float, "s", "averaging window before t_end (at most t_end)",
+          lo=0, lo_open=True, hi=100),
+    Param("start", "settled", str, doc="'settled': at rest on the pulleys first; 'laid': on "
+          "the wrapped path", choices=("settled", "laid")),
+    Param("rho_inf", 0.5, float, "-", "generalized-alpha spectral radius", lo=0, hi=1),
+    Param("newton_tol", 1e-7, float, "-", "Newton tolerance", lo=1e-14, hi=1e-3),
+    Param("max_steps", 400_000, int, doc="step budget", lo=1, hi=MAX_STEPS),
+)
+
+@dataclass(frozen=True)
+class PulleySpec:
+    """One pulley: name, centre (m), radius (m), side, law and the law's keys (SI units)."""
+
+    name: str
+    centre: tuple
+    radius: float
+    side: int
+    law: str
+    params: dict
+
+
+@dataclass(frozen=True)
+class DriveDescription:
+    """A validated drive: every key of every table resolved (defaults filled in; the belt
+    with both E and EA, both length and prestretch), the pulleys in running order and
+    the belt centreline's wrapped path (radius + contact_offset)."""
+
+    belt: dict
+    pulleys: tuple
+    friction: dict
+    contact: dict
+    run: dict
+    gravity: tuple
+    path: PulleyPath
+
+
+def omega_law(pulley: PulleySpec):
+    """omega(t) (rad/s, t an array of s) of a prescribed pulley."""
+    p = pulley.params
+    if p["speed"] == "table":
+        t, y = np.array(p["speed_table"]).T
+        return lambda s: np.interp(np.asarray(s, dtype=float), t, y)
+    law = SPEED_LAWS[p["speed"]]
+    return lambda s: law(s, p["omega_final"], p["t0"], p["t1"])
+
+
+def load_law(pulley: PulleySpec):
+    """T_a(t) (N m, t an array of s) of a driven pulley."""
+    p = pulley.params
+    if p["load"] == "table":
+        t, y = np.array(p["load_table"]).T
+        return lambda s: np.interp(np.asarray(s, dtype=float), t, y)
+    if p["load"] == "constant":
+        return lambda s: np.full(np.shape(s), p["load_torque"])
+    law = TORQUE_LAWS[p["load"]]
+    return lambda s: law(s, p["load_torque"], p["t0"], p["t1"])

@@ -1,0 +1,254 @@
+"""Reading a drive file: TOML (the standard library's :mod:`tomllib`) into the validated
+:class:`ancf.belts.drive_data.DriveDescription` (the keys, units and ranges are
+declared in :mod:`ancf.belts.drive_data`).
+
+``load(path, overrides)`` reads the file, applies the overrides and validates.  An
+override is ``key=value``: ``section.key=value`` (``friction.mu=1.0``,
+``contact.k_p=4e8``), ``pulleys.<index or name>.key=value`` (``pulleys.1.inertia=0.5``,
+``pulleys.driven.load=constant``) or ``gravity=[0, -9.81]``; the value is read as a TOML
+value (numbers, arrays, quoted strings) or else taken as a bare string.  Every error is
+an :class:`InputError` of one line naming the file key and its allowed range: a file
+that does not exist or is no TOML (with the line tomllib gives), an unknown key, a
+missing one, a value out of range, an unknown law or one missing a parameter, and a
+layout the belt cannot be laid on (overlapping pulleys, a pulley it cannot wrap, a belt
+shorter than half its path or longer than the path).
+"""
+from __future__ import annotations
+
+import copy
+import math
+import tomllib
+from dataclasses import replace
+from pathlib import Path
+
+from ancf.belts import drive_data as dd
+from ancf.belts.friction import LAWS as FRICTION_LAWS
+from ancf.belts.path import Pulley, PulleyPath
+from ancf.common.inputs import MAX_INTERVALS, MAX_STEPS, intervals
+from ancf.common.params import InputError, Param
+
+TOP_KEYS = ("gravity", "belt", "pulleys", "friction", "contact", "run")
+
+
+def load(path, overrides=()) -> dd.DriveDescription:
+    """The drive of the TOML file at ``path`` with ``overrides`` ("key=value") applied."""
+    return describe(override(read(path), overrides))
+
+
+def read(path) -> dict:
+    """The TOML file at ``path`` as a dict."""
+    try:
+        with Path(path).open("rb") as f:
+            return tomllib.load(f)
+    except FileNotFoundError:
+        raise InputError(f"{path}: no such file; allowed: a TOML drive file") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{path}: malformed TOML: {exc}; allowed: a TOML drive file") from None
+    except UnicodeDecodeError:
+        raise InputError(f"{path}: not UTF-8 text; allowed: a TOML drive file") from None
+    except OSError as exc:
+        raise InputError(f"{path}: cannot be read ({exc.strerror}); allowed: a readable "
+                         "TOML drive file") from None
+
+
+def _value(text: str):
+    """``text`` as a TOML value, or the bare string."""
+    try:
+        return tomllib.loads(f"v = {text}")["v"] if "\n" not in text else text
+    except tomllib.TOMLDecodeError:
+        return text
+
+
+def _pulley(data: dict, ref: str) -> dict:
+    """The pulley table of ``data`` named by index or name ``ref``."""
+    pulleys = data.get("pulleys")
+    tables = pulleys if isinstance(pulleys, list) else []
+    for i, p in enumerate(tables):
+        if isinstance(p, dict) and (ref == str(i) or ref == p.get("name")):
+            return p
+    names = [str(p.get("name")) for p in tables if isinstance(p, dict)]
+    raise InputError(f"pulleys.{ref}: no such pulley; allowed: an index 0-{len(tables) - 1} "
+                     f"or a name ({', '.join(names)})")
+
+
+def override(data: dict, items) -> dict:
+    """A copy of ``data`` with each "key=value" of ``items`` set."""
+    data = copy.deepcopy(data)
+    for item in items:
+        key, sep, text = item.partition("=")
+        parts = key.strip().split(".")
+        if not sep or not all(parts):
+            raise InputError(f"--set {item!r}: expected key=value")
+        value = _value(text.strip())
+        if len(parts) == 1:
+            data[parts[0]] = value
+        elif len(parts) == 2 and parts[0] != "pulleys":
+            section = data.setdefault(parts[0], {})
+            if not isinstance(section, dict):
+                raise InputError(f"{parts[0]}: {section!r} is not a table; allowed: a table")
+            section[parts[1]] = value
+        elif len(parts) == 3 and parts[0] == "pulleys":
+            _pulley(data, parts[1])[parts[2]] = value
+        else:
+            raise InputError(f"{key.strip()}: not a key; allowed: gravity, section.key or "
+                             "pulleys.<index or name>.key")
+    return data
+
+
+def _table(data: dict, key: str) -> dict:
+    value = data.get(key, {})
+    if not isinstance(value, dict):
+        raise InputError(f"{key}: {value!r} is not a table; allowed: a table [{key}]")
+    return value
+
+
+def _missing(key, prefix: str, why: str = "") -> InputError:
+    unit = f" {key.unit}" if getattr(key, "unit", "") else ""
+    return InputError(f"{prefix}{key.name}: missing{why}; allowed: {key.allowed()}{unit}")
+
+
+def _values(table: dict, prefix: str, keys: dict, optional=(), why: str = "") -> dict:
+    """Each of ``keys`` parsed from ``table`` (absent: its default; absent without one:
+    missing, unless ``optional``); any other key of ``table`` refused."""
+    for name in table:
+        if name not in keys:
+            raise InputError(f"{prefix}{name}: unknown key{why}; allowed: {', '.join(keys)}")
+    out = {}
+    for name, key in keys.items():
+        if name in table:
+            out[name] = replace(key, name=prefix + name).parse(table[name])
+        elif key.default is not dd.REQUIRED or name in optional:
+            out[name] = key.default
+        else:
+            raise _missing(key, prefix, why)
+    return out
+
+
+def _one_of(values: dict, prefix: str, keys: dict) -> None:
+    for a, b in dd.ONE_OF:
+        if values[a] is None and values[b] is None:
+            raise _missing(keys[a], prefix, f" (or {prefix}{b})")
+        if values[a] is not None and values[b] is not None:
+            raise InputError(f"{prefix}{a}, {prefix}{b}: both given; allowed: exactly one")
+
+
+def _belt(data: dict) -> dict:
+    belt = _values(_table(data, "belt"), "belt.", dd.BELT, optional=sum(dd.ONE_OF, ()))
+    _one_of(belt, "belt.", dd.BELT)
+    area = belt["b"] * belt["h"]
+    if belt["E"] is None:
+        belt["E"] = belt["EA"] / area
+        replace(dd.BELT["E"], name="belt.EA / (b h)").check(belt["E"])
+    else:
+        belt["EA"] = belt["E"] * area
+    return belt
+
+
+def _law_keys(table: dict, prefix: str) -> tuple:
+    """(law, the pulley's keys under that law, why) of a pulley table."""
+    law = dd.PULLEY["law"]
+    if "law" not in table:
+        raise _missing(law, prefix)
+    name = replace(law, name=prefix + "law").parse(table["law"])
+    names = list(dd.PULLEY) + list(dd.LAW_KEYS[name])
+    for sub in ("speed", "load"):
+        if sub in dd.LAW_KEYS[name] and sub in table:
+            choice = replace(dd.LAW_PARAMS[sub], name=prefix + sub).parse(table[sub])
+            names += [k for k in dd.sub_keys(sub, choice) if k not in names]
+    keys = {k: dd.PULLEY.get(k) or dd.LAW_PARAMS[k] for k in names}
+    return name, keys, f" (law {name!r}: {', '.join(names[len(dd.PULLEY):])})"
+
+
+def _pulley_spec(i: int, table) -> dd.PulleySpec:
+    prefix = f"pulleys.{i}."
+    if not isinstance(table, dict):
+        raise InputError(f"pulleys.{i}: {table!r} is not a table; allowed: a table [[pulleys]]")
+    law, keys, why = _law_keys(table, prefix)
+    v = _values(table, prefix, keys, why=why)
+    if "t1" in v and not v["t1"] > v["t0"]:
+        raise InputError(f"{prefix}t1 = {v['t1']!r} is out of range; allowed: a number > "
+                         f"t0 = {v['t0']:g} s")
+    if law == "tensioner":
+        v["arm_length"] = math.dist(v["centre"], v["pivot"])
+        if v["arm_length"] == 0:
+            raise InputError(f"{prefix}pivot = {list(v['pivot'])!r} is the pulley's centre; "
+                             "allowed: a point other than the centre")
+    params = {k: v[k] for k in v if k not in dd.PULLEY}
+    return dd.PulleySpec(v["name"], v["centre"], v["radius"], v["side"], law, params)
+
+
+def _pulleys(data: dict) -> tuple:
+    tables = data.get("pulleys")
+    count = f"{len(tables)} given" if isinstance(tables, list) else "missing or not an array"
+    if not isinstance(tables, list) or len(tables) < 2:
+        raise InputError(f"pulleys: {count}; allowed: an array of at least 2 tables [[pulleys]]")
+    pulleys = tuple(_pulley_spec(i, t) for i, t in enumerate(tables))
+    for i, p in enumerate(pulleys):
+        first = next(j for j, q in enumerate(pulleys) if q.name == p.name)
+        if first != i:
+            raise InputError(f"pulleys.{i}.name = {p.name!r} is the name of pulley {first}; "
+                             "allowed: a name used once")
+    if not any(p.law == "prescribed" for p in pulleys):
+        raise InputError("pulleys: no pulley has law = 'prescribed'; allowed: at least one "
+                         "(the driver)")
+    return pulleys
+
+
+def _path(pulleys: tuple, offset: float) -> PulleyPath:
+    """The centreline's path at radius + offset round every pulley."""
+    try:
+        return PulleyPath([Pulley(p.name, p.centre, p.radius + offset, p.side) for p in pulleys])
+    except ValueError as exc:
+        at = f" (the belt's centreline at radius + belt.contact_offset = {offset:g} m)"
+        raise InputError(f"pulleys: {exc}{at if offset else ''}") from None
+
+
+def _length(belt: dict, P: float) -> None:
+    """L0 from length or prestretch, within [P/2, P]; both keys filled in."""
+    if belt["length"] is None:
+        belt["length"] = (1.0 + belt["prestretch"]) * P
+    elif not 0.5 * P <= belt["length"] <= P:
+        raise InputError(f"belt.length = {belt['length']!r} is out of range for the wrapped "
+                         f"path ({P:.6g} m); allowed: a number in [{0.5 * P:.6g}, {P:.6g}] m "
+                         "(from half the path up to the path: a longer belt hangs slack)")
+    belt["prestretch"] = belt["length"] / P - 1.0
+
+
+def _friction(data: dict) -> dict:
+    table = _table(data, "friction")
+    law = Param("law", dd.REQUIRED, str, doc="friction law", choices=tuple(FRICTION_LAWS))
+    if "law" not in table:
+        raise _missing(law, "friction.")
+    name = replace(law, name="friction.law").parse(table["law"])
+    keys = {"law": law, **dd.FRICTION_KEYS[name]}
+    return _values(table, "friction.", keys, why=f" (law {name!r})")
+
+
+def _run(data: dict) -> dict:
+    run = _values(_table(data, "run"), "run.", dd.RUN)
+    t_end, out = run["t_end"], run["output_dt"]
+    if out > t_end or intervals(t_end, out) > MAX_INTERVALS:
+        raise InputError(f"run.output_dt = {out!r} is out of range; allowed: a number in "
+                         f"[t_end/{MAX_INTERVALS}, t_end] = [{t_end / MAX_INTERVALS:g}, "
+                         f"{t_end:g}] s")
+    if run["dt"] > out or t_end / run["dt"] > MAX_STEPS:
+        raise InputError(f"run.dt = {run['dt']!r} is out of range; allowed: a number in "
+                         f"[t_end/{MAX_STEPS}, output_dt] = [{t_end / MAX_STEPS:g}, {out:g}] s")
+    if run["steady_window"] > t_end:
+        raise InputError(f"run.steady_window = {run['steady_window']!r} is out of range; "
+                         f"allowed: a number in (0, t_end = {t_end:g}] s")
+    return run
+
+
+def describe(data: dict) -> dd.DriveDescription:
+    """The validated drive of a drive file's ``data`` (a dict as tomllib reads it)."""
+    for key in data:
+        if key not in TOP_KEYS:
+            raise InputError(f"{key}: unknown key; allowed: {', '.join(TOP_KEYS)}")
+    gravity = _values({k: data[k] for k in dd.TOP if k in data}, "", dd.TOP)["gravity"]
+    belt = _belt(data)
+    pulleys = _pulleys(data)
+    path = _path(pulleys, belt["contact_offset"])
+    _length(belt, path.length)
+    return dd.DriveDescription(belt, pulleys, _friction(data), _values(_table(data, "contact"),
+                               "contact.", dd.CONTACT), _run(data), tuple(gravity), path)

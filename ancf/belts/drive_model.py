@@ -1,0 +1,85 @@
+"""The 2D belt model of a drive file: a :class:`ancf.belts.drive_data.DriveDescription`
+as a :class:`ancf.belts.drive2d.BeltDrive` on any number of pulleys.
+
+The belt (Dufva elements) is laid on the description's wrapped path (the centreline's,
+at radius + ``belt.contact_offset``, on either side of the belt: the section's faces are
+taken symmetric about the centreline), with its reference length L0; the contact acts on
+the centreline at that radius.  Each pulley's law becomes a row of the
+:class:`ancf.belts.drive2d.Rig`: ``prescribed`` its angular velocity law, ``fixed``
+zero, ``driven`` a free pulley with its inertia, damping and load torque law, ``idler``
+a free one without load, ``tensioner`` a free one without load on an arm whose angle is
+one more free coordinate (after the pulleys', :mod:`ancf.belts.arm2d`).  A pulley on the
+belt's back (``side = -1``) is contact like any other.  The dynamics do not cover yet
+(InputError naming the key) the belt's strain-rate damping.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
+from ancf.belts.friction import PARAMS
+from ancf.belts.drive_data import DriveDescription, load_law, omega_law
+from ancf.common.params import InputError
+
+FREE = ("driven", "idler", "tensioner")
+
+
+def _unsupported(d: DriveDescription) -> None:
+    for key in ("damping_axial", "damping_bending"):
+        if d.belt[key] != 0:
+            raise InputError(f"belt.{key} = {d.belt[key]!r}: strain-rate damping is not in the "
+                             "dynamics yet; allowed: 0")
+
+
+def _zero(t):
+    return np.zeros(np.shape(t))
+
+
+def _arms(d: DriveDescription, free) -> np.ndarray:
+    """The tensioners' arm rows (ancf.belts.arm2d), their coordinates after the k free
+    pulleys'."""
+    k = int(free.max()) + 1
+    rows = []
+    for i, p in enumerate(d.pulleys):
+        if p.law == "tensioner":
+            P, c = p.params["pivot"], p.centre
+            rows.append([i, k + len(rows), P[0], P[1], p.params["arm_length"],
+                         math.atan2(c[1] - P[1], c[0] - P[0]), p.params["arm_stiffness"],
+                         p.params["arm_preload"]])
+    return np.array(rows, dtype=float).reshape(-1, 8)
+
+
+def rig(d: DriveDescription) -> Rig:
+    """The pulleys of the description as the march sees them."""
+    offset = d.belt["contact_offset"]
+    free = np.cumsum([p.law in FREE for p in d.pulleys]) - 1
+    free = np.array([j if p.law in FREE else -1 for p, j in zip(d.pulleys, free)])
+    laws = {"prescribed": omega_law, "driven": load_law}
+    chosen = [p for p in d.pulleys if p.law in FREE]
+    arms = [p for p in d.pulleys if p.law == "tensioner"]
+    return Rig(tuple(p.name for p in d.pulleys),
+               np.array([p.centre for p in d.pulleys], dtype=float),
+               np.array([p.radius + offset for p in d.pulleys]), free,
+               np.array([p.params["inertia"] for p in chosen]
+                        + [p.params["arm_inertia"] for p in arms], dtype=float),
+               np.array([p.params["damping"] for p in chosen]
+                        + [p.params["arm_damping"] for p in arms], dtype=float),
+               tuple(laws[p.law](p) if p.law in laws else _zero for p in d.pulleys),
+               _arms(d, free))
+
+
+def spec(d: DriveDescription) -> Belt2DSpec:
+    """The belt and its contact (the friction law named in the file, with its parameters)."""
+    b, c, f = d.belt, d.contact, d.friction
+    law = (f["law"], *(f[q.name] for q in PARAMS[f["law"]]))
+    return Belt2DSpec(d.path, b["length"], b["n_elements"], b["E"], b["nu"], b["rho"], b["b"],
+                      b["h"], b["ks"], b["alpha1"], b["alpha2"], b["elastic_points"], c["k_p"],
+                      c["c_p"], law, c["gauss_points"])
+
+
+def build(d: DriveDescription) -> BeltDrive:
+    """The drive's model; InputError for what the dynamics do not cover yet."""
+    _unsupported(d)
+    return BeltDrive(spec(d), rig(d), d.gravity)

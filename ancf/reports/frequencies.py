@@ -1,0 +1,314 @@
+"""Natural frequencies (issue 24 items 3 and 4): ``frequencies_chapter() -> (markdown,
+status)``.  Every number comes from :mod:`ancf.checks.frequencies` (``ancf modes`` of the
+static scenes, a ``belt2d`` run, the analytic references); the checks are pinned by
+``tests/test_frequencies.py``.
+"""
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+
+from ancf.checks import frequencies as fq  # noqa: E402
+from ancf.reports.output import markdown_table, progress, save_figure, write_csv  # noqa: E402
+
+TIMING = "timing: CPU ms"
+
+
+def _pct(e) -> str:
+    return "—" if e is None or np.isnan(e) else f"{100.0 * e:+.3g} %"
+
+
+def _ms(s) -> float:
+    return round(1e3 * s, 1)
+
+
+def _figure(name: str, text: str) -> str:
+    return f"![{text}](figures/{name}.png)\n"
+
+
+# ------------------------------------------------------------------ beams
+def _beam_figure(df: pd.DataFrame, by: str, values, column, name: str, title) -> str:
+    fig, axes = plt.subplots(2, len(values), figsize=(4.2 * len(values), 7.0), sharex=True)
+    for i, support in enumerate(fq.SUPPORTS):
+        for j, v in enumerate(values):
+            ax = axes[i, j]
+            for scheme in fq.SCHEMES:
+                d = df[(df["support"] == support) & (df["scheme"] == scheme) & (df[by] == v)]
+                ax.loglog(d["n"], np.abs(d[column(v)]), "o-", ms=3, label=scheme)
+            ax.set(title=f"{support}, {title(v)}", xlabel="elements" if i else None,
+                   ylabel="|f / f_Timoshenko − 1|" if j == 0 else None)
+            ax.grid(alpha=0.3, which="both")
+    axes[0, 0].legend(fontsize=7)
+    save_figure(fig, name)
+    return _figure(name, name.replace("_", " "))
+
+
+def _beam_table(df: pd.DataFrame, support: str) -> pd.DataFrame:
+    d = df[(df["support"] == support) & (df["L/h"] == 20)]
+    return pd.DataFrame([{"scheme": r["scheme"], "n": r["n"], "f1 Hz": r["f1 Hz"],
+                          "error f1": _pct(r["error f1"]), "f2 Hz": r["f2 Hz"],
+                          "error f2": _pct(r["error f2"]), "f3 Hz": r["f3 Hz"],
+                          "error f3": _pct(r["error f3"]), TIMING: _ms(r["timing: CPU s"])}
+                         for _, r in d.iterrows()])
+
+
+def _locking_table(df: pd.DataFrame) -> pd.DataFrame:
+    rows = []
+    for support in fq.SUPPORTS:
+        for scheme in fq.SCHEMES:
+            row = {"support": support, "scheme": scheme}
+            for s in fq.SLENDERNESS:
+                for n in (16, 64):
+                    r = df[(df["support"] == support) & (df["scheme"] == scheme)
+                           & (df["L/h"] == s) & (df["n"] == n)].iloc[0]
+                    row[f"L/h = {s}, n = {n}"] = _pct(r["error f1"])
+            rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def _err(df: pd.DataFrame, support: str, scheme: str, slenderness: float, n: int) -> float:
+    """The first frequency's relative error of one row."""
+    return float(df[(df["support"] == support) & (df["scheme"] == scheme)
+                    & (df["L/h"] == slenderness) & (df["n"] == n)]["error f1"].iloc[0])
+
+
+def _same_as_thesis(df: pd.DataFrame, scheme: str) -> float:
+    """The largest relative difference of a scheme's frequencies from the thesis scheme's."""
+    cols = [f"f{k} Hz" for k in (1, 2, 3)]
+    a = df[df["scheme"] == scheme][cols].to_numpy(float)
+    b = df[df["scheme"] == "linear, thesis"][cols].to_numpy(float)
+    ok = ~np.isnan(b)
+    return float(np.max(np.abs(a[ok] / b[ok] - 1.0)))
+
+
+def _beam_part() -> list:
+    progress("frequencies: beams (5 schemes x 2 supports x 3 slendernesses x 6 meshes)")
+    df = pd.DataFrame(fq.beam_rows(fq.SLENDERNESS))
+    write_csv(df, "frequencies_beams")
+    orders = pd.DataFrame(fq.orders(fq.beam_rows()))
+    write_csv(orders, "frequencies_beam_orders")
+    p = fq.section(fq.BEAM["L"], fq.BEAM["L"] / 20)
+    ref = {s: fq.timoshenko(s, dict(p, rho=fq.modes(s, 1, **p)["params"]["rho"]))
+           for s in fq.SUPPORTS}
+    same = max(_same_as_thesis(df, s) for s in ("linear, report-selective", "linear, report-fix"))
+    conv = _beam_figure(df[df["L/h"] == 20], "L/h", (1, 2, 3), lambda k: f"error f{k}",
+                        "frequencies_beam_convergence", lambda k: f"mode {k}")
+    lock = _beam_figure(df.assign(**{"error": df["error f1"]}), "L/h", fq.SLENDERNESS,
+                        lambda s: "error", "frequencies_beam_locking", lambda s: f"L/h = {s}")
+    return [
+        "## Beams against Timoshenko\n",
+        f"`ancf modes simply-supported` and `ancf modes cantilever`: steel, E = {p['E']:g} Pa, "
+        f"ν = {p['nu']:g}, k_s = 5/6, ρ = 7850 kg/m³ (the `ancf modes` default), L = "
+        f"{p['L']:g} m, square section h = b = L/(L/h). The first three bending modes (the "
+        "lowest with more than half their motion along y) against Timoshenko's frequency "
+        "equations (`analytic/beam_modes.py`: shear and rotary inertia), at L/h = 20 "
+        f"{', '.join(f'{x:.4g}' for x in ref['simply-supported'])} Hz simply supported and "
+        f"{', '.join(f'{x:.4g}' for x in ref['cantilever'])} Hz as a cantilever. Schemes of "
+        "the `linear` element (`integration=`) and the `omar-shabana` element (its default "
+        "scheme).\n",
+        conv,
+        "### Simply supported, L/h = 20\n", markdown_table(_beam_table(df, "simply-supported"), 5), "",
+        "### Cantilever, L/h = 20\n", markdown_table(_beam_table(df, "cantilever"), 5), "",
+        "### Convergence orders\n",
+        "Slope of log |error| over log n fitted over n = "
+        f"{', '.join(map(str, fq.ORDER_MESHES))} (L/h = 20); −2 is second order.\n",
+        markdown_table(orders, 3), "",
+        "### Locking: slender to thick\n",
+        "Error of the first frequency at 16 and 64 elements for L/h = "
+        f"{', '.join(map(str, fq.SLENDERNESS))}:\n", markdown_table(_locking_table(df)), "",
+        lock,
+        "**Reading.** The thesis scheme converges at second order from above (a consistent "
+        "mass on a conforming mesh) whatever the slenderness: it does not lock. At the "
+        "undeformed state the report's schemes (`report-selective`, `report-fix`) give the "
+        f"thesis scheme's frequencies (largest difference {same:.1e}): their 1 × 1 and "
+        "1 × 2 shear rules differ from it only in terms that vanish about the straight "
+        "reference (their differences show at large deformation, static_beams.md). Exact "
+        "integration shear-locks: its error grows with the slenderness (L/h = 100: first "
+        f"frequency {1 + _err(df, 'simply-supported', 'linear, exact', 100, 16):.2f} times "
+        "Timoshenko's at 16 elements) and its fitted order is below 2 because it is still "
+        "pre-asymptotic at 64 elements. The Omar–Shabana element converges to a limit "
+        f"{_pct(_err(df, 'simply-supported', 'omar-shabana', 20, 64))} off (L/h = 20, 64 "
+        "elements; as much at every slenderness) at ν = 0.3 "
+        "(its fitted order is near 0): Poisson locking of its continuum section (the "
+        "thickness cannot contract), which the static tables show as well.\n"]
+
+
+# ------------------------------------------------------------------ plates
+def _plate_part() -> list:
+    progress("frequencies: plates")
+    plate = pd.DataFrame(fq.plate_rows())
+    write_csv(plate, "frequencies_plate_square")
+    free = [{"n per side": n, **fq.free_ratios(n)} for n in fq.FREE_MESHES]
+    ritz, exu = fq.ritz(), fq.EXUDYN_FREE_RATIOS
+    rows = [{"source": f"ours, {r['n per side']} × {r['n per side']}",
+             **{f"mode {k + 1}": r["ratios"][k] for k in range(3)},
+             **{f"error {k + 1}": _pct(r["ratios"][k] / ritz[k] - 1.0) for k in range(3)},
+             "zero modes": r["rigid"], TIMING: _ms(r["cpu"])} for r in free]
+    rows += [{"source": "Exudyn, ANCFThinPlateTests.py", **{f"mode {k + 1}": exu[k] for k in range(3)},
+              **{f"error {k + 1}": _pct(exu[k] / ritz[k] - 1.0) for k in range(3)}},
+             {"source": f"exact: Ritz, Legendre degree {fq.RITZ_DEGREE}",
+              **{f"mode {k + 1}": ritz[k] for k in range(3)}}]
+    free_df = pd.DataFrame(rows)
+    write_csv(free_df, "frequencies_plate_free")
+    p = fq.EXUDYN_PLATE
+    return [
+        "## Simply supported square plate against Navier\n",
+        "`ancf modes plate-square` (defaults: a = 1 m, h = 0.01 m, E = 2.1e11 Pa, ν = 0.3, "
+        "ρ = 7850 kg/m³), n × n `plate36` elements, the first six frequencies against Navier's "
+        "ω_mn = π²(m² + n²)/a² √(D/(ρh)) (`analytic/plate_modes.py`; modes 2–3 and 5–6 are "
+        "the repeated pairs (1, 2), (2, 1) and (1, 3), (3, 1)); convergence from below.\n",
+        markdown_table(plate.assign(**{c: plate[c].map(_pct) for c in plate.columns
+                                       if c.startswith("error")},
+                                    **{TIMING: plate["timing: CPU s"].map(_ms)}).drop(columns="timing: CPU s"), 5),
+        "", _plate_figure(plate, free),
+        "## Free–free square plate: eigenvalue ratios (Exudyn's ANCFThinPlateTests)\n",
+        "`ancf modes plate-square --set supports=free` with Exudyn's plate (a = "
+        f"{p['a']:g} m, h = {p['h']:g} m, E = {p['E']:g} Pa, ν = {p['nu']:g}, ρ = "
+        f"{p['rho']:g} kg/m³): no coordinate fixed; its six rigid motions are the zero modes "
+        "(counted), the next three are the elastic ones, given as Exudyn's ratios "
+        "ω / (π²/a² √(D/(ρh))). Exudyn's values are the ones its test file prints as the "
+        "reference (`main/pythonDev/TestModels/ANCFThinPlateTests.py`, jgerstmayr/EXUDYN, "
+        "commit e44aca1b); the exact ones are the Rayleigh–Ritz series on Legendre "
+        "polynomials (`analytic.plate_modes.free_ratios`: complete for the free plate, "
+        "converging from above; degree 16 and 24 agree to 5e-8). Errors are against the Ritz "
+        "values.\n", markdown_table(free_df, 7), "",
+        "Exudyn's printed ratios equal the Ritz series to their last digit (the third, "
+        f"{exu[2]}, against {ritz[2]:.8f}, rounds the other way: a difference of "
+        f"{abs(exu[2] - ritz[2]):.1e}). Ours converge to them from above.\n"]
+
+
+def _plate_figure(plate: pd.DataFrame, free: list) -> str:
+    fig, (a, b) = plt.subplots(1, 2, figsize=(10, 4))
+    n = plate["n per side"].to_numpy(float)
+    for k in (1, 2, 4, 5):
+        a.loglog(n, np.abs(plate[f"error f{k}"]), "o-", ms=3, label=f"mode {k}")
+    a.set(title="simply supported vs Navier", xlabel="elements per side",
+          ylabel="|f / f_Navier − 1|")
+    nf = np.array([r["n per side"] for r in free], float)
+    for k in range(3):
+        b.loglog(nf, [r["ratios"][k] / fq.ritz()[k] - 1.0 for r in free], "o-", ms=3,
+                 label=f"elastic mode {k + 1}")
+    b.set(title="free–free vs the Ritz series", xlabel="elements per side",
+          ylabel="ratio / exact − 1")
+    for ax in (a, b):
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=8)
+    save_figure(fig, "frequencies_plates")
+    return _figure("frequencies_plates", "plate convergence")
+
+
+# ------------------------------------------------------------------ axial bar
+def _axial_part() -> list:
+    progress("frequencies: axial bar about the equilibrium")
+    df = pd.DataFrame(fq.axial_rows())
+    write_csv(df, "frequencies_axial_bar")
+    p = fq.modes("axial-bar", 1, n_elements=16)["params"]
+    PE, PG = fq.euler_load(p), fq.engesser_load(p)
+    cross = pd.DataFrame([{"n": n, "ω₁ = 0 at P / P_E": fq.euler_crossing(n),
+                           "error": _pct(fq.euler_crossing(n) - 1.0)} for n in fq.AXIAL_MESHES])
+    fig, ax = plt.subplots(figsize=(5.6, 4.2))
+    x = np.linspace(0, max(fq.AXIAL_FRACTIONS), 50)
+    ax.plot(x, 1 - x, "k--", lw=0.8, label="1 − P/P_E (Euler–Bernoulli)")
+    for n in fq.AXIAL_MESHES:
+        d = df[df["n"] == n]
+        ax.plot(d["P / P_E"], d["omega² / omega0²"], "o", ms=4, label=f"{n} elements")
+    ax.axhline(0, color="grey", lw=0.5)
+    ax.set(xlabel="compression P / P_E", ylabel="ω₁² / ω₁²(P = 0)",
+           title="Axial bar: first bending mode about the equilibrium")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    save_figure(fig, "frequencies_axial_bar")
+    return [
+        "## Axial bar: the first bending frequency about the equilibrium\n",
+        "`ancf modes axial-bar --about equilibrium --set F=−P` (defaults: L = "
+        f"{p['L']:g} m, h = b = {p['h']:g} m, E = {p['E']:g} Pa, ν = {p['nu']:g}; pinned at "
+        "both ends): the tangent at the static equilibrium under the compression P. For "
+        "the Euler–Bernoulli bar ω₁² falls linearly, ω₁²(P) = ω₁²(0)(1 − P/P_E), to zero "
+        f"at Euler's load P_E = π²EI/L² = {PE:.5g} N. The crossing load is found by Brent's "
+        "method on ω₁²(P) (signed: negative beyond the limit point).\n",
+        _figure("frequencies_axial_bar", "axial bar"), markdown_table(cross, 5), "",
+        f"Converged, the crossing sits below Euler's load by Engesser's shear correction "
+        f"P_E/(1 + P_E/(k_s G A)) = {PG:.5g} N ({_pct(PG / PE - 1.0)}) and the rest of the "
+        "continuum's finite-strain terms; 16 elements are closer to P_E only because their "
+        "discretisation stiffness offsets those.\n"]
+
+
+# ------------------------------------------------------------------ belt span
+def _belt_part() -> list:
+    progress("frequencies: belt2d spans (120 rad/s case)")
+    b = fq.belt_spans()
+    p = b["params"]
+    rows = pd.DataFrame([{"span": k, "mean tension N": b[k]["tension N"],
+                          "mean speed m/s": b[k]["speed m/s"], "length m": b[k]["length m"],
+                          "moving string f1 Hz": b[k]["string Hz"][0],
+                          "measured peak Hz": b[k]["peak Hz"], "error": _pct(b[k]["error"]),
+                          "bin width Hz": b[k]["resolution Hz"]} for k in ("tight", "slack")])
+    write_csv(rows, "frequencies_belt_spans")
+    fig, ax = plt.subplots(figsize=(7.0, 4.2))
+    for k, c in (("tight", "C0"), ("slack", "C1")):
+        amp = b[k]["amp"]
+        ax.semilogy(b[k]["f"], amp / amp.max(), color=c, lw=1, label=f"{k} span")
+        for m in b[k]["string Hz"]:
+            ax.axvline(m, color=c, ls="--", lw=0.7)
+    ax.axvline(b["passing Hz"], color="grey", ls=":", lw=1, label="element passing")
+    ax.set(xlim=(0, 500), ylim=(1e-4, 2), xlabel="frequency Hz", ylabel="|FFT| / max",
+           title="belt2d 120 rad/s: mid-span transverse motion, 0.6–1 s")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    save_figure(fig, "frequencies_belt_spans")
+    EA = p["E"] * p["b"] * p["h"]
+    return [
+        "## The running belt's spans against the axially moving string\n",
+        "The 120 rad/s case of thesis Figs 3.10–3.20 (`ancf run belt2d --set E=1e9 --set "
+        "belt_length=1.24437 --set alpha2=0.001 --set Ta_max=45 --set omega_final=120 --set "
+        f"n_elements=30 --set output_dt=0.001`; ν_s = {p['nu_s']:g}), the run of belt2d.md. "
+        "Measured: the transverse (y) position of the point where the belt crosses each span's "
+        "perpendicular bisector (`mid_tight_y_m`, `mid_slack_y_m`), sampled every 1 ms over the "
+        f"steady window {fq.SPAN_START:g}–{p['t_end']:g} s (driver speed and load torque at "
+        "their final values), its mean removed, a Hann window, the FFT zero-padded "
+        f"{fq.ZERO_PAD} times, the highest peak between {fq.SPAN_LOW:g} Hz and "
+        f"{fq.SPAN_HIGH:g} × the element passing frequency (below). Reference: "
+        "`analytic.moving_string`, f_n = n c (1 − v²/c²)/(2L), c = √(T/ρA), with ρA = "
+        f"{p['rho'] * p['b'] * p['h']:g} kg/m, L the span between the tangent points, T and v "
+        "the mean axial force and speed of the belt points in each span's middle third, "
+        "averaged over the window's 1 ms samples.\n",
+        markdown_table(rows, 5), "", _figure("frequencies_belt_spans", "belt spans"),
+        f"Both spans vibrate at their moving-string frequency, {_pct(b['tight']['error'])} "
+        f"(tight) and {_pct(b['slack']['error'])} (slack) above it, within the 5 % of the "
+        "acceptance; the belt's bending stiffness and the span ends on the penalty contact "
+        "(not a fixed guide) are what the string leaves out, not separated here. "
+        "The other peak near "
+        f"{b['passing Hz']:.4g} Hz is the element passing frequency ω₁R₁/((1 + T_tight/EA) ℓ), "
+        f"EA = {EA:g} N, ℓ the elements' reference length (its second harmonic shows too): "
+        "the polygonal mesh excites the spans. The slack span, at lower tension, has the "
+        "lower frequency and the larger motion, the observation of belt2d.md on Figs "
+        f"3.10–3.11. Run CPU time (timing): {b['timing: CPU s']:.1f} s.\n"]
+
+
+def _checks_table(checks, status) -> list:
+    df = pd.DataFrame([{"check": c.name, "value": c.value, "reference": c.reference,
+                        "difference": c.difference, "tolerance": c.tolerance, "unit": c.unit,
+                        "measure": c.measure, "status": status[c.name]} for c in checks])
+    write_csv(df, "frequencies_checks")
+    return ["## Acceptance checks\n",
+            "Computed by `ancf/checks/frequencies.py`, each tied to a test "
+            "(`tests/test_frequencies.py`, `tests/test_modes.py`; data: "
+            "`data/frequencies_checks.csv`).\n", markdown_table(df, 4), ""]
+
+
+def frequencies_chapter() -> tuple[str, dict]:
+    checks = fq.checks()
+    status = {c.name: "PASS" if c.passed else "FAIL" for c in checks}
+    parts = ["# Natural frequencies (issue 24 items 3 and 4)\n",
+             "Generated by `python -m ancf.reports`; do not edit. Frequencies by `ancf modes "
+             "SCENE` (shift-inverted, the reduced system of each static scene) and one "
+             "`belt2d` run; references computed in `analytic/`. CSV data: "
+             "`reports/data/frequencies_*.csv`. Columns marked timing are CPU times and "
+             "differ between runs.\n"]
+    parts += _beam_part() + _plate_part() + _axial_part() + _belt_part()
+    parts += _checks_table(checks, status)
+    return "\n".join(parts), status

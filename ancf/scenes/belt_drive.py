@@ -1,0 +1,169 @@
+"""A belt drive of any layout from a drive file (``ancf run belt-drive --file drive.toml``).
+
+The file (:mod:`ancf.belts.drive_file`; keys, units and ranges in
+:mod:`ancf.belts.drive_data`) becomes the 2D belt model on N pulleys
+(:mod:`ancf.belts.drive_model`), settled on its pulleys (``run.start = "settled"``) and
+marched by the compiled generalised-alpha scheme, as ``belt2d``: the thesis drive's file
+(``examples/thesis_table_3_1.toml``) gives ``belt2d``'s numbers.  ``--set
+section.key=value`` overrides a key of the file (``friction.mu=1.0``,
+``pulleys.driven.inertia=0.5``).
+
+Results: the sample times; per pulley its angular velocity and the belt's moment on it
+(the friction's, counter-clockwise positive) at every sample, and the mean angular
+velocity and the slip over ``run.steady_window`` (1 - its rim speed / the driver's, the
+driver the first prescribed pulley); per span (pulley k to k + 1) the mean axial force
+over its middle third at t_end and averaged over the samples of the steady window; the
+axial force and the speed along the belt at t_end; per tensioner its arm's angle; the run
+statistics.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ancf.belts.arm2d import BETA0, COORD, PULLEY
+from ancf.belts.contact2d import contact_forces_moving
+from ancf.belts.drive_file import load
+from ancf.belts.drive_model import build
+from ancf.belts.dynamics import BeltOptions, simulate
+from ancf.belts.post2d import sample, span_tension
+from ancf.belts.pretension import settle
+from ancf.common.params import Param
+from ancf.common.paths import REPO
+from ancf.scenes import belt_common as bc
+from ancf.scenes.base import Scene, SceneResult
+
+PROGRESS_STEPS = 20_000  # runs of at least this many steps report progress on a terminal
+DEFAULT_FILE = str(REPO / "examples" / "thesis_table_3_1.toml")
+SEP = "; "  # between the overrides in params["set"]
+
+
+def _items(p: dict) -> list:
+    return p["set"].split(SEP) if p["set"] else []
+
+
+def pulley_moments(drive, x, v, t: float) -> np.ndarray:
+    """The belt's moment (np,) on each pulley at state (x, v), time t (s), N m: the
+    contact kernel's T_p (Eq. 3.26's integral), counter-clockwise positive."""
+    E = drive.element_coords(drive.belt(x))
+    V = drive.element_coords(drive.belt(v))
+    npul, nel = drive.radii.size, E.shape[0]
+    T = np.zeros(npul)
+    o, odot = drive.moved(x, v)
+    contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, drive.omegas(t, v),
+                          drive.prm, False, np.zeros((nel, 12)), np.zeros((0, 12, 12)),
+                          np.zeros((0, 12, 12)), np.zeros((0, npul, 12)), T,
+                          np.zeros((npul, 0, 12)), np.zeros((npul, 0, 12)), np.zeros(npul))
+    return T
+
+
+def _spans(desc, drive, res, window) -> list:
+    """Per span: from, to, tension at t_end and its mean over the window's samples, N."""
+    path, R = desc.path, float(drive.radii.min())
+    ends = [path(np.array([a, b]))[0] for _, a, b in path.pieces()[1::2]]
+    names = [q.name for q in desc.pulleys]
+    last = sample(drive, res.q[-1], res.v[-1], float(res.t[-1]))
+    means = np.array([[span_tension(sample(drive, res.q[i], res.v[i], float(res.t[i]), npts=4),
+                                    e, R) for e in ends] for i in window])
+    N = len(names)
+    return [{"from": names[k], "to": names[(k + 1) % N],
+             "tension_mean_N": float(np.mean(means[:, k])),
+             "tension_N": span_tension(last, e, R)} for k, e in enumerate(ends)], last
+
+
+def _pulleys(desc, drive, res, window) -> list:
+    W = np.array([drive.omegas(float(t), v) for t, v in zip(res.t, res.v)])
+    T = np.array([pulley_moments(drive, x, v, float(t)) for x, v, t in zip(res.q, res.v, res.t)])
+    mean = W[window].mean(axis=0)
+    d = next(i for i, q in enumerate(desc.pulleys) if q.law == "prescribed")
+    rim = np.abs(mean) * drive.radii
+    slip = 1.0 - rim / rim[d] if rim[d] > 0 else np.full(rim.size, np.nan)
+    return [{"name": q.name, "omega": W[:, i].tolist(), "torque_Nm": T[:, i].tolist(),
+             "omega_mean": float(mean[i]), "slip": float(slip[i])}
+            for i, q in enumerate(desc.pulleys)]
+
+
+def _arms(drive, res, window) -> list:
+    """Per tensioner: its arm's angle (rad) at every sample and its mean over the window."""
+    out = []
+    for row in drive.rig.arms:
+        angle = row[BETA0] + res.q[:, drive.n + int(row[COORD])]
+        out.append({"name": drive.rig.names[int(row[PULLEY])], "angle_rad": angle.tolist(),
+                    "angle_mean_rad": float(angle[window].mean())})
+    return out
+
+
+def _results(desc, drive, res) -> dict:
+    window = np.flatnonzero(res.t >= res.t[-1] - desc.run["steady_window"] - 1e-12)
+    out = {"times": res.t.tolist(), "pulleys": _pulleys(desc, drive, res, window),
+           "arms": _arms(drive, res, window)}
+    spans, last = _spans(desc, drive, res, window)
+    out.update(spans=spans, belt_s_m=last.s.tolist(), axial_force_N=last.N.tolist(),
+               speed_m_s=last.speed.tolist(), penetration_max_m=float(max(last.d.max(), 0.0)))
+    return out
+
+
+def run(p: dict) -> SceneResult:
+    desc = load(p["file"], _items(p))
+    drive, r = build(desc), desc.run
+    x0, pre = settle(drive) if r["start"] == "settled" else (None, None)
+    opt = BeltOptions(dt=r["dt"], rho_inf=r["rho_inf"], newton_tol=r["newton_tol"],
+                      max_steps=r["max_steps"])
+    res = simulate(drive, bc.times(r), opt, x0=x0 if pre is None or pre.converged else None,
+                   progress=bc.progress("belt-drive", r, PROGRESS_STEPS))
+    if pre is not None and not pre.converged:
+        res.converged, res.message = False, f"pre-tension: {pre.message}"
+    results = _results(desc, drive, res) if res.converged else {
+        "times": res.t.tolist(), "pulleys": None, "arms": None, "spans": None, "belt_s_m": None,
+        "axial_force_N": None, "speed_m_s": None, "penetration_max_m": None}
+    results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
+                   contact_pairs=res.extra["contact_pairs"], total_dofs=drive.n + drive.k,
+                   pretension_iterations=0 if pre is None else pre.iterations)
+    return SceneResult(res.converged, res.message, results,
+                       extra={"result": res, "drive": drive, "description": desc})
+
+
+def warn(p: dict, res: SceneResult) -> list:
+    """A steady window reaching into a pulley law's ramp, and a penetration beyond half
+    the pre-stretch per wrap (as belt2d)."""
+    desc = res.extra.get("description")
+    if desc is None or not res.converged:
+        return []
+    out = []
+    t_end, window = desc.run["t_end"], desc.run["steady_window"]
+    ramps = [q.params["t1"] for q in desc.pulleys if "t1" in q.params]
+    if ramps and t_end - window < max(ramps):
+        out.append(f"run.steady_window = {window:g} s starts at {t_end - window:g} s, before "
+                   f"the pulley laws settle at {max(ramps):g} s: the means are not steady")
+    pre = -desc.belt["prestretch"] * desc.path.length / (2 * np.pi)
+    pen = res.results["penetration_max_m"]
+    if pre > 0 and pen > 0.5 * pre:
+        out.append(f"penetration {1e3 * pen:.2g} mm = {pen / pre:.2g} x the pre-stretch per "
+                   f"wrap ({1e3 * pre:.2g} mm): contact.k_p = {desc.contact['k_p']:g} N/m^2 is "
+                   "too soft for the pre-tension; raise it")
+    return out
+
+
+@dataclass(frozen=True)
+class FileScene(Scene):
+    """A scene whose input is a drive file and its overrides: ``resolve`` takes ``file``
+    and ``section.key`` overrides, reads and validates the file."""
+
+    def resolve(self, overrides: dict | None = None) -> dict:
+        overrides = {k: str(v) for k, v in (overrides or {}).items()}
+        path = overrides.pop("file", DEFAULT_FILE)
+        p = {"file": path, "set": SEP.join(f"{k}={v}" for k, v in overrides.items())}
+        load(p["file"], _items(p))  # InputError naming the file key
+        return p
+
+
+SCENE = FileScene(
+    "belt-drive",
+    "A belt drive of any layout from a drive file (--file drive.toml; --set section.key=value): "
+    "Dufva belt on N pulleys, penalty contact with creep-rate friction, prescribed, driven, "
+    "idler, tensioner and fixed pulleys, on the belt's inner side or its back.",
+    (Param("file", DEFAULT_FILE, str, doc="the TOML drive file (ancf run belt-drive --file)"),
+     Param("set", "", str, doc=f"the drive file's overrides applied, '{SEP}'-separated "
+           "(--set section.key=value)")),
+    run, warn=warn, swept=False)
