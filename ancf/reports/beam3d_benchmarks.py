@@ -15,7 +15,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.checks import beam3d_benchmarks as bb  # noqa: E402
-from ancf.reports.output import markdown_table, progress, save_figure, write_csv  # noqa: E402
+from ancf.reports.output import (checks_section, markdown_table, progress,  # noqa: E402
+                                 save_figure, write_csv)
 from ancf.elements.linear3d import LinearBeam3D  # noqa: E402
 from ancf.scenes import SCENES  # noqa: E402
 from ancf.scenes import beam3d_published as pub  # noqa: E402
@@ -143,17 +144,6 @@ def _continuum_text() -> str:
         "along z).\n")
 
 
-def _checks_table(checks, status) -> list:
-    df = pd.DataFrame([{"check": c.name, "value": c.value, "reference": c.reference,
-                        "difference": c.difference, "tolerance": c.tolerance, "unit": c.unit,
-                        "measure": c.measure, "status": status[c.name]} for c in checks])
-    write_csv(df, "beam3d_benchmarks_checks")
-    return ["## Acceptance checks\n",
-            "Computed by `ancf/checks/beam3d_benchmarks.py`, each tied to a test of "
-            "`tests/test_beam3d_benchmarks.py` (data: `data/beam3d_benchmarks_checks.csv`).\n",
-            markdown_table(df, 4), ""]
-
-
 def _moments_section() -> list:
     df = pd.DataFrame(bb.moment_small_deflection())
     write_csv(df, "beam3d_tip_moment")
@@ -275,5 +265,7 @@ def beam3d_benchmarks_chapter() -> tuple[str, dict]:
         "Both elements converge to the same continuum solution.\n",
         _continuum_text(),
     ]
-    parts += _checks_table(checks, status)
+    parts += checks_section(checks, status, "beam3d_benchmarks",
+                            "a test of `tests/test_beam3d_benchmarks.py`"
+                            " (data: `data/beam3d_benchmarks_checks.csv`)")
     return "\n".join(parts), status

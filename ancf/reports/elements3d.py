@@ -14,7 +14,8 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.checks import elements3d as ec  # noqa: E402
-from ancf.reports.output import markdown_table, progress, save_figure, write_csv  # noqa: E402
+from ancf.reports.output import (checks_section, markdown_table, progress,  # noqa: E402
+                                 save_figure, write_csv)
 
 
 def _plate_figure(df: pd.DataFrame) -> str:
@@ -28,17 +29,6 @@ def _plate_figure(df: pd.DataFrame) -> str:
     ax.legend()
     save_figure(fig, "elements3d_plate_convergence")
     return "![plate convergence](figures/elements3d_plate_convergence.png)\n"
-
-
-def _checks_table(checks, status) -> list:
-    df = pd.DataFrame([{"check": c.name, "value": c.value, "reference": c.reference,
-                        "difference": c.difference, "tolerance": c.tolerance, "unit": c.unit,
-                        "measure": c.measure, "status": status[c.name]} for c in checks])
-    write_csv(df, "elements3d_checks")
-    return ["## Acceptance checks\n",
-            "Computed by `ancf/checks/elements3d.py`, each tied to a test of "
-            "`tests/test_elements3d.py` (data: `data/elements3d_checks.csv`).\n",
-            markdown_table(df, 4), ""]
 
 
 def elements3d_chapter() -> tuple[str, dict]:
@@ -118,5 +108,7 @@ def elements3d_chapter() -> tuple[str, dict]:
         "**Rigid motion.** A rigid rotation about a skew axis plus a translation of the "
         "reference leaves zero strain energy and force in both elements (rows below).\n",
     ]
-    parts += _checks_table(checks, status)
+    parts += checks_section(checks, status, "elements3d",
+                            "a test of `tests/test_elements3d.py`"
+                            " (data: `data/elements3d_checks.csv`)")
     return "\n".join(parts), status

@@ -13,7 +13,8 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.checks import frequencies as fq  # noqa: E402
-from ancf.reports.output import markdown_table, progress, save_figure, write_csv  # noqa: E402
+from ancf.reports.output import (checks_section, markdown_table, progress,  # noqa: E402
+                                 save_figure, write_csv)
 
 TIMING = "timing: CPU ms"
 
@@ -289,17 +290,6 @@ def _belt_part() -> list:
         f"3.10–3.11. Run CPU time (timing): {b['timing: CPU s']:.1f} s.\n"]
 
 
-def _checks_table(checks, status) -> list:
-    df = pd.DataFrame([{"check": c.name, "value": c.value, "reference": c.reference,
-                        "difference": c.difference, "tolerance": c.tolerance, "unit": c.unit,
-                        "measure": c.measure, "status": status[c.name]} for c in checks])
-    write_csv(df, "frequencies_checks")
-    return ["## Acceptance checks\n",
-            "Computed by `ancf/checks/frequencies.py`, each tied to a test "
-            "(`tests/test_frequencies.py`, `tests/test_modes.py`; data: "
-            "`data/frequencies_checks.csv`).\n", markdown_table(df, 4), ""]
-
-
 def frequencies_chapter() -> tuple[str, dict]:
     checks = fq.checks()
     status = {c.name: "PASS" if c.passed else "FAIL" for c in checks}
@@ -310,5 +300,7 @@ def frequencies_chapter() -> tuple[str, dict]:
              "`reports/data/frequencies_*.csv`. Columns marked timing are CPU times and "
              "differ between runs.\n"]
     parts += _beam_part() + _plate_part() + _axial_part() + _belt_part()
-    parts += _checks_table(checks, status)
+    parts += checks_section(checks, status, "frequencies",
+                            "a test (`tests/test_frequencies.py`, `tests/test_modes.py`; "
+                            "data: `data/frequencies_checks.csv`)")
     return "\n".join(parts), status

@@ -63,6 +63,19 @@ def write_csv(df: pd.DataFrame, name: str) -> Path:
     return path
 
 
+def checks_section(checks, status: dict, stem: str, tied: str) -> list:
+    """The "Acceptance checks" section of a chapter: the checks of ``ancf/checks/{stem}.py``
+    (each with name, value, reference, difference, tolerance, unit, measure) and their
+    ``status``, written to ``data/{stem}_checks.csv``; ``tied``: which tests hold them."""
+    df = pd.DataFrame([{"check": c.name, "value": c.value, "reference": c.reference,
+                        "difference": c.difference, "tolerance": c.tolerance, "unit": c.unit,
+                        "measure": c.measure, "status": status[c.name]} for c in checks])
+    write_csv(df, f"{stem}_checks")
+    return ["## Acceptance checks\n",
+            f"Computed by `ancf/checks/{stem}.py`, each tied to {tied}.\n",
+            markdown_table(df, 4), ""]
+
+
 def save_figure(fig, name: str) -> Path:
     path = settings().root / "figures" / f"{name}.png"
     path.parent.mkdir(parents=True, exist_ok=True)
