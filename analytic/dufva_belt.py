@@ -25,6 +25,13 @@ k4 = ks G alpha2 I2/2, k5 = E A/2.  In the invariants ``P = a.a``,
 
 The nodal shear sine is ``s^K = -(r_x.r_y)/(|r_x| |r_y|)`` (:func:`nodal_shear_sine`).
 
+The belt's strain-rate damping (``ancf.elements.dufva2d.damping_forces``) acts on two
+strain measures of the same point variables (:func:`strain_measures`): the axial strain
+``eps = sqrt(P) - 1`` (the stretch |r_x|/|r_o,x| less one of ``ancf.belts.strains``;
+Exudyn's ANCFCable2D axial strain) and the bending strain ``kappa = k + s_x`` (the rate
+of turn of the section r_s whose square the k1 term holds; Exudyn's curvature
+``(r_x x r_xx)/|r_x|^2`` when the shear is zero).
+
 Code generated into ``ancf/elements/_dufva_generated.py``
 (``python -m analytic.dufva_belt --write``): numba functions for the value, the
 gradient and the Hessian of ``w`` in the seven point variables and of ``s^K`` in
@@ -36,7 +43,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from analytic._codegen import emit_with_derivatives, main, numba_header
+from analytic._codegen import emit, emit_with_derivatives, main, numba_header
 
 a0, a1, c0, c1, s, sx, ey = POINT = sp.symbols("a0 a1 c0 c1 s sx ey", real=True)
 K = sp.symbols("k0:6", real=True)
@@ -72,6 +79,12 @@ def nodal_shear_sine():
     return -(rx0 * ry0 + rx1 * ry1) / sp.sqrt((rx0**2 + rx1**2) * (ry0**2 + ry1**2))
 
 
+def strain_measures():
+    """(eps, kappa): the axial strain sqrt(P) - 1 and the bending strain k + s_x, 1/m."""
+    P = a0**2 + a1**2
+    return sp.sqrt(P) - 1, (a0 * c1 - a1 * c0) / P + sx
+
+
 def check() -> None:
     """The invariant density equals the vector one (ValueError otherwise)."""
     diff = sp.simplify(density_vector() - density_invariant())
@@ -94,6 +107,11 @@ def generate() -> str:
     lines += emit_with_derivatives("density", point, w, POINT, pargs)
     node = "s^K = -(r_x.r_y)/(|r_x| |r_y|) of (rx0, rx1, ry0, ry1)"
     lines += emit_with_derivatives("shear_sine", node, sk, NODAL, nargs)
+    for name, m in zip(("axial_strain", "bending_strain"), strain_measures()):
+        doc = f"{name.replace('_', ' ')} at (a0, a1, c0, c1, s, sx, ey)"
+        lines += emit(f"{name}_grad", doc + "; gradient into grad (7,)", m, POINT, pargs[:-1], 1)
+        lines += emit(f"{name}_hess", doc + "; gradient into grad (7,), Hessian into hess (7, 7)",
+                      m, POINT, pargs[:-1], 2, f"{name}_grad")
     return "\n".join(lines).rstrip() + "\n"
 
 

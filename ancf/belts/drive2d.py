@@ -181,14 +181,17 @@ class PulleyDrive:
 
 class BeltDrive(PulleyDrive):
     """The assembled model of a belt on its pulleys: a :class:`BeltSpec` (the thesis
-    drive), or a :class:`Belt2DSpec` on any path with the pulleys of ``rig`` and the
-    belt's weight under ``gravity`` (m/s^2)."""
+    drive), or a :class:`Belt2DSpec` on any path with the pulleys of ``rig``, the
+    belt's weight under ``gravity`` (m/s^2) and its strain-rate ``damping`` (dEA N s,
+    dEI N m^2 s; :func:`ancf.elements.dufva2d.damping_forces`)."""
 
     contact_state = staticmethod(contact_state)
     contact_forces = staticmethod(contact_forces)
 
-    def __init__(self, spec: Belt2DSpec, rig: Rig | None = None, gravity=(0.0, 0.0)):
+    def __init__(self, spec: Belt2DSpec, rig: Rig | None = None, gravity=(0.0, 0.0),
+                 damping=(0.0, 0.0)):
         self.spec = s = spec
+        self.strain_damping = np.array(damping, dtype=float)
         self.mesh = BeamMesh(s.belt_length, s.n_elements, SLOTS, closed=True)
         self.q0 = laid_belt(s.path, s.belt_length, s.n_elements).ravel()
         self.element = DufvaBelt2D(self.mesh.lengths, self.q0[self.mesh.dofmap],
@@ -253,6 +256,6 @@ class BeltDrive(PulleyDrive):
     def kernel(self) -> Drive2D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""
         r = self.rig
-        return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
-                       r.centres, r.radii, self.prm, r.free, r.inertia, r.damping, self.weight,
-                       r.arms)
+        return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.strain_damping,
+                       self.S0, self.w, r.centres, r.radii, self.prm, r.free, r.inertia,
+                       r.damping, self.weight, r.arms)

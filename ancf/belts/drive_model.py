@@ -9,8 +9,9 @@ the centreline at that radius.  Each pulley's law becomes a row of the
 zero, ``driven`` a free pulley with its inertia, damping and load torque law, ``idler``
 a free one without load, ``tensioner`` a free one without load on an arm whose angle is
 one more free coordinate (after the pulleys', :mod:`ancf.belts.arm2d`).  A pulley on the
-belt's back (``side = -1``) is contact like any other.  The dynamics do not cover yet
-(InputError naming the key) the belt's strain-rate damping.
+belt's back (``side = -1``) is contact like any other.  The belt's strain-rate damping
+(``damping_axial`` dEA, ``damping_bending`` dEI) acts on its axial and bending strain
+rates (:func:`ancf.elements.dufva2d.damping_forces`).
 """
 from __future__ import annotations
 
@@ -21,16 +22,8 @@ import numpy as np
 from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
 from ancf.belts.friction import PARAMS
 from ancf.belts.drive_data import DriveDescription, load_law, omega_law
-from ancf.common.params import InputError
 
 FREE = ("driven", "idler", "tensioner")
-
-
-def _unsupported(d: DriveDescription) -> None:
-    for key in ("damping_axial", "damping_bending"):
-        if d.belt[key] != 0:
-            raise InputError(f"belt.{key} = {d.belt[key]!r}: strain-rate damping is not in the "
-                             "dynamics yet; allowed: 0")
 
 
 def _zero(t):
@@ -80,6 +73,6 @@ def spec(d: DriveDescription) -> Belt2DSpec:
 
 
 def build(d: DriveDescription) -> BeltDrive:
-    """The drive's model; InputError for what the dynamics do not cover yet."""
-    _unsupported(d)
-    return BeltDrive(spec(d), rig(d), d.gravity)
+    """The drive's model."""
+    b = d.belt
+    return BeltDrive(spec(d), rig(d), d.gravity, (b["damping_axial"], b["damping_bending"]))

@@ -10,12 +10,13 @@ elements, :mod:`ancf.belts.contact2d`) and :class:`Drive3D` (of
 compile time by the record's type (:func:`drive_forces`).
 
 :func:`evaluate` returns the residual forces ``fz`` at the system state (x, v): belt
-``dU/dz - Q_c - F_g`` (band numbering of the drive's pattern; F_g the belt's weight)
+``dU/dz + Q_d - Q_c - F_g`` (band numbering of the drive's pattern; Q_d the 2D belt's
+strain-rate damping, F_g its weight)
 and, for free pulley j (pulley p with ``free[p] = j``; k of them, coordinates n + j
 their angles theta_j), ``fz[n + j] = -T_c,p + T_a,p + c_j theta_j'`` (Eq. 3.26 with
 the load torque T_a and the rotational damping c_j), and, if ``want_J``, the force
-part of the iteration matrix: band ``mat`` = bp (K - dQ_c/dz) - gp dQ_c/dz' (without
-M), border columns ``col[j]`` = -gp dQ_c/dtheta_j' and rows ``row[j]`` = -bp
+part of the iteration matrix: band ``mat`` = bp (K + dQ_d/dz - dQ_c/dz) + gp (dQ_d/dz' -
+dQ_c/dz') (without M), border columns ``col[j]`` = -gp dQ_c/dtheta_j' and rows ``row[j]`` = -bp
 dT_c,p/dz - gp dT_c,p/dz', and the corner's force part ``corner`` (k, k), diagonal:
 gp (c_j - dT_c,p/dtheta_j').  A tensioner's arm (2D, :mod:`ancf.belts.arm2d`) is one
 more coordinate psi past the free pulleys' (:func:`_combine_arms`): its pulley's centre
@@ -47,6 +48,7 @@ class Drive2D(NamedTuple):
     vidx: np.ndarray     # (nel, 12) element coordinates -> system positions
     midx: np.ndarray     # (nel, 12, 12) element matrix entries -> band storage
     element: tuple       # the Dufva elements' kernel data (DufvaBelt2D.kernel_data)
+    strain_damping: np.ndarray  # (2,) the belt's dEA N s, dEI N m^2 s (dufva2d.damping_forces)
     S0: np.ndarray       # contact points' shape functions
     w: np.ndarray        # their weights (nel, ng), m
     centres: np.ndarray  # pulley centres (2, 2), m
@@ -86,10 +88,23 @@ def drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
     raise NotImplementedError("resolved at compile time by the type of drive")
 
 
+@njit(cache=True)
+def _belt_damping(E, V, drive, want_J, g, K, Cv):
+    """The belt's strain-rate damping forces Q_d (:func:`ancf.elements.dufva2d.damping_forces`)
+    into g and dQ_d/dz into K, like the elastic forces; dQ_d/dz' is subtracted from Cv,
+    which holds dQ_c/dz' of the contact forces on the belt's other side."""
+    C = np.zeros_like(Cv)
+    dufva2d.damping_forces(E, V, drive.element, drive.strain_damping, want_J, g, K, C)
+    Cv -= C
+
+
 @implements(drive_forces, Drive2D)
 def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
-    """The tensioners' pulleys at their arms' angles (:mod:`ancf.belts.arm2d`)."""
+    """The tensioners' pulleys at their arms' angles (:mod:`ancf.belts.arm2d`); the belt's
+    strain-rate damping only if it has any."""
     dufva2d.gradient_tangent(E, drive.element, want_J, g, K)
+    if drive.strain_damping[0] != 0.0 or drive.strain_damping[1] != 0.0:
+        _belt_damping(E, V, drive, want_J, g, K, c[2])
     arms, n = drive.arms, x.size - drive.inertia.size
     o, odot, u = drive.centres.copy(), np.zeros_like(drive.centres), np.zeros((arms.shape[0], 2))
     for a in range(arms.shape[0]):

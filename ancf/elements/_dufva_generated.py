@@ -266,3 +266,120 @@ def shear_sine_hess(rx0, rx1, ry0, ry1, grad, hess):
     hess[2, 3] = hess[3, 2] = x29*(-x15*x24 + x18)
     hess[3, 3] = x29*(x26 - x3*(3*x28 - 1))
     return value
+
+
+@njit(cache=True)
+def axial_strain_grad(a0, a1, c0, c1, s, sx, ey, grad):
+    """axial strain at (a0, a1, c0, c1, s, sx, ey); gradient into grad (7,)"""
+    x0 = math.sqrt(a0**2 + a1**2)
+    x1 = 1/x0
+    grad[0] = a0*x1
+    grad[1] = a1*x1
+    grad[2] = 0
+    grad[3] = 0
+    grad[4] = 0
+    grad[5] = 0
+    grad[6] = 0
+    return x0 - 1
+
+
+@njit(cache=True)
+def axial_strain_hess(a0, a1, c0, c1, s, sx, ey, grad, hess):
+    """axial strain at (a0, a1, c0, c1, s, sx, ey); gradient into grad (7,), Hessian into hess (7, 7)"""
+    value = axial_strain_grad(a0, a1, c0, c1, s, sx, ey, grad)
+    x0 = a0**2
+    x1 = a1**2
+    x2 = x0 + x1
+    x3 = 1/math.sqrt(x2)
+    x4 = 1/x2
+    hess[0, 0] = -x3*(x0*x4 - 1)
+    hess[0, 1] = hess[1, 0] = -a0*a1/x2**(3/2)
+    hess[0, 2] = hess[2, 0] = 0
+    hess[0, 3] = hess[3, 0] = 0
+    hess[0, 4] = hess[4, 0] = 0
+    hess[0, 5] = hess[5, 0] = 0
+    hess[0, 6] = hess[6, 0] = 0
+    hess[1, 1] = -x3*(x1*x4 - 1)
+    hess[1, 2] = hess[2, 1] = 0
+    hess[1, 3] = hess[3, 1] = 0
+    hess[1, 4] = hess[4, 1] = 0
+    hess[1, 5] = hess[5, 1] = 0
+    hess[1, 6] = hess[6, 1] = 0
+    hess[2, 2] = 0
+    hess[2, 3] = hess[3, 2] = 0
+    hess[2, 4] = hess[4, 2] = 0
+    hess[2, 5] = hess[5, 2] = 0
+    hess[2, 6] = hess[6, 2] = 0
+    hess[3, 3] = 0
+    hess[3, 4] = hess[4, 3] = 0
+    hess[3, 5] = hess[5, 3] = 0
+    hess[3, 6] = hess[6, 3] = 0
+    hess[4, 4] = 0
+    hess[4, 5] = hess[5, 4] = 0
+    hess[4, 6] = hess[6, 4] = 0
+    hess[5, 5] = 0
+    hess[5, 6] = hess[6, 5] = 0
+    hess[6, 6] = 0
+    return value
+
+
+@njit(cache=True)
+def bending_strain_grad(a0, a1, c0, c1, s, sx, ey, grad):
+    """bending strain at (a0, a1, c0, c1, s, sx, ey); gradient into grad (7,)"""
+    x0 = 1/(a0**2 + a1**2)
+    x1 = x0*(a0*c1 - a1*c0)
+    x2 = 2*x1
+    grad[0] = x0*(-a0*x2 + c1)
+    grad[1] = -x0*(a1*x2 + c0)
+    grad[2] = -a1*x0
+    grad[3] = a0*x0
+    grad[4] = 0
+    grad[5] = 1
+    grad[6] = 0
+    return sx + x1
+
+
+@njit(cache=True)
+def bending_strain_hess(a0, a1, c0, c1, s, sx, ey, grad, hess):
+    """bending strain at (a0, a1, c0, c1, s, sx, ey); gradient into grad (7,), Hessian into hess (7, 7)"""
+    value = bending_strain_grad(a0, a1, c0, c1, s, sx, ey, grad)
+    x0 = a1*c0
+    x1 = a0*c1
+    x2 = a0**2
+    x3 = a1**2
+    x4 = x2 + x3
+    x5 = 1/x4
+    x6 = 4*x5*(-x0 + x1)
+    x7 = 2/x4**2
+    x8 = a0*a1
+    x9 = x7*x8
+    x10 = 2*x5
+    hess[0, 0] = x7*(x0 - 3*x1 + x2*x6)
+    hess[0, 1] = hess[1, 0] = x7*(a0*c0 - a1*c1 + x6*x8)
+    hess[0, 2] = hess[2, 0] = x9
+    hess[0, 3] = hess[3, 0] = -x5*(x10*x2 - 1)
+    hess[0, 4] = hess[4, 0] = 0
+    hess[0, 5] = hess[5, 0] = 0
+    hess[0, 6] = hess[6, 0] = 0
+    hess[1, 1] = x7*(3*x0 - x1 + x3*x6)
+    hess[1, 2] = hess[2, 1] = x5*(x10*x3 - 1)
+    hess[1, 3] = hess[3, 1] = -x9
+    hess[1, 4] = hess[4, 1] = 0
+    hess[1, 5] = hess[5, 1] = 0
+    hess[1, 6] = hess[6, 1] = 0
+    hess[2, 2] = 0
+    hess[2, 3] = hess[3, 2] = 0
+    hess[2, 4] = hess[4, 2] = 0
+    hess[2, 5] = hess[5, 2] = 0
+    hess[2, 6] = hess[6, 2] = 0
+    hess[3, 3] = 0
+    hess[3, 4] = hess[4, 3] = 0
+    hess[3, 5] = hess[5, 3] = 0
+    hess[3, 6] = hess[6, 3] = 0
+    hess[4, 4] = 0
+    hess[4, 5] = hess[5, 4] = 0
+    hess[4, 6] = hess[6, 4] = 0
+    hess[5, 5] = 0
+    hess[5, 6] = hess[6, 5] = 0
+    hess[6, 6] = 0
+    return value

@@ -29,6 +29,17 @@ The energy density per unit length and its derivatives in the point variables
 by SymPy (``analytic/dufva_belt.py`` -> ``_dufva_generated.py``); the compiled
 kernels :func:`energy` and :func:`gradient_tangent` chain them to the element
 coordinates, giving the exact gradient and the exact tangent.
+
+Strain-rate damping (:func:`damping_forces`; Exudyn's ANCFCable2D
+``physicsAxialDamping`` / ``physicsBendingDamping``): the generalised forces
+
+    Q_d = int (dEA eps' deps/de + dEI kappa' dkappa/de) dx
+
+with the axial strain ``eps = |a| - 1`` and the bending strain ``kappa = (a x c)/|a|^2 +
+s_x`` (SymPy: ``analytic/dufva_belt.py``), their rates ``eps' = deps/de e'`` and the
+same Gauss points as the elastic forces; the exact Jacobians are dQ_d/de = int dEA
+(deps/de (d2eps/de2 e')^T + eps' d2eps/de2) dx + (the same for kappa) and dQ_d/de' =
+int (dEA deps/de deps/de^T + dEI dkappa/de dkappa/de^T) dx.
 """
 from __future__ import annotations
 
@@ -164,6 +175,88 @@ def gradient_tangent(E, data, want_K, g, K):
                     Ke[b, a] = Ke[a, b]
             _add_nodal_curvature(Ke, bI, bJ, hI, hJ, wI, wJ)
             K[e] += Ke
+
+
+@njit(cache=True)
+def _measure_hessian(Jv, gm, Hm, hI, hJ, inv_l, z, Hs, HJ):
+    """Hs = d2m/de2 (nd, nd) of a point measure m with point gradient gm and Hessian Hm:
+    Jv^T Hm Jv and the nodal shear sines' Hessians hI, hJ times dm/d(s, s_x)."""
+    Hs[:] = 0.0
+    add_point_tangent(Hs, 1.0, Jv, Hm, HJ)
+    for a in range(Hs.shape[0]):
+        for b in range(a + 1, Hs.shape[0]):
+            Hs[b, a] = Hs[a, b]
+    bI = (1.0 - z) * gm[4] - inv_l * gm[5]
+    bJ = z * gm[4] + inv_l * gm[5]
+    _add_nodal_curvature(Hs, bI, bJ, hI, hJ, 0.0, 0.0)
+
+
+@njit(cache=True)
+def _add_damping(e, ww, d, Jv, gm, Hm, ve, want_J, g, K, C, hI, hJ, inv_l, z, Hs, HJ, G):
+    """A point's damping force ww d m' dm/de of the measure m (gradient gm, Hessian Hm
+    in the point variables) into g[e] and, if want_J, its Jacobians into K[e], C[e]."""
+    nd = ve.size
+    rate = 0.0
+    for a in range(nd):
+        acc = 0.0
+        for i in range(7):
+            acc += Jv[i, a] * gm[i]
+        G[a] = acc
+        rate += acc * ve[a]
+    f = ww * d
+    for a in range(nd):
+        g[e, a] += f * rate * G[a]
+    if not want_J:
+        return
+    _measure_hessian(Jv, gm, Hm, hI, hJ, inv_l, z, Hs, HJ)
+    u = np.dot(Hs, ve)
+    for a in range(nd):
+        for b in range(nd):
+            K[e, a, b] += f * (G[a] * u[b] + rate * Hs[a, b])
+            C[e, a, b] += f * G[a] * G[b]
+
+
+@njit(cache=True)
+def _point_measure(m, want_J, a0, a1, c0, c1, s, sx, gm, Hm):
+    """Gradient gm (7,) and, if want_J, Hessian Hm (7, 7) in the point variables of the
+    axial strain (m = 0) or the bending strain (m = 1)."""
+    if m == 0 and want_J:
+        gen.axial_strain_hess(a0, a1, c0, c1, s, sx, 0.0, gm, Hm)
+    elif m == 0:
+        gen.axial_strain_grad(a0, a1, c0, c1, s, sx, 0.0, gm)
+    elif want_J:
+        gen.bending_strain_hess(a0, a1, c0, c1, s, sx, 0.0, gm, Hm)
+    else:
+        gen.bending_strain_grad(a0, a1, c0, c1, s, sx, 0.0, gm)
+
+
+@njit(cache=True)
+def damping_forces(E, V, data, d, want_J, g, K, C):
+    """Add the strain-rate damping forces Q_d (nel, 12) to ``g`` (N or N m) and, if
+    ``want_J``, dQ_d/de to ``K`` and dQ_d/de' to ``C`` (nel, 12, 12) (module docstring).
+    E, V: (nel, 6, 2) coordinates and velocities; d = (dEA N s, dEI N m^2 s)."""
+    BX, BXX, xi, wq, lengths, k = data
+    nel, nq = wq.shape
+    nd = 2 * E.shape[1]
+    gI, gJ, gm = np.empty(4), np.empty(4), np.empty(7)
+    hI, hJ, Hm = np.zeros((4, 4)), np.zeros((4, 4)), np.zeros((7, 7))
+    Jv, HJ, Hs, G = np.empty((7, nd)), np.empty((7, nd)), np.empty((nd, nd)), np.empty(nd)
+    for e in range(nel):
+        sI = _nodal_shear_sine(E, e, 0, want_J, gI, hI)
+        sJ = _nodal_shear_sine(E, e, 1, want_J, gJ, hJ)
+        ve = V[e].ravel().copy()
+        inv_l = 1.0 / lengths[e]
+        for q in range(nq):
+            a0, a1, c0, c1 = _centre_line(E, BX, BXX, e, q)
+            z, ww = xi[q], wq[e, q]
+            s, sx = (1.0 - z) * sI + z * sJ, (sJ - sI) * inv_l
+            _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
+            for m in range(2):
+                if d[m] == 0.0:
+                    continue
+                _point_measure(m, want_J, a0, a1, c0, c1, s, sx, gm, Hm)
+                _add_damping(e, ww, d[m], Jv, gm, Hm, ve, want_J, g, K, C, hI, hJ, inv_l, z,
+                             Hs, HJ, G)
 
 
 class DufvaBelt2D(BeltElement):
