@@ -15,13 +15,13 @@ strain-rate damping, F_g its weight)
 and, for free pulley j (pulley p with ``free[p] = j``; k of them, coordinates n + j
 their angles theta_j), ``fz[n + j] = -T_c,p + T_a,p + c_j theta_j'`` (Eq. 3.26 with
 the load torque T_a and the rotational damping c_j), and, if ``want_J``, the force
-part of the iteration matrix: band ``mat`` = bp (K + dQ_d/dz - dQ_c/dz) + gp (dQ_d/dz' -
-dQ_c/dz') (without M), border columns ``col[j]`` = -gp dQ_c/dtheta_j' and rows ``row[j]`` = -bp
-dT_c,p/dz - gp dT_c,p/dz', and the corner's force part ``corner`` (k, k), diagonal:
-gp (c_j - dT_c,p/dtheta_j').  A tensioner's arm (2D, :mod:`ancf.belts.arm2d`) is one
-more coordinate psi past the free pulleys' (:func:`_combine_arms`): its pulley's centre
-moves with psi, so the arm gets a row, a column and corner entries with its pulley's
-coordinate.  It returns the number of element-pulley pairs the contact kernel evaluated.  bp, gp = 1, 0 or 0, 1 give df/dx and df/dv alone.
+part of the iteration matrix: band ``mat`` = bp (K + dQ_d/dz - dQ_c/dz) + gp (dQ_d/dz'
+- dQ_c/dz') (without M), border columns ``col[j]`` = -gp dQ_c/dtheta_j' and rows
+``row[j]`` = -bp dT_c,p/dz - gp dT_c,p/dz', and the corner's force part ``corner``
+(k, k), diagonal: gp (c_j - dT_c,p/dtheta_j').  A tensioner's arm (2D,
+:mod:`ancf.belts.arm2d`) is one more coordinate psi past the free pulleys'
+(:func:`_combine_arms`): its pulley's centre moves with psi, so the arm gets a row, a
+column and corner entries with its pulley's coordinate.  It returns the number of element-pulley pairs the contact kernel evaluated.  bp, gp = 1, 0 or 0, 1 give df/dx and df/dv alone.
 
 ``laws`` are the pulley laws at the evaluation time, one row per pulley: a pulley
 turned by its law (``free[p] = -1``) its angular velocity (rad/s), a free one its load
