@@ -195,12 +195,15 @@ def test_tensioner_jacobian_matches_central_differences(by, rtol):
 
 def test_serpentine_settles_to_the_steady_reference():
     """The serpentine drive (a tensioner arm on the slack span, an idler on the belt's back)
-    without the belt's strain-rate damping, 60 elements, k_p = 1e8 N/m^2, dt = 1e-4 s:
-    pulley speeds within 0.5 % (0.22 % seen, the tensioner), span tensions within 2 %
-    (1.1-1.4 % seen, all below: the penalty's penetration, 0.1 mm, shortens the path), the
-    arm within 0.5 degree of its equilibrium (0.015 degree seen), the driver's torque within
-    1 % (0.3 % seen), and the moments on idler and tensioner within 1 % of the driven
-    pulleys' (0.5 % seen)."""
+    with its belt's strain-rate damping (dEA = 0.5 N s), 60 elements, k_p = 1e8 N/m^2,
+    dt = 1e-4 s: pulley speeds within 0.5 % (0.24 % seen, the tensioner), span tensions
+    within 2 % (1.05-1.38 % seen, all below: the penalty's penetration, 0.1 mm, shortens
+    the path), the arm within 0.5 degree of its equilibrium (0.012 degree seen), the
+    driver's torque within 1 % (0.23 % seen), and the moments on idler and tensioner
+    within 2 % of the driven pulleys' (0.16 % and 1.6 % seen; their window means are of
+    a 0.1 N m rms fluctuation, mostly at twice the element-passing frequency (334 Hz),
+    sampled every 5 ms: with 0.5 ms samples 1.0 % and 0.06 %, without the damping 0.6 %
+    and 0.05 %)."""
     path = EXAMPLES / "serpentine.toml"
     out = _run({"file": str(path)})
     assert out["converged"] and out["warnings"] == []
@@ -218,4 +221,4 @@ def test_serpentine_settles_to_the_steady_reference():
     assert abs(arm["angle_mean_rad"] - ref["pulleys"][1]["arm_angle_rad"]) < np.radians(0.5)
     assert torques[0] == pytest.approx(ref["pulleys"][0]["torque_Nm"], rel=1e-2)
     driven = min(abs(torques[2]), abs(torques[4]))
-    assert abs(torques[1]) < 1e-2 * driven and abs(torques[3]) < 1e-2 * driven
+    assert abs(torques[1]) < 2e-2 * driven and abs(torques[3]) < 2e-2 * driven
