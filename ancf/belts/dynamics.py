@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ancf.belts.forces import evaluate
-from ancf.belts.system import PAIRS, belt_system
+from ancf.belts.system import PAIRS, belt_system, steps
 from ancf.solvers import banded
 from ancf.solvers.alpha_march import BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE, march
 from ancf.solvers.generalized_alpha import AlphaOptions, step_times
@@ -42,9 +42,11 @@ class BeltOptions:
 class _March:
     """The arrays of one run of the compiled march."""
 
-    def __init__(self, drive, opt: BeltOptions, ts):
+    def __init__(self, drive, opt: BeltOptions, ts, nslots: int):
         self.drive, self.opt = drive, opt
-        self.system = belt_system(drive, drive.laws(ts))
+        self.system = belt_system(drive, ts, nslots)
+        self.system.drive.z[:] = 0.0  # a friction law's state: the belt at rest on its pulleys
+        self.system.drive.h[0] = 0.0
         self.ts = ts
         self.hf = np.array([np.nan])
         self.cf = np.array(AlphaOptions(rho_inf=opt.rho_inf).coefficients())
@@ -52,7 +54,7 @@ class _March:
 
     def set_times(self, ts):
         self.ts = ts
-        self.system = self.system._replace(tabs=self.drive.laws(ts))
+        self.system = self.system._replace(tabs=self.drive.laws(ts), steps=steps(ts))
 
     def initial_acceleration(self, x, v):
         s, n, k = self.system, self.drive.n, self.drive.k
@@ -66,6 +68,12 @@ class _March:
         banded.solve(M, s.kl, piv, a[:n])
         a[n:] /= s.drive.inertia
         return a
+
+    def keep_state(self, s):
+        """The friction state (a law with a state) into output slot s."""
+        zs = self.system.zs
+        if zs.shape[0]:
+            zs[s] = self.system.drive.z[0]
 
     def run(self, st, k, k_stop, slot, out_x, out_v, limit):
         o = self.opt
@@ -97,7 +105,7 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
     n1 = drive.n + drive.k
     x = drive.state(drive.q0) if x0 is None else np.array(x0, dtype=float)
     v = np.zeros(n1) if v0 is None else np.array(v0, dtype=float)
-    m = _March(drive, opt, ts)
+    m = _March(drive, opt, ts, t_out.size)
     a0 = m.initial_acceleration(x, v)
     st = (x, v, a0, a0.copy())
     X, V = np.zeros((t_out.size, n1)), np.zeros((t_out.size, n1))
@@ -115,6 +123,7 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
                 status, k = DONE, k + 1
                 if slot[k] >= 0:
                     X[slot[k]], V[slot[k]] = st[0], st[1]
+                    m.keep_state(slot[k])
         if status != DONE:
             break
         if progress:
@@ -129,4 +138,6 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
                         newton_iterations=int(c[3]), rejected_steps=rejected,
                         cpu_time_s=time.process_time() - t0)
     res.extra["contact_pairs"] = int(c[PAIRS])
+    if m.system.zs.shape[0]:  # the friction state at the samples (a law with a state)
+        res.extra["friction_state"] = m.system.zs[:reached]
     return res
