@@ -69,28 +69,26 @@ class _March:
         a[n:] /= s.drive.inertia
         return a
 
-    def keep_state(self, s):
-        """The friction state (a law with a state) into output slot s."""
-        zs = self.system.zs
-        if zs.shape[0]:
-            zs[s] = self.system.drive.z[0]
-
     def run(self, st, k, k_stop, slot, out_x, out_v, limit):
         o = self.opt
         return march(self.ts, k, k_stop, st, self.system, self.hf, self.cf, self.count,
                      o.newton_tol, o.max_iter, limit, o.max_steps, slot, out_x, out_v)
 
 
-def _halved(m: _March, st, ta, tb, depth, limit) -> bool:
-    """Advance st from ta to tb in 2**depth equal steps (recursively on failure)."""
+def _halved(m: _March, st, ta, tb, depth, limit, s=-1, out=None) -> bool:
+    """Advance st from ta to tb in 2**depth equal steps (recursively on failure); the
+    state at tb goes to output slot s of out = (X, V) (s = -1: none), as the march keeps
+    it (and a friction law's state with it)."""
     ts_keep = m.ts
     sub = np.linspace(ta, tb, 3)
     m.set_times(sub)
     dummy = np.zeros((1, st[0].size))
-    status, k = m.run(st, 0, 2, np.full(3, -1, dtype=np.int64), dummy, dummy, limit)
+    slot = np.array([-1, -1, s], dtype=np.int64)
+    status, k = m.run(st, 0, 2, slot, *(out or (dummy, dummy)), limit)
     ok = status == DONE
     if not ok and status not in (NON_FINITE, BLOW_UP, BUDGET) and depth < m.opt.max_halvings:
-        ok = all(_halved(m, st, a, b, depth + 1, limit) for a, b in zip(sub[k:-1], sub[k + 1:]))
+        ok = all(_halved(m, st, a, b, depth + 1, limit, s if b == tb else -1, out)
+                 for a, b in zip(sub[k:-1], sub[k + 1:]))
     m.set_times(ts_keep)
     return ok
 
@@ -118,12 +116,9 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
             status, k = m.run(st, k, k_stop, slot, X, V, limit)
             if status == NEWTON_FAILED:
                 rejected += 1
-                if not _halved(m, st, ts[k], ts[k + 1], 1, limit):
+                if not _halved(m, st, ts[k], ts[k + 1], 1, limit, slot[k + 1], (X, V)):
                     break
                 status, k = DONE, k + 1
-                if slot[k] >= 0:
-                    X[slot[k]], V[slot[k]] = st[0], st[1]
-                    m.keep_state(slot[k])
         if status != DONE:
             break
         if progress:
@@ -138,6 +133,6 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
                         newton_iterations=int(c[3]), rejected_steps=rejected,
                         cpu_time_s=time.process_time() - t0)
     res.extra["contact_pairs"] = int(c[PAIRS])
-    if m.system.zs.shape[0]:  # the friction state at the samples (a law with a state)
-        res.extra["friction_state"] = m.system.zs[:reached]
+    if m.system.zs.shape[0]:  # the friction state of the samples' steps (a law with a state)
+        res.extra["friction_state"] = list(zip(m.system.zs[:reached], m.system.hs[:reached]))
     return res

@@ -54,8 +54,9 @@ class BeltSystem(NamedTuple):
     kl: int              # half-bandwidth
     tabs: np.ndarray     # pulley laws at the step times (nlaws, nts)
     steps: np.ndarray    # (nts,) the step ending at each step time, s (0 at the first)
-    zs: np.ndarray       # (nslots, ...) the friction state at the output slots (a law with
-    #                      a state; else (0, ...))
+    zs: np.ndarray       # (nslots, ...) the friction state at the start of the step that
+    #                      ended at each output slot (a law with a state; else (0, ...))
+    hs: np.ndarray       # (nslots,) that step, s
     S: np.ndarray        # work: S_zz, then its band LU
     piv: np.ndarray      # work: its pivots
     U: np.ndarray        # work: (k, n) S_zz^-1 C_j
@@ -73,8 +74,9 @@ def belt_system(drive, ts, nslots: int = 0) -> BeltSystem:
     n, k = drive.n, drive.k
     kernel = drive.kernel()
     z = kernel.z
-    zs = np.zeros((nslots if friction.has_state(kernel.prm) else 0, *z.shape[1:]))
-    return BeltSystem(kernel, drive.Mb, drive.pattern.kl, drive.laws(ts), steps(ts), zs,
+    m = nslots if friction.has_state(kernel.prm) else 0
+    return BeltSystem(kernel, drive.Mb, drive.pattern.kl, drive.laws(ts), steps(ts),
+                      np.zeros((m, *z.shape[1:])), np.zeros(m),
                       drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros((k, n)),
                       np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)), np.zeros((k, k)),
                       np.zeros(k, dtype=np.int64))
@@ -145,23 +147,25 @@ def _prepare(system, k):
 
 
 @njit(cache=True)
-def accept_state(prm, z, zs, slot):
-    """A friction law's state (a law with a state, prm): the trial z[1] becomes z[0],
-    kept in zs[slot] (slot >= 0).  Called, not inlined: writes to zs from inside an
-    inlined implementation on the struct (:func:`ancf.common.dispatch.as_struct`) were
-    lost (numba 0.68)."""
+def accept_state(prm, z, h, zs, hs, slot):
+    """A friction law's state (a law with a state, prm): the trial z[1] becomes z[0]; the
+    state the step started from and the step h[0] are kept in zs[slot], hs[slot] (slot
+    >= 0: the step's friction forces are the law's on them at the slot's x, v).  Called,
+    not inlined: writes to zs from inside an inlined implementation on the struct
+    (:func:`ancf.common.dispatch.as_struct`) were lost (numba 0.68)."""
     if friction.has_state(prm):
-        z[0] = z[1]
         if slot >= 0:
             zs[slot] = z[0]
+            hs[slot] = h[0]
+        z[0] = z[1]
 
 
 @implements(system_accept, BeltSystem)
 def _accept(system, slot):
     """The friction state: the trial state of the step's last residual (the accepted
     iterate: the belt's Newton increments are damped, evaluated where they end) becomes
-    the state; kept in output slot ``slot``."""
-    accept_state(system.drive.prm, system.drive.z, system.zs, slot)
+    the state; the step's start kept in output slot ``slot``."""
+    accept_state(system.drive.prm, system.drive.z, system.drive.h, system.zs, system.hs, slot)
 
 
 @implements(system_residual, BeltSystem)

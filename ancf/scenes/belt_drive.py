@@ -43,22 +43,21 @@ def _items(p: dict) -> list:
     return p["set"].split(SEP) if p["set"] else []
 
 
-def pulley_moments(drive, x, v, t: float, z=None) -> np.ndarray:
+def pulley_moments(drive, x, v, t: float, state=None) -> np.ndarray:
     """The belt's moment (np,) on each pulley at state (x, v), time t (s), N m: the
-    contact kernel's T_p (Eq. 3.26's integral), counter-clockwise positive; z (nel, ng,
-    np) the friction law's state at the contact points (a law with a state: the march's
-    at that sample, evaluated over a step of 0 s: sticking, the force of the step that
-    ended there; sliding, mu F_n along k_t z + d_t v)."""
+    contact kernel's T_p (Eq. 3.26's integral), counter-clockwise positive.  A friction
+    law with a state takes ``state`` = (z (nel, ng, np), h): the state at the start of the
+    step that ended at this sample and that step (s), the march's (the step's forces)."""
     E = drive.element_coords(drive.belt(x))
     V = drive.element_coords(drive.belt(v))
     npul, nel = drive.radii.size, E.shape[0]
     T = np.zeros(npul)
     o, odot = drive.moved(x, v)
-    zz = np.zeros((2, *drive.w.shape, npul))
-    if z is not None:
-        zz[0] = z
+    z, h = np.zeros((2, *drive.w.shape, npul)), 0.0
+    if state is not None:
+        z[0], h = state
     contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, drive.omegas(t, v),
-                          drive.prm, zz, 0.0, False, np.zeros((nel, 12)), np.zeros((0, 12, 12)),
+                          drive.prm, z, h, False, np.zeros((nel, 12)), np.zeros((0, 12, 12)),
                           np.zeros((0, 12, 12)), np.zeros((0, npul, 12)), T,
                           np.zeros((npul, 0, 12)), np.zeros((npul, 0, 12)), np.zeros(npul))
     return T
@@ -80,9 +79,9 @@ def _spans(desc, drive, res, window) -> list:
 
 def _pulleys(desc, drive, res, window) -> list:
     W = np.array([drive.omegas(float(t), v) for t, v in zip(res.t, res.v)])
-    zs = res.extra.get("friction_state", [None] * res.t.size)
+    states = res.extra.get("friction_state", [None] * res.t.size)
     T = np.array([pulley_moments(drive, x, v, float(t), z)
-                  for x, v, t, z in zip(res.q, res.v, res.t, zs)])
+                  for x, v, t, z in zip(res.q, res.v, res.t, states)])
     mean = W[window].mean(axis=0)
     d = next(i for i, q in enumerate(desc.pulleys) if q.law == "prescribed")
     rim = np.abs(mean) * drive.radii
