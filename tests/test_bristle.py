@@ -23,7 +23,7 @@ from ancf.solvers.alpha_march import DONE, NEWTON_FAILED
 from test_contact import CASES, ROUND_MARGIN, _fd_state, _outputs
 
 THREAD = REPO / "examples" / "thread_benchmark.toml"
-KT, DT, MU = 4e8, 5758.0, 0.5           # THREAD's bristle per unit length (the example file)
+KT, DT, MU = 4e8, 25749.6, 0.5          # THREAD's bristle per unit length (the example file)
 STEP = 5e-5                              # s, THREAD's step
 H, RTOL, EPS = 1e-6, 1e-6, np.finfo(float).eps
 

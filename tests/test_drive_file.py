@@ -95,6 +95,13 @@ def test_thread_example_has_the_benchmark_numbers():
     tau = np.where(t < 1, 0.0, np.where(t < 1.5, step, 25))
     assert dd.load_law(driven)(t) == pytest.approx(tau, abs=1e-12)
     assert d.gravity == (0.0, -9.81) and driven.params["damping"] == 2.0
+    # the bristle per unit length: 5e9 N/m^3 x b, and 10 sqrt(1e8 N/m^3 b rho A) (the stored
+    # base solution's per-segment values over its segment 0.4 pi / 960 m)
+    rho_A = d.belt["rho"] * b * h
+    assert d.friction["stiffness"] == pytest.approx(5e9 * b, rel=1e-14)
+    assert d.friction["damping"] == pytest.approx(10 * math.sqrt(1e8 * b * rho_A), rel=1e-5)
+    assert d.friction["damping"] == pytest.approx(33.70609928242229 / (0.4 * math.pi / 960),
+                                                  rel=1e-5)
 
 
 def test_serpentine_example_tensioner_balances_the_laid_belt():
