@@ -45,7 +45,8 @@ class _March:
     def __init__(self, drive, opt: BeltOptions, ts, nslots: int):
         self.drive, self.opt = drive, opt
         self.system = belt_system(drive, ts, nslots)
-        self.system.drive.z[:] = 0.0  # a friction law's state: the belt at rest on its pulleys
+        if self.system.drive.z is not None:  # a friction law's state: the belt at rest
+            self.system.drive.z[:] = 0.0
         self.system.drive.h[0] = 0.0
         self.ts = ts
         self.hf = np.array([np.nan])

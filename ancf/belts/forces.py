@@ -58,7 +58,7 @@ class Drive2D(NamedTuple):
     weight: np.ndarray   # (n,) the belt's weight as generalised forces F_g, N
     arms: np.ndarray     # (na, 8) tensioner arms (ancf.belts.arm2d), their psi coordinates j
     z: np.ndarray        # (2, nel, ng, np) friction state per contact point, m: [0] at the
-    #                      last converged step, [1] the trial (a law with a state only)
+    #                      last converged step, [1] the trial (a law with a state; else None)
     h: np.ndarray        # (1,) the step the trial state is of, s (the march's)
 
 
@@ -78,7 +78,7 @@ class Drive3D(NamedTuple):
     damping: np.ndarray
     weight: np.ndarray   # (n,)
     arms: np.ndarray     # (0, 8): no tensioner arms in 3D
-    z: np.ndarray        # (2, 0, 0, 0): no friction law with a state in 3D
+    z: None              # no friction law with a state in 3D
     h: np.ndarray        # (1,)
     axes: np.ndarray     # pulley axes (2, 3)
     shift: np.ndarray    # direction the driver is moved in (3,)

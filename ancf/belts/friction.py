@@ -34,8 +34,10 @@ row's derivatives and that the dispatch reaches it.
 A law with a state per contact point (:data:`STATE_LAWS`: the bristle law, a spring
 whose deflection z is carried from step to step) takes z0 (the state at the last
 converged step) and the step h, and gives the trial state z1; the planar kernel
-(:mod:`ancf.belts.contact2d`) calls every law through :func:`state_force` and
-:func:`state_chain`, and the march makes z1 the new z0 when a step converges
+(:mod:`ancf.belts.contact2d`) of a drive that carries a state calls every law through
+:func:`state_force` and :func:`state_chain` (one that does not, compiled without the
+state, calls :func:`force` and :func:`chain`: the stateless laws' code and cost), and the
+march makes z1 the new z0 when a step converges
 (:func:`ancf.solvers.alpha_march.system_accept`).
 """
 from __future__ import annotations
@@ -269,7 +271,7 @@ def _has_state(prm):
 @njit(cache=True, inline="always")
 def force(v, s, Fn, prm, f):
     """The force of the law whose code is prm[2] (a row of LAWS: every row is a branch
-    here, tests/test_friction.py)."""
+    here, tests/test_friction.py; a law with a state is :func:`state_force`'s)."""
     if prm[2] == _CREEP_RATE:
         return creep_rate_force(v, s, Fn, prm, f)
     return coulomb_force(v, s, Fn, prm, f)

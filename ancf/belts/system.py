@@ -73,10 +73,9 @@ def belt_system(drive, ts, nslots: int = 0) -> BeltSystem:
     friction state (a law with a state) at ``nslots`` output slots."""
     n, k = drive.n, drive.k
     kernel = drive.kernel()
-    z = kernel.z
-    m = nslots if friction.has_state(kernel.prm) else 0
+    shape = (0, 0, 0, 0) if kernel.z is None else (nslots, *kernel.z.shape[1:])
     return BeltSystem(kernel, drive.Mb, drive.pattern.kl, drive.laws(ts), steps(ts),
-                      np.zeros((m, *z.shape[1:])), np.zeros(m),
+                      np.zeros(shape), np.zeros(shape[0]),
                       drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros((k, n)),
                       np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)), np.zeros((k, k)),
                       np.zeros(k, dtype=np.int64))
@@ -148,11 +147,13 @@ def _prepare(system, k):
 
 @njit(cache=True)
 def accept_state(prm, z, h, zs, hs, slot):
-    """A friction law's state (a law with a state, prm): the trial z[1] becomes z[0]; the
-    state the step started from and the step h[0] are kept in zs[slot], hs[slot] (slot
-    >= 0: the step's friction forces are the law's on them at the slot's x, v).  Called,
-    not inlined: writes to zs from inside an inlined implementation on the struct
-    (:func:`ancf.common.dispatch.as_struct`) were lost (numba 0.68)."""
+    """A friction law's state (a law with a state, prm; z None: none): the trial z[1]
+    becomes z[0]; the state the step started from and the step h[0] are kept in zs[slot],
+    hs[slot] (slot >= 0: the step's friction forces are the law's on them at the slot's
+    x, v).  Called, not inlined: writes to zs from inside an inlined implementation on the
+    struct (:func:`ancf.common.dispatch.as_struct`) were lost (numba 0.68)."""
+    if z is None:
+        return
     if friction.has_state(prm):
         if slot >= 0:
             zs[slot] = z[0]
