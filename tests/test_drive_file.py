@@ -4,7 +4,6 @@ numbers, the serpentine drive's tensioner in balance), overrides, the laws a des
 turns into, and every bad input as one line naming the file key and its allowed range."""
 from __future__ import annotations
 
-import copy
 import math
 
 import numpy as np
@@ -23,13 +22,6 @@ from ancf.scenes import belt2d, belt_common
 EXAMPLES = REPO / "examples"
 THESIS, THREAD, SERPENTINE = (EXAMPLES / f"{n}.toml" for n in
                               ("thesis_table_3_1", "thread_benchmark", "serpentine"))
-
-
-def _creep_rate(data: dict, mu: float) -> dict:
-    """``data`` with its friction replaced by the creep-rate law (Table 3.1's nu_s)."""
-    out = copy.deepcopy(data)
-    out["friction"] = {"law": "creep-rate", "mu": mu, "nu_s": 1e5}
-    return out
 
 
 # ------------------------------------------------------------------ the examples
@@ -67,23 +59,28 @@ def test_thesis_example_is_belt2d_defaults_key_for_key():
     assert isinstance(spec, BeltSpec)
 
 
-def test_thread_example_names_a_friction_law_not_yet_there():
-    with pytest.raises(InputError) as exc:
-        load(THREAD)
-    assert str(exc.value) == ("friction.law = 'bristle' is out of range; allowed: one of "
-                              + ", ".join(friction.LAWS))
+def test_thread_example_names_the_bristle_law_and_reaches_the_kernel_with_it():
+    """The file's [friction] is the bristle law with its point law's parameters in order;
+    the model's prm carries its code and values, and its belt the state per contact
+    point (element, Gauss point, pulley) the march steps (tests/test_bristle.py)."""
+    from ancf.belts.drive_model import build
+    d = load(THREAD, ["belt.damping_axial=0"])
     keys = [k for k in read(THREAD)["friction"] if k != "law"]
-    assert keys == [q.name for q in friction.STATE_PARAMS["bristle"]]  # its point law's
+    assert keys == [q.name for q in friction.STATE_PARAMS["bristle"]]
+    drive = build(d)
+    f, c = d.friction, d.contact
+    assert np.array_equal(drive.prm, friction.contact_vector(
+        c["k_p"], c["c_p"], "bristle", f["mu"], f["stiffness"], f["damping"]))
+    assert friction.has_state(drive.prm)
+    assert drive.kernel().z.shape == (2, d.belt["n_elements"], c["gauss_points"], 2)
 
 
 def test_thread_example_has_the_benchmark_numbers():
-    """With the creep-rate law in place of the bristle law the file is valid, and its
-    typed numbers give the benchmark's: the path at radius 0.09995 + 5e-5 m is 0.4 pi m,
+    """The file's typed numbers give the benchmark's: the path at radius 0.09995 + 5e-5 m is 0.4 pi m,
     the stress-free belt 0.38 pi m, E = 1e7 Pa, EI = 4/3e-3 N m^2, the driver ramps to
     12 rad/s over 0.05-0.6 s and the load is 25 (0.5 - 0.5 cos 2 pi (t - 1)) N m on
     1-1.5 s, 25 N m after (THREAD's description, its Eqs for omega_P1 and tau_P2)."""
-    data = read(THREAD)
-    d = describe(_creep_rate(data, data["friction"]["mu"]))
+    d = load(THREAD)
     driver, driven = d.pulleys
     assert driven.centre == (0.1 * math.pi, 0.0)
     assert d.path.length == pytest.approx(0.4 * math.pi, rel=1e-14)
@@ -98,6 +95,13 @@ def test_thread_example_has_the_benchmark_numbers():
     tau = np.where(t < 1, 0.0, np.where(t < 1.5, step, 25))
     assert dd.load_law(driven)(t) == pytest.approx(tau, abs=1e-12)
     assert d.gravity == (0.0, -9.81) and driven.params["damping"] == 2.0
+    # the bristle per unit length: 5e9 N/m^3 x b, and 10 sqrt(1e8 N/m^3 b rho A) (the stored
+    # base solution's per-segment values over its segment 0.4 pi / 960 m)
+    rho_A = d.belt["rho"] * b * h
+    assert d.friction["stiffness"] == pytest.approx(5e9 * b, rel=1e-14)
+    assert d.friction["damping"] == pytest.approx(10 * math.sqrt(1e8 * b * rho_A), rel=1e-5)
+    assert d.friction["damping"] == pytest.approx(33.70609928242229 / (0.4 * math.pi / 960),
+                                                  rel=1e-5)
 
 
 def test_serpentine_example_tensioner_balances_the_laid_belt():
@@ -120,7 +124,10 @@ def test_serpentine_example_tensioner_balances_the_laid_belt():
 
 
 def test_every_friction_law_declares_its_parameters():
-    assert set(dd.FRICTION_KEYS) == set(friction.PARAMS) == set(friction.LAWS)
+    assert set(friction.PARAMS) == set(friction.LAWS)
+    assert set(friction.STATE_PARAMS) == set(friction.STATE_LAWS)
+    assert set(dd.FRICTION_KEYS) == set(friction.ALL_PARAMS) == \
+        set(friction.LAWS) | set(friction.STATE_LAWS)
 
 
 def test_the_friction_law_a_file_names_reaches_the_kernel():
@@ -228,8 +235,10 @@ BAD = [  # (overrides, or an edit of the thesis file's data; the one line it giv
      "ramp, table"),
     (["pulleys.1.load=jump"], "pulleys.1.load = 'jump' is out of range; allowed: one of "
      "cosine-ramp, cosine-step, constant, table"),
-    (["friction.law=bristle"], "friction.law = 'bristle' is out of range; allowed: one of "
-     "creep-rate"),
+    (["friction.law=lugre"], "friction.law = 'lugre' is out of range; allowed: one of "
+     "creep-rate, coulomb, bristle"),
+    (["friction.law=bristle"], r"friction.nu_s: unknown key \(law 'bristle'\); allowed: law, "
+     "mu, stiffness, damping"),
     (_without(("friction", "mu")), r"friction.mu: missing \(law 'creep-rate'\); allowed: a "
      r"number in \[0, 10\] -"),
     (_without(("friction", "law")), "friction.law: missing; allowed: one of creep-rate"),

@@ -123,7 +123,7 @@ def test_contact_vector_refuses_an_unknown_law_or_wrong_count():
 
 
 # ------------------------------------------------------------------ the bristle point law
-K_T, D_T, STEP = 4e8, 5758.0, 2e-5  # THREAD's bristle (per unit length), a step, s
+K_T, D_T, STEP = 4e8, 5758.0, 2e-5  # a bristle (THREAD's k_t per unit length), a step, s
 
 
 def _bristle_prm(kt=K_T, dt=D_T):

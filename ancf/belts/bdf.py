@@ -19,6 +19,7 @@ import numpy as np
 from scipy.integrate import BDF
 
 from ancf.solvers import banded
+from ancf.belts import friction
 from ancf.belts.forces import evaluate
 from ancf.solvers.result import DynamicResult
 
@@ -26,6 +27,10 @@ from ancf.solvers.result import DynamicResult
 class _FirstOrder:
     def __init__(self, drive):
         self.d, self.drive, self.n, self.k = drive, drive.kernel(), drive.n, drive.k
+        if friction.has_state(self.drive.prm):
+            raise ValueError("a friction law with a state per contact point steps with the "
+                             "generalised-alpha march only; allowed with BDF: "
+                             + ", ".join(friction.LAWS))
         self.kl = drive.pattern.kl
         self.M = drive.Mb.copy()
         self.piv = np.zeros(self.n, dtype=np.int64)

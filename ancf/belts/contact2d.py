@@ -29,7 +29,12 @@ slope nu_s (kg/(m s) = N s/m^2), through zero, and saturates at the Coulomb valu
 mu |f_n| for |v_t| > mu F_n / nu_s; the three lines are -mu F_n, -nu_s v_t and
 +mu F_n.  The law (the tri-linear one, or another) is :mod:`ancf.belts.friction`'s, on
 v = [v_t]; this module supplies the geometry and the chain rule.  The surface speed of
-the pulley is omega R, as written in Eq 3.25 (R, not |r - o|).
+the pulley is omega R, as written in Eq 3.25 (R, not |r - o|).  A law with a state (the
+bristle law) steps its deflection z at every Gauss point on every pulley over the
+march's step h: the kernel reads z[0] (the last converged step's) and writes the trial
+z[1] (0 out of contact), which the march accepts on convergence
+(:mod:`ancf.belts.system`); a drive without a state passes z = None and gets the kernel
+compiled without it.
 
 Generalised force (Eq 3.27) and pulley moment (Eq 3.26 integrand; the normal force
 passes through the centre and has no moment), Gauss quadrature over each element:
@@ -91,10 +96,43 @@ def _may_touch(E, e, l, o0, o1, R):
 
 
 @njit(cache=True)
-def _point_law(a0, a1, v0, v1, R, om, prm, f):
-    """Contact law at one point, r - o = a (m), rdot = v0, v1 (m/s).  Returns |r - o|, d,
+def _trial_storage(z):
+    """The trial state's storage (1,) at a point; None for a drive without a friction
+    state (z None: the kernels are then compiled without it, the stateless laws' code)."""
+    if z is None:
+        return None
+    return np.zeros(1)
+
+
+@njit(cache=True)
+def _state_at(z, e, g, p, z1):
+    """The friction state z0 (m) at point g of element e on pulley p (0 without one); its
+    trial reset."""
+    if z is None:
+        return 0.0
+    z1[0] = 0.0
+    return z[0, e, g, p]
+
+
+@njit(cache=True)
+def _keep_trial(z, e, g, p, z1):
+    if z is not None:
+        z[1, e, g, p] = z1[0]
+
+
+@njit(cache=True)
+def _clear_trials(z, e, p):
+    if z is not None:
+        z[1, e, :, p] = 0.0
+
+
+@njit(cache=True)
+def _point_law(a0, a1, v0, v1, R, om, prm, f, z0, h, z1):
+    """Contact law at one point, r - o = a (m), rdot = v0, v1 (m/s), the friction law's
+    state z0 (m) at the last converged step and the step h (s).  Returns |r - o|, d,
     F_n, v_t and the friction law's branch (0 out of contact or clamped); fills
-    f = [phi] (1,)."""
+    f = [phi] (1,) and, for a law with a state in contact, z1 = [its trial state] (1,);
+    z1 None: a stateless law (:func:`ancf.belts.friction.force`)."""
     kp, cp = prm[0], prm[1]
     rho = np.hypot(a0, a1)
     n0, n1 = a0 / rho, a1 / rho
@@ -104,21 +142,27 @@ def _point_law(a0, a1, v0, v1, R, om, prm, f):
     Fn = kp * d - cp * (n0 * v0 + n1 * v1) if d >= 0.0 else 0.0
     if Fn <= 0.0:
         return rho, d, 0.0, vt, 0
-    return rho, d, Fn, vt, friction.force((vt,), abs(vt), Fn, prm, f)
+    if z1 is None:
+        return rho, d, Fn, vt, friction.force((vt,), abs(vt), Fn, prm, f)
+    return rho, d, Fn, vt, friction.state_force((vt,), abs(vt), Fn, prm, f, (z0,), h, z1)
 
 
 @njit(cache=True)
-def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D):
+def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D, z0, h, z1):
     """D (3, 5): derivatives of (f_0, f_1, tau = -phi |r - o|) with respect to
-    (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0); G (1, 5) the
-    derivatives of v_t, Dphi (1, 5) those of phi (scratch)."""
+    (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0; the friction state
+    z0 and the step h fixed; z1 None: a stateless law); G (1, 5) the derivatives of v_t,
+    Dphi (1, 5) those of phi (scratch)."""
     kp, cp = prm[0], prm[1]
     n0, n1 = a0 / rho, a1 / rho
     t0, t1 = -n1, n0
     vn, vtt = n0 * v0 + n1 * v1, t0 * v0 + t1 * v1
     gF = (-kp * n0 - cp * vtt / rho * t0, -kp * n1 - cp * vtt / rho * t1, -cp * n0, -cp * n1, 0.0)
     G[0, 0], G[0, 1], G[0, 2], G[0, 3], G[0, 4] = -vn / rho * t0, -vn / rho * t1, t0, t1, -R
-    friction.chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi)
+    if z1 is None:
+        friction.chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi)
+    else:
+        friction.state_chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi, (z0,), h)
     n, t = (n0, n1), (t0, t1)
     for c in range(5):
         gphi = Dphi[0, c]
@@ -161,13 +205,15 @@ def _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw):
 @njit(cache=True)
 def contact_forces(E, V, S0, w, centres, radii, omegas, prm, want_J,
                    Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
-    """:func:`contact_forces_moving` with the pulley centres at rest."""
+    """:func:`contact_forces_moving` with the pulley centres at rest and a friction law's
+    state zero (over a step of 0 s)."""
+    z = np.zeros((2, w.shape[0], w.shape[1], radii.shape[0]))
     return contact_forces_moving(E, V, S0, w, centres, np.zeros_like(centres), radii, omegas,
-                                 prm, want_J, Q, Kq, Cv, Qw, T, dTq, dTv, dTw)
+                                 prm, z, 0.0, want_J, Q, Kq, Cv, Qw, T, dTq, dTv, dTw)
 
 
 @njit(cache=True)
-def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, want_J,
+def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, want_J,
                           Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
     """Add the contact forces of every element on every pulley.
 
@@ -176,7 +222,10 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, want_J
     velocities odot (np, 2) m/s (rdot - odot enters the law: the point's velocity
     relative to the centre), radii (np,) m, omegas (np,) rad/s; prm = [k_p N/m^2,
     c_p N s/m^2, the friction law's code and parameters]
-    (:func:`ancf.belts.friction.contact_vector`).
+    (:func:`ancf.belts.friction.contact_vector`); z (2, nel, ng, np) the friction law's
+    state at every contact point (m): z[0] at the last converged step, z[1] filled with
+    the trial state of the step of h (s) (0 out of contact); None for a stateless law
+    (compiled without it).
     Adds Q (nel, 12) N and T (np,) N m and, if ``want_J``, their exact derivatives on the
     active branch: Kq, Cv (nel, 12, 12) dQ/de, dQ/dedot; Qw (nel, np, 12) dQ/domega_p;
     dTq, dTv (np, nel, 12) dT_p/de, dT_p/dedot; dTw (np,) dT_p/domega_p.  Returns the
@@ -184,7 +233,7 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, want_J
     """
     nel, ng = w.shape
     D, Dphi, G = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5))
-    f = np.zeros(1)
+    f, z1 = np.zeros(1), _trial_storage(z)
     pairs = 0
     for e in range(nel):
         l = 0.0
@@ -193,13 +242,17 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, want_J
         for p in range(radii.shape[0]):
             o0, o1, R = centres[p, 0], centres[p, 1], radii[p]
             if not _may_touch(E, e, l, o0, o1, R):
+                _clear_trials(z, e, p)
                 continue
             pairs += 1
             for g in range(ng):
                 r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
                 a0, a1 = r0 - o0, r1 - o1
                 v0, v1 = v0 - odot[p, 0], v1 - odot[p, 1]
-                rho, _, Fn, vt, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, f)
+                z0 = _state_at(z, e, g, p, z1)
+                rho, _, Fn, vt, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, f, z0,
+                                                    h, z1)
+                _keep_trial(z, e, g, p, z1)
                 if Fn <= 0.0:
                     continue
                 ww, phi = w[e, g], f[0]
@@ -211,7 +264,7 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, want_J
                 T[p] -= ww * phi * rho
                 if want_J:
                     _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi,
-                                    D)
+                                    D, z0, h, z1)
                     _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw)
     return pairs
 
@@ -229,14 +282,16 @@ def contact_state_moving(E, V, S0, centres, odot, radii, omegas, prm):
 
     Returns ``r`` (nel, ng, 2) centreline positions, m, and, each (nel, ng, np):
     penetration ``d`` (m, negative out of contact), normal force ``F_n`` (N/m),
-    friction ``phi`` along t (N/m, signed) and sliding velocity ``v_t`` (m/s).
+    friction ``phi`` along t (N/m, signed) and sliding velocity ``v_t`` (m/s).  A
+    friction law with a state is evaluated at state 0 over a step of 0 s (its damper
+    alone): its state is known at the march's contact Gauss points only.
     """
     nel, ng = S0.shape[0], S0.shape[1]
     npul = radii.shape[0]
     r = np.zeros((nel, ng, 2))
     d, Fn = np.zeros((nel, ng, npul)), np.zeros((nel, ng, npul))
     phi, vt = np.zeros((nel, ng, npul)), np.zeros((nel, ng, npul))
-    f = np.zeros(1)
+    f, z1 = np.zeros(1), np.zeros(1)
     for e in range(nel):
         for g in range(ng):
             r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
@@ -244,6 +299,6 @@ def contact_state_moving(E, V, S0, centres, odot, radii, omegas, prm):
             for p in range(npul):
                 _, dd, F, vtp, _ = _point_law(r0 - centres[p, 0], r1 - centres[p, 1],
                                               v0 - odot[p, 0], v1 - odot[p, 1], radii[p],
-                                              omegas[p], prm, f)
+                                              omegas[p], prm, f, 0.0, 0.0, z1)
                 d[e, g, p], Fn[e, g, p], phi[e, g, p], vt[e, g, p] = dd, F, f[0], vtp
     return r, d, Fn, phi, vt

@@ -59,7 +59,7 @@ class Belt2DSpec(DriveSpec):
     nx: int                     # Gauss points of the elastic forces per element
     k_p: float                  # penalty stiffness per unit length, N/m^2
     c_p: float                  # penalty damping per unit length, N s/m^2
-    friction: tuple             # (law, its parameters): a row of ancf.belts.friction.PARAMS
+    friction: tuple             # (law, its parameters): a row of ancf.belts.friction.ALL_PARAMS
     gauss_points: int           # contact Gauss points per element (5, 7, 11)
 
 
@@ -211,6 +211,9 @@ class BeltDrive(PulleyDrive):
             self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
             rig = thesis_rig(s, self.omega_driver, self.torque)
         self.rig = rig
+        self.z = (np.zeros((2, *self.w.shape, rig.radii.size))  # Drive2D.z
+                  if friction.has_state(self.prm) else None)
+        self.h = np.zeros(1)
 
     def _weight(self, gravity) -> np.ndarray:
         """The belt's weight as global generalised forces, N: the consistent mass times
@@ -258,4 +261,4 @@ class BeltDrive(PulleyDrive):
         r = self.rig
         return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.strain_damping,
                        self.S0, self.w, r.centres, r.radii, self.prm, r.free, r.inertia,
-                       r.damping, self.weight, r.arms)
+                       r.damping, self.weight, r.arms, self.z, self.h)

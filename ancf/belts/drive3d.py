@@ -106,6 +106,10 @@ class Belt3DDrive(PulleyDrive):
                 np.zeros(self.pattern.n), self.Mb, True)
         self.S0, self.w = contact_points3d(self.lengths, np.full(n, s.width), s.contact_points)
         self.axes = np.array([AXIS, AXIS])
+        if s.friction[0] in friction.STATE_LAWS:
+            raise ValueError(f"friction law {s.friction[0]!r}: its state per contact point is "
+                             "carried by the 2D drive only; allowed in 3D: "
+                             + ", ".join(friction.LAWS))
         self.prm = friction.contact_vector(s.k_p, s.c_p, *s.friction)
         self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
         self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
@@ -150,4 +154,5 @@ class Belt3DDrive(PulleyDrive):
         r = self.rig
         return Drive3D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
                        r.centres, r.radii, self.prm, r.free, r.inertia, r.damping,
-                       np.zeros(self.n), r.arms, self.axes, SHIFT.copy())
+                       np.zeros(self.n), r.arms, None, np.zeros(1), self.axes,
+                       SHIFT.copy())

@@ -27,8 +27,9 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   pulley's running direction (Eq. 3.26 with -T_a; counter-clockwise on the belt's inner
   side, clockwise on its back); a table is ``[[t, value], ...]``, t increasing,
   interpolated linearly and held beyond its ends.
-* ``[friction]``: ``law``, a name of :data:`ancf.belts.friction.LAWS`, and that law's
-  parameters (:data:`FRICTION_KEYS`).
+* ``[friction]``: ``law``, a name of :data:`ancf.belts.friction.ALL_PARAMS`
+  (``creep-rate``, ``coulomb``, ``bristle``: its state per contact point carried by the
+  march), and that law's parameters (:data:`FRICTION_KEYS`).
 * ``[contact]``: the penalty ``k_p`` (N/m^2), ``c_p`` (N s/m^2) and ``gauss_points``.
 * ``[run]``: ``t_end``, ``dt``, ``output_dt``, ``steady_window`` (s: the averaging window
   before t_end), ``start`` (``settled`` or ``laid``), ``rho_inf``, ``newton_tol``,
@@ -186,9 +187,9 @@ def sub_keys(law_key: str, name: str) -> tuple:
     return ("omega_final" if law_key == "speed" else "load_torque", "t0", "t1")
 
 
-#: each friction law's parameters (ancf.belts.friction.PARAMS), all required
+#: each friction law's parameters (ancf.belts.friction.ALL_PARAMS), all required
 FRICTION_KEYS = {law: _keys(*(replace(q, default=REQUIRED) for q in params))
-                 for law, params in friction.PARAMS.items()}
+                 for law, params in friction.ALL_PARAMS.items()}
 
 CONTACT = _keys(
     Param("k_p", REQUIRED, float, "N/m^2", "penalty stiffness per unit length", lo=0,

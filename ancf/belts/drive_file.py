@@ -22,7 +22,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from ancf.belts import drive_data as dd
-from ancf.belts.friction import LAWS as FRICTION_LAWS
+from ancf.belts.friction import ALL_PARAMS as FRICTION_LAWS
 from ancf.belts.path import Pulley, PulleyPath
 from ancf.common.inputs import MAX_INTERVALS, MAX_STEPS, intervals
 from ancf.common.params import InputError, Param

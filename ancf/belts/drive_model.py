@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
-from ancf.belts.friction import PARAMS
+from ancf.belts.friction import ALL_PARAMS
 from ancf.belts.drive_data import DriveDescription, load_law, omega_law
 
 FREE = ("driven", "idler", "tensioner")
@@ -66,7 +66,7 @@ def rig(d: DriveDescription) -> Rig:
 def spec(d: DriveDescription) -> Belt2DSpec:
     """The belt and its contact (the friction law named in the file, with its parameters)."""
     b, c, f = d.belt, d.contact, d.friction
-    law = (f["law"], *(f[q.name] for q in PARAMS[f["law"]]))
+    law = (f["law"], *(f[q.name] for q in ALL_PARAMS[f["law"]]))
     return Belt2DSpec(d.path, b["length"], b["n_elements"], b["E"], b["nu"], b["rho"], b["b"],
                       b["h"], b["ks"], b["alpha1"], b["alpha2"], b["elastic_points"], c["k_p"],
                       c["c_p"], law, c["gauss_points"])

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ancf.belts.forces import evaluate
-from ancf.belts.system import PAIRS, belt_system
+from ancf.belts.system import PAIRS, belt_system, steps
 from ancf.solvers import banded
 from ancf.solvers.alpha_march import BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE, march
 from ancf.solvers.generalized_alpha import AlphaOptions, step_times
@@ -42,9 +42,12 @@ class BeltOptions:
 class _March:
     """The arrays of one run of the compiled march."""
 
-    def __init__(self, drive, opt: BeltOptions, ts):
+    def __init__(self, drive, opt: BeltOptions, ts, nslots: int):
         self.drive, self.opt = drive, opt
-        self.system = belt_system(drive, drive.laws(ts))
+        self.system = belt_system(drive, ts, nslots)
+        if self.system.drive.z is not None:  # a friction law's state: the belt at rest
+            self.system.drive.z[:] = 0.0
+        self.system.drive.h[0] = 0.0
         self.ts = ts
         self.hf = np.array([np.nan])
         self.cf = np.array(AlphaOptions(rho_inf=opt.rho_inf).coefficients())
@@ -52,7 +55,7 @@ class _March:
 
     def set_times(self, ts):
         self.ts = ts
-        self.system = self.system._replace(tabs=self.drive.laws(ts))
+        self.system = self.system._replace(tabs=self.drive.laws(ts), steps=steps(ts))
 
     def initial_acceleration(self, x, v):
         s, n, k = self.system, self.drive.n, self.drive.k
@@ -73,16 +76,20 @@ class _March:
                      o.newton_tol, o.max_iter, limit, o.max_steps, slot, out_x, out_v)
 
 
-def _halved(m: _March, st, ta, tb, depth, limit) -> bool:
-    """Advance st from ta to tb in 2**depth equal steps (recursively on failure)."""
+def _halved(m: _March, st, ta, tb, depth, limit, s=-1, out=None) -> bool:
+    """Advance st from ta to tb in 2**depth equal steps (recursively on failure); the
+    state at tb goes to output slot s of out = (X, V) (s = -1: none), as the march keeps
+    it (and a friction law's state with it)."""
     ts_keep = m.ts
     sub = np.linspace(ta, tb, 3)
     m.set_times(sub)
     dummy = np.zeros((1, st[0].size))
-    status, k = m.run(st, 0, 2, np.full(3, -1, dtype=np.int64), dummy, dummy, limit)
+    slot = np.array([-1, -1, s], dtype=np.int64)
+    status, k = m.run(st, 0, 2, slot, *(out or (dummy, dummy)), limit)
     ok = status == DONE
     if not ok and status not in (NON_FINITE, BLOW_UP, BUDGET) and depth < m.opt.max_halvings:
-        ok = all(_halved(m, st, a, b, depth + 1, limit) for a, b in zip(sub[k:-1], sub[k + 1:]))
+        ok = all(_halved(m, st, a, b, depth + 1, limit, s if b == tb else -1, out)
+                 for a, b in zip(sub[k:-1], sub[k + 1:]))
     m.set_times(ts_keep)
     return ok
 
@@ -97,7 +104,7 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
     n1 = drive.n + drive.k
     x = drive.state(drive.q0) if x0 is None else np.array(x0, dtype=float)
     v = np.zeros(n1) if v0 is None else np.array(v0, dtype=float)
-    m = _March(drive, opt, ts)
+    m = _March(drive, opt, ts, t_out.size)
     a0 = m.initial_acceleration(x, v)
     st = (x, v, a0, a0.copy())
     X, V = np.zeros((t_out.size, n1)), np.zeros((t_out.size, n1))
@@ -110,11 +117,9 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
             status, k = m.run(st, k, k_stop, slot, X, V, limit)
             if status == NEWTON_FAILED:
                 rejected += 1
-                if not _halved(m, st, ts[k], ts[k + 1], 1, limit):
+                if not _halved(m, st, ts[k], ts[k + 1], 1, limit, slot[k + 1], (X, V)):
                     break
                 status, k = DONE, k + 1
-                if slot[k] >= 0:
-                    X[slot[k]], V[slot[k]] = st[0], st[1]
         if status != DONE:
             break
         if progress:
@@ -129,4 +134,6 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
                         newton_iterations=int(c[3]), rejected_steps=rejected,
                         cpu_time_s=time.process_time() - t0)
     res.extra["contact_pairs"] = int(c[PAIRS])
+    if m.system.zs.shape[0]:  # the friction state of the samples' steps (a law with a state)
+        res.extra["friction_state"] = list(zip(m.system.zs[:reached], m.system.hs[:reached]))
     return res

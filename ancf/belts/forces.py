@@ -59,6 +59,9 @@ class Drive2D(NamedTuple):
     damping: np.ndarray  # (k,) their rotational damping, N m s
     weight: np.ndarray   # (n,) the belt's weight as generalised forces F_g, N
     arms: np.ndarray     # (na, 8) tensioner arms (ancf.belts.arm2d), their psi coordinates j
+    z: np.ndarray        # (2, nel, ng, np) friction state per contact point, m: [0] at the
+    #                      last converged step, [1] the trial (a law with a state; else None)
+    h: np.ndarray        # (1,) the step the trial state is of, s (the march's)
 
 
 class Drive3D(NamedTuple):
@@ -77,6 +80,8 @@ class Drive3D(NamedTuple):
     damping: np.ndarray
     weight: np.ndarray   # (n,)
     arms: np.ndarray     # (0, 8): no tensioner arms in 3D
+    z: None              # no friction law with a state in 3D
+    h: np.ndarray        # (1,)
     axes: np.ndarray     # pulley axes (2, 3)
     shift: np.ndarray    # direction the driver is moved in (3,)
 
@@ -110,10 +115,10 @@ def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
     for a in range(arms.shape[0]):
         j = n + int(arms[a, COORD])
         p = arm_geometry(arms, a, x[j], v[j], o, odot, u)
-        arm_terms(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas, drive.prm, a, p, u,
-                  v[j], want_J, arm)
+        arm_terms(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas, drive.prm, drive.z,
+                  drive.h[0], a, p, u, v[j], want_J, arm)
     return contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas,
-                                 drive.prm, want_J, *c)
+                                 drive.prm, drive.z, drive.h[0], want_J, *c)
 
 
 @implements(drive_forces, Drive3D)

@@ -24,12 +24,21 @@ call per contact point costs measurable time.  The derivatives are those of the 
 the point is on (exact away from the switching surfaces).
 
 :data:`LAWS` maps a name to a law; the kernels call :func:`force` and :func:`chain`,
-which choose the law at run time by its code prm[2] (its index in :data:`LAWS`, an
+which choose the law at run time by its code prm[2] (its index in :data:`ALL_PARAMS`, an
 if-chain compiled into the kernels: one comparison per contact point), so one compiled
 kernel runs every law.  :data:`LAW` names the thesis's law (belt2d, belt3d).  A new law
 is one more pair of functions, one more row of :data:`LAWS` and :data:`PARAMS`, and one
 more branch of :func:`force` and :func:`chain`; tests/test_friction.py checks every
 row's derivatives and that the dispatch reaches it.
+
+A law with a state per contact point (:data:`STATE_LAWS`: the bristle law, a spring
+whose deflection z is carried from step to step) takes z0 (the state at the last
+converged step) and the step h, and gives the trial state z1; the planar kernel
+(:mod:`ancf.belts.contact2d`) of a drive that carries a state calls every law through
+:func:`state_force` and :func:`state_chain` (one that does not, compiled without the
+state, calls :func:`force` and :func:`chain`: the stateless laws' code and cost), and the
+march makes z1 the new z0 when a step converges
+(:func:`ancf.solvers.alpha_march.system_accept`).
 """
 from __future__ import annotations
 
@@ -188,8 +197,10 @@ def bristle_chain(branch, v, z0, h, Fn, prm, G, gF, D):
             D[i, k] = -mu * u * gF[k] - g * (G[i, k] - u * ug)
 
 
-#: laws with a state per contact point, carried across steps (the point laws; the
-#: kernels and the march do not carry the state yet, so no drive file names them)
+#: laws with a state per contact point, carried across steps (their force and chain take
+#: the state z0 of the last converged step and the step h, and give the trial state z1;
+#: :func:`state_force`, :func:`state_chain`): the 2D drive carries it per contact point
+#: (:mod:`ancf.belts.contact2d`, accepted on converged steps, :mod:`ancf.belts.system`)
 STATE_LAWS = {"bristle": (bristle_force, bristle_chain)}
 
 #: their parameters, in the order of prm[3:]
@@ -219,18 +230,24 @@ PARAMS = {
 #: the law of the thesis (belt2d, belt3d)
 LAW = "creep-rate"
 
+#: every law by name (the stateless ones first) with its parameters: what a drive file's
+#: [friction] table may name
+ALL_PARAMS = {**PARAMS, **STATE_PARAMS}
+
 #: the kernels' code of each law (a float: prm is a float vector)
-CODES = {name: float(i) for i, name in enumerate(LAWS)}
+CODES = {name: float(i) for i, name in enumerate(ALL_PARAMS)}
 
 #: length of prm: k_p, c_p, the law's code and the most parameters a law has
 PRM_SIZE = 3 + max(len(p) for p in (*PARAMS.values(), *STATE_PARAMS.values()))
 
 
 def contact_vector(k_p: float, c_p: float, law: str, *values) -> np.ndarray:
-    """The kernels' prm: [k_p, c_p, code of ``law``, its PARAMS ``values`` in order, 0 ...]
-    (PRM_SIZE); ValueError naming the law unless it is a row of LAWS given its values."""
-    if law not in LAWS or len(values) != len(PARAMS[law]):
-        allowed = "; ".join(f"{k} ({', '.join(q.name for q in v)})" for k, v in PARAMS.items())
+    """The kernels' prm: [k_p, c_p, code of ``law``, its ALL_PARAMS ``values`` in order, 0
+    ...] (PRM_SIZE); ValueError naming the law unless it is a row of ALL_PARAMS given its
+    values."""
+    if law not in ALL_PARAMS or len(values) != len(ALL_PARAMS[law]):
+        allowed = "; ".join(f"{k} ({', '.join(q.name for q in v)})"
+                            for k, v in ALL_PARAMS.items())
         raise ValueError(f"friction law {law!r} with {len(values)} values; allowed: {allowed}")
     prm = np.zeros(PRM_SIZE)
     prm[:3] = k_p, c_p, CODES[law]
@@ -238,13 +255,23 @@ def contact_vector(k_p: float, c_p: float, law: str, *values) -> np.ndarray:
     return prm
 
 
-_CREEP_RATE = CODES["creep-rate"]
+_CREEP_RATE, _BRISTLE = CODES["creep-rate"], CODES["bristle"]
+
+
+def has_state(prm) -> bool:
+    """Whether the law of the contact vector prm carries a state (a row of STATE_LAWS)."""
+    return prm[2] == _BRISTLE
+
+
+@overload(has_state, inline="always")
+def _has_state(prm):
+    return lambda prm: prm[2] == _BRISTLE
 
 
 @njit(cache=True, inline="always")
 def force(v, s, Fn, prm, f):
     """The force of the law whose code is prm[2] (a row of LAWS: every row is a branch
-    here, tests/test_friction.py)."""
+    here, tests/test_friction.py; a law with a state is :func:`state_force`'s)."""
     if prm[2] == _CREEP_RATE:
         return creep_rate_force(v, s, Fn, prm, f)
     return coulomb_force(v, s, Fn, prm, f)
@@ -257,3 +284,22 @@ def chain(branch, v, s, Fn, prm, G, gF, D):
         creep_rate_chain(branch, v, s, Fn, prm, G, gF, D)
     else:
         coulomb_chain(branch, v, s, Fn, prm, G, gF, D)
+
+
+@njit(cache=True, inline="always")
+def state_force(v, s, Fn, prm, f, z0, h, z1):
+    """The force of any law (code prm[2]): a law with a state (STATE_LAWS) steps from z0
+    (n-tuple, m) over h (s) and fills z1 (n,); a stateless one is :func:`force` and leaves
+    z1 as it is."""
+    if prm[2] == _BRISTLE:
+        return bristle_force(v, z0, h, Fn, prm, f, z1)
+    return force(v, s, Fn, prm, f)
+
+
+@njit(cache=True, inline="always")
+def state_chain(branch, v, s, Fn, prm, G, gF, D, z0, h):
+    """The derivatives of any law (as :func:`state_force`; z0 and h fixed)."""
+    if prm[2] == _BRISTLE:
+        bristle_chain(branch, v, z0, h, Fn, prm, G, gF, D)
+    else:
+        chain(branch, v, s, Fn, prm, G, gF, D)

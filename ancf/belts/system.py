@@ -36,11 +36,12 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
+from ancf.belts import friction
 from ancf.belts.forces import evaluate
 from ancf.common.dispatch import implements
 from ancf.solvers import banded
-from ancf.solvers.alpha_march import (system_factor, system_prepare, system_residual,
-                                      system_solve, system_tests)
+from ancf.solvers.alpha_march import (system_accept, system_factor, system_prepare,
+                                      system_residual, system_solve, system_tests)
 
 PAIRS = 5  # the counter of contact pairs
 
@@ -52,6 +53,10 @@ class BeltSystem(NamedTuple):
     Mb: np.ndarray       # belt mass matrix, band storage, kg
     kl: int              # half-bandwidth
     tabs: np.ndarray     # pulley laws at the step times (nlaws, nts)
+    steps: np.ndarray    # (nts,) the step ending at each step time, s (0 at the first)
+    zs: np.ndarray       # (nslots, ...) the friction state at the start of the step that
+    #                      ended at each output slot (a law with a state; else (0, ...))
+    hs: np.ndarray       # (nslots,) that step, s
     S: np.ndarray        # work: S_zz, then its band LU
     piv: np.ndarray      # work: its pivots
     U: np.ndarray        # work: (k, n) S_zz^-1 C_j
@@ -62,11 +67,15 @@ class BeltSystem(NamedTuple):
     spiv: np.ndarray     # work: (k,) its pivots
 
 
-def belt_system(drive, tabs) -> BeltSystem:
+def belt_system(drive, ts, nslots: int = 0) -> BeltSystem:
     """The system of a drive (:class:`~ancf.belts.drive2d.BeltDrive` or
-    :class:`~ancf.belts.drive3d.Belt3DDrive`) over the step times of ``tabs``."""
+    :class:`~ancf.belts.drive3d.Belt3DDrive`) over the step times ts (s), keeping the
+    friction state (a law with a state) at ``nslots`` output slots."""
     n, k = drive.n, drive.k
-    return BeltSystem(drive.kernel(), drive.Mb, drive.pattern.kl, tabs,
+    kernel = drive.kernel()
+    shape = (0, 0, 0, 0) if kernel.z is None else (nslots, *kernel.z.shape[1:])
+    return BeltSystem(kernel, drive.Mb, drive.pattern.kl, drive.laws(ts), steps(ts),
+                      np.zeros(shape), np.zeros(shape[0]),
                       drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros((k, n)),
                       np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)), np.zeros((k, k)),
                       np.zeros(k, dtype=np.int64))
@@ -125,9 +134,39 @@ def bordered_solve(S, kl, piv, U, row, schur, spiv, f):
     f[n:] = th
 
 
+def steps(ts) -> np.ndarray:
+    """The step ending at each step time ts[k] (s), 0 at the first."""
+    return np.diff(ts, prepend=ts[:1])
+
+
 @implements(system_prepare, BeltSystem)
 def _prepare(system, k):
-    pass
+    """The step (s) a friction law with a state steps its trial state over."""
+    system.drive.h[0] = system.steps[k]
+
+
+@njit(cache=True)
+def accept_state(prm, z, h, zs, hs, slot):
+    """A friction law's state (a law with a state, prm; z None: none): the trial z[1]
+    becomes z[0]; the state the step started from and the step h[0] are kept in zs[slot],
+    hs[slot] (slot >= 0: the step's friction forces are the law's on them at the slot's
+    x, v).  Called, not inlined: writes to zs from inside an inlined implementation on the
+    struct (:func:`ancf.common.dispatch.as_struct`) were lost (numba 0.68)."""
+    if z is None:
+        return
+    if friction.has_state(prm):
+        if slot >= 0:
+            zs[slot] = z[0]
+            hs[slot] = h[0]
+        z[0] = z[1]
+
+
+@implements(system_accept, BeltSystem)
+def _accept(system, slot):
+    """The friction state: the trial state of the step's last residual (the accepted
+    iterate: the belt's Newton increments are damped, evaluated where they end) becomes
+    the state; the step's start kept in output slot ``slot``."""
+    accept_state(system.drive.prm, system.drive.z, system.drive.h, system.zs, system.hs, slot)
 
 
 @implements(system_residual, BeltSystem)

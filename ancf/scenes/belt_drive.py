@@ -43,16 +43,22 @@ def _items(p: dict) -> list:
     return p["set"].split(SEP) if p["set"] else []
 
 
-def pulley_moments(drive, x, v, t: float) -> np.ndarray:
+def pulley_moments(drive, x, v, t: float, state=None) -> np.ndarray:
     """The belt's moment (np,) on each pulley at state (x, v), time t (s), N m: the
-    contact kernel's T_p (Eq. 3.26's integral), counter-clockwise positive."""
+    contact kernel's T_p (Eq. 3.26's integral), counter-clockwise positive.  A friction
+    law with a state takes ``state`` = (z (nel, ng, np), h): the state at the start of the
+    step that ended at this sample and that step (s), the march's (the step's forces)."""
     E = drive.element_coords(drive.belt(x))
     V = drive.element_coords(drive.belt(v))
     npul, nel = drive.radii.size, E.shape[0]
     T = np.zeros(npul)
     o, odot = drive.moved(x, v)
+    z, h = None, 0.0
+    if state is not None:
+        z = np.zeros((2, *drive.w.shape, npul))
+        z[0], h = state
     contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, drive.omegas(t, v),
-                          drive.prm, False, np.zeros((nel, 12)), np.zeros((0, 12, 12)),
+                          drive.prm, z, h, False, np.zeros((nel, 12)), np.zeros((0, 12, 12)),
                           np.zeros((0, 12, 12)), np.zeros((0, npul, 12)), T,
                           np.zeros((npul, 0, 12)), np.zeros((npul, 0, 12)), np.zeros(npul))
     return T
@@ -74,7 +80,9 @@ def _spans(desc, drive, res, window) -> list:
 
 def _pulleys(desc, drive, res, window) -> list:
     W = np.array([drive.omegas(float(t), v) for t, v in zip(res.t, res.v)])
-    T = np.array([pulley_moments(drive, x, v, float(t)) for x, v, t in zip(res.q, res.v, res.t)])
+    states = res.extra.get("friction_state", [None] * res.t.size)
+    T = np.array([pulley_moments(drive, x, v, float(t), z)
+                  for x, v, t, z in zip(res.q, res.v, res.t, states)])
     mean = W[window].mean(axis=0)
     d = next(i for i, q in enumerate(desc.pulleys) if q.law == "prescribed")
     rim = np.abs(mean) * drive.radii
@@ -161,7 +169,8 @@ class FileScene(Scene):
 SCENE = FileScene(
     "belt-drive",
     "A belt drive of any layout from a drive file (--file drive.toml; --set section.key=value): "
-    "Dufva belt on N pulleys, penalty contact with creep-rate friction, prescribed, driven, "
+    "Dufva belt on N pulleys, penalty contact with friction by name (creep-rate, coulomb, "
+    "bristle), prescribed, driven, "
     "idler, tensioner and fixed pulleys, on the belt's inner side or its back.",
     (Param("file", DEFAULT_FILE, str, doc="the TOML drive file (ancf run belt-drive --file)"),
      Param("set", "", str, doc=f"the drive file's overrides applied, '{SEP}'-separated "

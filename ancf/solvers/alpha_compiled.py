@@ -24,8 +24,8 @@ import numpy as np
 from ancf.common.dispatch import implements
 from ancf.core.pattern import assemble_group
 from ancf.solvers import banded
-from ancf.solvers.alpha_march import (system_factor, system_prepare, system_residual,
-                                      system_solve, system_tests)
+from ancf.solvers.alpha_march import (system_accept, system_factor, system_prepare,
+                                      system_residual, system_solve, system_tests)
 
 
 class ReducedSystem(NamedTuple):
@@ -73,6 +73,11 @@ def _factor(system, bp, pivoting):
 @implements(system_solve, ReducedSystem)
 def _solve(system, d):
     banded.solve(system.S, system.kl, system.piv, d)
+
+
+@implements(system_accept, ReducedSystem)
+def _accept(system, slot):
+    """No state beside the march's."""
 
 
 @implements(system_tests, ReducedSystem)

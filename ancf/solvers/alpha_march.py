@@ -30,7 +30,10 @@ What belongs to the system (the record ``system``, a NamedTuple whose class choo
 the implementations at compile time, :mod:`ancf.common.dispatch`): the step's
 prescribed data (:func:`system_prepare`), residual and iteration matrix
 (:func:`system_residual`), factorisation (:func:`system_factor`) and solve
-(:func:`system_solve`), and (:func:`system_tests`) the coordinates the blow-up and
+(:func:`system_solve`), what it keeps from a converged step (:func:`system_accept`: a
+state of its own beside the march's, such as a friction law's per contact point; the
+trial state of the step's last residual, which is at the accepted iterate: a damped
+Newton step evaluates where its increment ends, and once more where backtracking ran out), and (:func:`system_tests`) the coordinates the blow-up and
 convergence tests look at, the positions the convergence test scales by and whether
 an increment is damped by backtracking (halved at most MAX_BACKTRACKS times until |r|
 decreases by the Armijo factor 1 - 1e-4 lam; this breaks the 2-cycles of belt points
@@ -73,6 +76,13 @@ def system_factor(system, bp, pivoting) -> bool:
 
 def system_solve(system, d):
     """d = S^-1 d in place with the kept factors."""
+    raise NotImplementedError("resolved at compile time by the type of system")
+
+
+def system_accept(system, slot):
+    """The step just taken converged (its state is the march's): make the system's trial
+    state its state (a friction law's, :mod:`ancf.belts.system`; nothing for most
+    systems) and keep it in output slot ``slot`` (-1: none)."""
     raise NotImplementedError("resolved at compile time by the type of system")
 
 
@@ -177,6 +187,9 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
         if not np.isfinite(dn):
             return False
         if _converged(bp, dn, lam, d, x if from_start else x1, m, tol):
+            if lam == 0.5 ** MAX_BACKTRACKS:  # backtracking ran out: last residual elsewhere
+                _evaluate(system, acc1, st, h, k, cf, bp, gp, False, count, rt, moving, x1, v1,
+                          a1)
             _trial(acc1, st, h, cf, True, x1, v1, a1)
             x[:] = x1
             v[:] = v1
@@ -218,6 +231,7 @@ def march(ts, k, k_stop, st, system, hf, cf, count, tol, max_iter, limit, max_st
             return NEWTON_FAILED, k
         k += 1
         count[4] += 1
+        system_accept(system, slot[k])
         if not np.all(np.isfinite(x)):
             return NON_FINITE, k
         if np.max(np.abs(x[: system_tests(system)[0]])) > limit:
