@@ -31,6 +31,8 @@ TA = "tests/test_analytic.py::"
 TB = "tests/test_belt_drive.py::"
 T3 = "tests/test_contact3d.py::"
 TM = "tests/test_modes.py::"
+TPIN = "tests/test_pinned.py::"
+TW = "tests/test_belt_wiring.py::"
 
 
 def plus_1_percent(before: str, value: str, after: str = "") -> tuple[str, str]:
@@ -122,6 +124,48 @@ MUTATIONS = [
     ("Princeton beam's torsion factor from h only", "ancf/scenes/princeton_beam.py",
      ('torsion_factor(v["h"], v["b"])', 'torsion_factor(v["h"], v["h"])'),
      "tests/test_beam3d_benchmarks.py::test_princeton_linear3d_and_belt3d_against_ansys"),
+    # issue 22: constants changed consistently in scenes and references alike
+    ("g 9.81 -> 9.71 everywhere in the package", EVERYWHERE, ("9.81", "9.71"),
+     (TPIN + "test_pendulum_defaults_are_the_thesis_problem_as_printed",
+      TPIN + "test_rigid_pendulum_reaches_the_vertical_at_the_elliptic_integral_time")),
+    ("steel density 7850 -> 7928 everywhere in the package", EVERYWHERE, ("7850", "7928"),
+     (TPIN + "test_pendulum_defaults_are_the_thesis_problem_as_printed",
+      TPIN + "test_beam_modes_reference_defaults_are_the_thesis_steel_beam",
+      TPIN + "test_plate_modes_reference_defaults_against_the_closed_form",
+      TPIN + "test_modes_scenes_default_density_is_steel")),
+    # issue 22: how the 3D drive is put together
+    ("3D driver shift along +x (Eq. 4.46)", "ancf/belts/drive3d.py",
+     ("SHIFT = np.array([-1.0, 0.0, 0.0])", "SHIFT = np.array([1.0, 0.0, 0.0])"),
+     (TW + "test_model_1_driver_moves_away_from_the_driven_pulley",
+      TW + "test_model_1_belt_is_tensioned_once_the_driver_has_moved")),
+    ("3D driver shift reversed inside the kernel", "ancf/belts/forces.py",
+     ("o[0] += laws[2] * drive.shift", "o[0] -= laws[2] * drive.shift"),
+     TW + "test_model_1_belt_is_tensioned_once_the_driver_has_moved"),
+    ("3D driven pulley inertia x 1.25 (scene to drive)", "ancf/scenes/belt3d.py",
+     ('p["contact_points"], p["inertia"],', 'p["contact_points"], 1.25 * p["inertia"],'),
+     (TW + "test_belt3d_record_is_table_4_1",
+      TW + "test_model_2_driven_pulley_obeys_its_equation_of_motion_during_the_ramp")),
+    ("3D c_p halved (scene to kernel)", "ancf/scenes/belt3d.py",
+     ('p["k_p"], p["c_p"],', 'p["k_p"], 0.5 * p["c_p"],'),
+     TW + "test_belt3d_record_is_table_4_1"),
+    ("3D c_p halved (drive to kernel)", "ancf/belts/drive3d.py",
+     ("friction.contact_vector(s.k_p, s.c_p,", "friction.contact_vector(s.k_p, 0.5 * s.c_p,"),
+     TW + "test_belt3d_record_is_table_4_1"),
+    ("2D driven pulley inertia x 1.25 (scene to drive)", "ancf/scenes/belt2d.py",
+     ('p["gauss_points"], p["inertia"],', 'p["gauss_points"], 1.25 * p["inertia"],'),
+     TW + "test_belt2d_record_is_table_3_1"),
+    ("2D driver ramp ends at 0.63 s (Eq. 3.29: 0.6 s)", "ancf/belts/pulleys.py",
+     ("T0, T1 = 0.05, 0.6", "T0, T1 = 0.05, 0.63"),
+     TW + "test_belt2d_driver_follows_eq_3_29_as_the_march_sees_it"),
+    ("Bechtel reference's Model 2 mu 0.6 -> 0.66", "analytic/bechtel.py",
+     ('"mu": 0.6,', '"mu": 0.66,'),
+     TPIN + "test_bechtel_reference_is_model_2_and_its_stiff_limit_the_closed_form"),
+    ("belt3d Model 2 mu 0.6 -> 0.66 (Table 4.1)", "ancf/scenes/belt3d.py",
+     ("nu_s=2e5, mu=0.6,", "nu_s=2e5, mu=0.66,"), TW + "test_belt3d_record_is_table_4_1"),
+    ("0.8 mm jump along the spans of the wrapped path", "ancf/belts/path.py",
+     ("r[sel] = p + sl[:, None] * d", "r[sel] = p + (sl[:, None] + 8e-4) * d"),
+     (TW + "test_belt2d_laid_belt_lies_on_the_path_at_equal_arc_spacing",
+      TW + "test_belt3d_laid_belt_lies_on_the_path_at_equal_arc_spacing")),
 ]
 
 

@@ -16,6 +16,7 @@ import math
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 from scipy.special import ellipk
 
 from ancf.scenes import SCENES
@@ -109,3 +110,40 @@ def test_modes_scenes_default_density_is_steel():
     for name in ("simply-supported", "cantilever", "axial-bar", "plate-strip", "beam3d-cantilever"):
         rho = {p.name: p.default for p in SCENES[name].modal_params}["rho"]
         assert rho == STEEL, name
+
+
+def test_bechtel_reference_is_model_2_and_its_stiff_limit_the_closed_form():
+    """Bechtel's steady belt at its defaults is the thesis' Model 2 (Table 4.1, l. 1073-1089:
+    R = 0.05 m, w = 0.04 m, h = 0.003 m, rho = 166.667, mu = 0.6, omega0 = 500 rad/s;
+    T_i = 50 N, l. 1324; T_a = 2 N m, Eq. 4.47; k = 0.2 kN, Fig. 4.11).  Made stiff
+    (k = 1e9 N), its span tensions are the inextensible closed form written out here: a
+    slip arc phi on the driven pulley with n_t / n_s = e^(mu phi), n = T - rhoA v^2,
+    n_t - n_s = T_a / R, and the mean tension T_i: 4 pi R T_i = (2 pi R - R phi)(T_t + T_s)
+    + 2 (rhoA v^2 R phi + T_a / mu); to 1e-6 (the strains T/k ~ 1e-7)."""
+    R, mu, omega, T_i, T_a = 0.05, 0.6, 500.0, 50.0, 2.0
+    rhoA = 166.667 * 0.04 * 0.003
+    p = REFERENCES["bechtel"].resolve({})
+    assert {k: p[k] for k in ("k", "R", "omega", "mu", "T_i", "T_a")} == dict(
+        k=200.0, R=R, omega=omega, mu=mu, T_i=T_i, T_a=T_a)
+    assert p["rhoA"] == pytest.approx(rhoA, rel=1e-15)
+    m = rhoA * (omega * R) ** 2
+
+    def mean_tension_gap(n_s):
+        n_t = n_s + T_a / R
+        phi = math.log(n_t / n_s) / mu
+        return ((2 * math.pi * R - R * phi) * (n_t + n_s + 2 * m) + 2 * (m * R * phi + T_a / mu)
+                - 4 * math.pi * R * T_i)
+
+    n_s = brentq(mean_tension_gap, T_a / (R * math.expm1(mu * math.pi)), 10 * T_i, xtol=1e-13)
+    r = _run(REFERENCES["bechtel"], k=1e9)
+    assert (r["T_tight_N"], r["T_slack_N"]) == pytest.approx((n_s + T_a / R + m, n_s + m),
+                                                             rel=1e-6)
+
+
+def test_moving_string_defaults_are_the_table_3_1_belt():
+    """The moving-string reference's defaults: Table 3.1's belt (rho 1036 kg/m^3, 0.01 m
+    square: rho A = 0.1036 kg/m), the span between the centres (2 x 0.191441 m) and the
+    rim speed of 120 rad/s on R = 0.08125 m."""
+    p = REFERENCES["moving-string"].resolve({})
+    assert (p["rho_A"], p["L"], p["v"]) == pytest.approx((1036.0 * 0.01 * 0.01, 0.382882,
+                                                          120.0 * 0.08125), rel=1e-14)
