@@ -226,7 +226,8 @@ def test_model_2_driven_pulley_obeys_its_equation_of_motion_during_the_ramp():
     of the friction forces on it (post-processed from the run's states), T_a Eq. 4.47
     written out, I Table 4.1's 0.00025 kg m^2.  A short Model 2 run (10 plates, 25 contact
     points, every step sampled, to 0.08 s) over 0.05-0.08 s and 0.06-0.08 s: today
-    3e-7 and 4e-6 apart (the trapezoidal rule over the 1e-4 s samples); tolerance 1e-4."""
+    3e-7 and 4.1e-6 apart (the trapezoidal rule over the 1e-4 s samples); tolerance 2e-5
+    (5 x today's; an inertia 1.25 x off is 25 % off)."""
     out = SCENES["belt3d"].execute({"n_elements": 10, "contact_points": 25, "t_end": 0.08,
                                     "output_dt": 1e-4})[1]
     assert out.converged
@@ -239,4 +240,4 @@ def test_model_2_driven_pulley_obeys_its_equation_of_motion_during_the_ramp():
         i, j = np.searchsorted(t, [t1 - 1e-9, 0.08 - 1e-9])
         impulse = np.trapezoid(Mf[i:j + 1] - Ta[i:j + 1], t[i:j + 1])
         assert I * (w[j] - w[i]) > 1e-3   # the pulley is spun up, not at rest
-        assert impulse == pytest.approx(I * (w[j] - w[i]), rel=1e-4)
+        assert impulse == pytest.approx(I * (w[j] - w[i]), rel=2e-5)
