@@ -133,6 +133,10 @@ MUTATIONS = [
       TPIN + "test_beam_modes_reference_defaults_are_the_thesis_steel_beam",
       TPIN + "test_plate_modes_reference_defaults_against_the_closed_form",
       TPIN + "test_modes_scenes_default_density_is_steel")),
+    ("spinning beam rho 2766.67 -> 2794.34 everywhere in the package", EVERYWHERE,
+     ("2766.67", "2794.34"), TPIN + "test_spinning_beam_defaults_are_wu_and_haugs_as_printed"),
+    ("steel E 2.07e11 -> 2.09e11 everywhere in the package", EVERYWHERE, ("2.07e11", "2.09e11"),
+     TPIN + "test_beam_modes_reference_defaults_are_the_thesis_steel_beam"),
     # issue 22: how the 3D drive is put together
     ("3D driver shift along +x (Eq. 4.46)", "ancf/belts/drive3d.py",
      ("SHIFT = np.array([-1.0, 0.0, 0.0])", "SHIFT = np.array([1.0, 0.0, 0.0])"),
