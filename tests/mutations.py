@@ -2,15 +2,16 @@
 
     .venv/bin/python tests/mutations.py [NAME ...] [--out FILE]    # from the project root
 
-For each mutation: copy the checkout to a temporary folder (``cp -a``: file times kept,
-so numba's on-disk cache of the untouched modules stays valid), replace one string in
+For each mutation: copy the checkout to a fixed temporary folder (file times kept, so
+numba's cache there, NUMBA_CACHE_DIR, serves the untouched modules from one mutation to
+the next; a mutated file holding compiled code gets an empty cache), replace one string in
 one source file there (it must occur exactly once) or, for a file of ``EVERYWHERE``,
 every occurrence of it in every ``.py`` file of the package (``ancf/`` and ``analytic/``:
 a constant changed consistently in scenes and references alike), run the named tests
 in the copy with a time limit, and print a markdown row: caught (the failing test and
 its first assertion) or missed.  The checkout itself is never written.  Exit code 0
 when every mutation was caught.  Not collected by pytest (no ``test_`` prefix).
-``--out FILE`` also writes the table to FILE.
+``--out FILE`` also writes the table to FILE.  One run at a time (the copy's path is fixed).
 """
 from __future__ import annotations
 
