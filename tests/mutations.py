@@ -1,23 +1,39 @@
-"""Deliberate bugs, one at a time: each must fail the test named next to it.
+"""Deliberate bugs, one at a time: each must fail the test(s) named next to it.
 
-    .venv/bin/python tests/mutations.py [NAME ...]     # from the project root
+    .venv/bin/python tests/mutations.py [NAME ...] [--out FILE]    # from the project root
 
-For each mutation: replace one string in one source file (it must occur exactly once),
-run the named test, put the file back as it was, and print a markdown row.  Exit code 0
+For each mutation: copy the checkout to a fixed temporary folder (file times kept, so
+numba's cache there, NUMBA_CACHE_DIR, serves the untouched modules from one mutation to
+the next; a mutated file holding compiled code gets an empty cache), replace one string in
+one source file there (it must occur exactly once) or, for a file of ``EVERYWHERE``,
+every occurrence of it in every ``.py`` file of the package (``ancf/`` and ``analytic/``:
+a constant changed consistently in scenes and references alike), run the named tests
+in the copy with a time limit, and print a markdown row: caught (the failing test and
+its first assertion) or missed.  The checkout itself is never written.  Exit code 0
 when every mutation was caught.  Not collected by pytest (no ``test_`` prefix).
+``--out FILE`` also writes the table to FILE.  One run at a time (the copy's path is fixed).
 """
 from __future__ import annotations
 
+import os
+import shutil
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+EVERYWHERE = "ancf/ analytic/"   # every .py file of the package
+PACKAGE = ("ancf", "analytic")
+TIME_LIMIT = 900  # s per mutation (all its tests)
+WORK = Path(tempfile.gettempdir()) / "ancf-mutations"
 TD, TP = "tests/test_dynamics.py::", "tests/test_published_tables.py::"
 TA = "tests/test_analytic.py::"
 TB = "tests/test_belt_drive.py::"
 T3 = "tests/test_contact3d.py::"
 TM = "tests/test_modes.py::"
+TPIN = "tests/test_pinned.py::"
+TW = "tests/test_belt_wiring.py::"
 
 
 def plus_1_percent(before: str, value: str, after: str = "") -> tuple[str, str]:
@@ -109,37 +125,144 @@ MUTATIONS = [
     ("Princeton beam's torsion factor from h only", "ancf/scenes/princeton_beam.py",
      ('torsion_factor(v["h"], v["b"])', 'torsion_factor(v["h"], v["h"])'),
      "tests/test_beam3d_benchmarks.py::test_princeton_linear3d_and_belt3d_against_ansys"),
+    # issue 22: constants changed consistently in scenes and references alike
+    ("g 9.81 -> 9.71 everywhere in the package", EVERYWHERE, ("9.81", "9.71"),
+     (TPIN + "test_pendulum_defaults_are_the_thesis_problem_as_printed",
+      TPIN + "test_rigid_pendulum_reaches_the_vertical_at_the_elliptic_integral_time")),
+    ("steel density 7850 -> 7928 everywhere in the package", EVERYWHERE, ("7850", "7928"),
+     (TPIN + "test_pendulum_defaults_are_the_thesis_problem_as_printed",
+      TPIN + "test_beam_modes_reference_defaults_are_the_thesis_steel_beam",
+      TPIN + "test_plate_modes_reference_defaults_against_the_closed_form",
+      TPIN + "test_modes_scenes_default_density_is_steel")),
+    ("spinning beam rho 2766.67 -> 2794.34 everywhere in the package", EVERYWHERE,
+     ("2766.67", "2794.34"), TPIN + "test_spinning_beam_defaults_are_wu_and_haugs_as_printed"),
+    ("steel E 2.07e11 -> 2.09e11 everywhere in the package", EVERYWHERE, ("2.07e11", "2.09e11"),
+     TPIN + "test_beam_modes_reference_defaults_are_the_thesis_steel_beam"),
+    # issue 22: how the 3D drive is put together
+    ("3D driver shift along +x (Eq. 4.46)", "ancf/belts/drive3d.py",
+     ("SHIFT = np.array([-1.0, 0.0, 0.0])", "SHIFT = np.array([1.0, 0.0, 0.0])"),
+     (TW + "test_model_1_driver_moves_away_from_the_driven_pulley",
+      TW + "test_model_1_belt_is_tensioned_once_the_driver_has_moved")),
+    ("3D driver shift reversed inside the kernel", "ancf/belts/forces.py",
+     ("o[0] += laws[2] * drive.shift", "o[0] -= laws[2] * drive.shift"),
+     TW + "test_model_1_belt_is_tensioned_once_the_driver_has_moved"),
+    ("3D driven pulley inertia x 1.25 (scene to drive)", "ancf/scenes/belt3d.py",
+     ('p["contact_points"], p["inertia"],', 'p["contact_points"], 1.25 * p["inertia"],'),
+     (TW + "test_belt3d_record_is_table_4_1",
+      TW + "test_model_2_driven_pulley_obeys_its_equation_of_motion_during_the_ramp")),
+    ("3D c_p halved (scene to kernel)", "ancf/scenes/belt3d.py",
+     ('p["k_p"], p["c_p"],', 'p["k_p"], 0.5 * p["c_p"],'),
+     TW + "test_belt3d_record_is_table_4_1"),
+    ("3D c_p halved (drive to kernel)", "ancf/belts/drive3d.py",
+     ("friction.contact_vector(s.k_p, s.c_p,", "friction.contact_vector(s.k_p, 0.5 * s.c_p,"),
+     TW + "test_belt3d_record_is_table_4_1"),
+    ("2D driven pulley inertia x 1.25 (scene to drive)", "ancf/scenes/belt2d.py",
+     ('p["gauss_points"], p["inertia"],', 'p["gauss_points"], 1.25 * p["inertia"],'),
+     TW + "test_belt2d_record_is_table_3_1"),
+    ("2D driver ramp ends at 0.63 s (Eq. 3.29: 0.6 s)", "ancf/belts/pulleys.py",
+     ("T0, T1 = 0.05, 0.6", "T0, T1 = 0.05, 0.63"),
+     TW + "test_belt2d_driver_follows_eq_3_29_as_the_march_sees_it"),
+    ("Bechtel reference's Model 2 mu 0.6 -> 0.66", "analytic/bechtel.py",
+     ('"mu": 0.6,', '"mu": 0.66,'),
+     TPIN + "test_bechtel_reference_is_model_2_and_its_stiff_limit_the_closed_form"),
+    ("belt3d Model 2 mu 0.6 -> 0.66 (Table 4.1)", "ancf/scenes/belt3d.py",
+     ("nu_s=2e5, mu=0.6,", "nu_s=2e5, mu=0.66,"), TW + "test_belt3d_record_is_table_4_1"),
+    ("0.8 mm jump along the spans of the wrapped path", "ancf/belts/path.py",
+     ("r[sel] = p + sl[:, None] * d", "r[sel] = p + (sl[:, None] + 8e-4) * d"),
+     (TW + "test_belt2d_laid_belt_lies_on_the_path_at_equal_arc_spacing",
+      TW + "test_belt3d_laid_belt_lies_on_the_path_at_equal_arc_spacing")),
 ]
 
 
-def caught(path: str, old: str, new: str, test: str) -> str:
-    """Apply, run ``test``, restore; 'yes: <first failing assertion>' if the test failed,
-    'NO' if it passed."""
-    src = ROOT / path
+def _copy() -> Path:
+    """A fresh copy of the checkout (without .git, pytest's cache and __pycache__) at
+    WORK/tree, always the same path: numba's cache (NUMBA_CACHE_DIR, keyed by the source
+    file's path and time stamp) then serves the untouched modules from one mutation to
+    the next."""
+    dst = WORK / "tree"
+    shutil.rmtree(dst, ignore_errors=True)
+    shutil.copytree(ROOT, dst, symlinks=True, copy_function=shutil.copy2,
+                    ignore=shutil.ignore_patterns(".git", ".pytest_cache", ".cache", "__pycache__"))
+    return dst
+
+
+def _patch(tree: Path, path: str, old: str, new: str) -> list | str:
+    """Apply the mutation in ``tree``: the files changed, or why it could not be applied."""
+    if path == EVERYWHERE:
+        files = [f for top in PACKAGE for f in sorted((tree / top).rglob("*.py"))]
+        hits = [f for f in files if old in f.read_text()]
+        if not hits:
+            return f"not applied ({old!r} occurs nowhere)"
+        for f in hits:
+            f.write_text(f.read_text().replace(old, new))
+        return hits
+    src = tree / path
     text = src.read_text()
     if text.count(old) != 1:
         return f"not applied ({old!r} occurs {text.count(old)} times)"
+    src.write_text(text.replace(old, new))
+    return [src]
+
+
+def _cache(changed: list) -> Path:
+    """numba's cache folder for a run with the files ``changed``: the shared one, or a fresh
+    one when a changed file holds compiled code (numba does not recompile a cached kernel
+    when a kernel it calls, from another module, changes)."""
+    if not any("numba" in f.read_text() for f in changed):
+        return WORK / "numba-cache"
+    fresh = WORK / "numba-fresh"
+    shutil.rmtree(fresh, ignore_errors=True)
+    return fresh
+
+
+def caught(path: str, old: str, new: str, tests) -> str:
+    """Apply in a copy, run ``tests`` there; 'yes: <failed test>: <first assertion>' if a
+    test failed, 'NO' if all passed."""
+    tests = (tests,) if isinstance(tests, str) else tuple(tests)
+    tree = _copy()
     try:
-        src.write_text(text.replace(old, new))
-        run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-x", "-p", "no:cacheprovider",
-                              test], cwd=ROOT, capture_output=True, text=True)
+        changed = _patch(tree, path, old, new)
+        if isinstance(changed, str):
+            return changed
+        env = dict(os.environ, PYTHONPATH=str(tree), NUMBA_CACHE_DIR=str(_cache(changed)))
+        try:
+            run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-rf", "-p",
+                                  "no:cacheprovider", *tests], cwd=tree, env=env,
+                                 capture_output=True, text=True, timeout=TIME_LIMIT)
+        except subprocess.TimeoutExpired:
+            return f"timed out after {TIME_LIMIT} s"
     finally:
-        src.write_text(text)
+        shutil.rmtree(tree, ignore_errors=True)
     if run.returncode != 1:
         return "NO" if run.returncode == 0 else f"pytest exit code {run.returncode}"
+    failed = [ln.split()[1].split("::", 1)[1] for ln in run.stdout.splitlines()
+              if ln.startswith("FAILED ")]
     why = next((ln[1:].strip() for ln in run.stdout.splitlines() if ln.startswith("E ")), "")
-    return f"yes: `{why[:90]}`"
+    return f"yes: {', '.join(f'`{f}`' for f in failed)}: `{why[:90]}`"
 
 
-def main(names) -> int:
-    print("| mutation | file | test that must fail | caught |\n|---|---|---|---|")
+def _names(tests) -> str:
+    tests = (tests,) if isinstance(tests, str) else tuple(tests)
+    return "<br>".join(f"`{t.split('::', 1)[1]}`" for t in tests)
+
+
+def main(args) -> int:
+    out = None
+    if "--out" in args:
+        i = args.index("--out")
+        out, args = Path(args[i + 1]), args[:i] + args[i + 2:]
+    rows = ["| mutation | file | tests that must fail | caught |", "|---|---|---|---|"]
+    print("\n".join(rows), flush=True)
     missed = 0
-    for name, path, (old, new), test in MUTATIONS:
-        if names and name not in names:
+    for name, path, (old, new), tests in MUTATIONS:
+        if args and name not in args:
             continue
-        verdict = caught(path, old, new, test)
+        verdict = caught(path, old, new, tests)
         missed += not verdict.startswith("yes")
-        print(f"| {name} | `{path}` | `{test.split('::')[1]}` | {verdict} |", flush=True)
+        rows.append(f"| {name} | `{path}` | {_names(tests)} | {verdict} |")
+        print(rows[-1], flush=True)
+    if out is not None:
+        out.write_text("\n".join(rows) + "\n")
     return 1 if missed else 0
 
 

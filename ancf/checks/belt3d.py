@@ -20,18 +20,28 @@ from ancf.scenes import SCENES
 MODEL1_RAMP = (0.05, 0.6)     # s, Table 4.1 t0, t1 of Model 1
 THESIS_SLIP = 0.10            # Fig. 4.16: "approximately 10 % lower"
 THESIS_GREEN_TORQUE = 1.4     # N m, the thesis' Green-measure torque (text below Fig. 4.15)
+#: limits tied to today's accuracy (reports/belt3d.md): the torque balance is 3.54 % off and
+#: Bechtel's span tensions 2.95 %, each limit 1.25 x that (rounded up); the slip is 0.06
+#: points from the thesis' "approximately 10 %", read to half a point
+TORQUE_TOL, BECHTEL_TOL, SLIP_TOL = 0.045, 0.037, 0.005
+#: Model 1 at t_end: the smaller span membrane force at least 0.85 of the quasi-static
+#: pre-tension E h w 2 u0 / (4 pi R) = 31.8 N of the driver's 2.5 mm shift (today 1.085:
+#: 34.5 N; a shift the wrong way gives 0.61), and after 0.8 s the driven pulley within
+#: 1 % of the driver (today 0.80 %; a shift the wrong way: 1.8 %)
+MODEL1_TENSION_FRACTION, MODEL1_FOLLOW = 0.85, 0.01
 POINTS = (25, 49, 81)
 ELEMENTS = (20, 30, 40)
 MEASURES = ("green", "true", "almansi", "membrane")
 
 #: the acceptance rows (also the names the quick report skips)
 STEADY = "Belt3d Model 2: steady driven speed over the last 0.1 s (spread < 0.5 %)"
-TORQUE = "Belt3d Model 2: (T_tight − T_slack)·R of the membrane force = T_a within 5 %"
+TORQUE = "Belt3d Model 2: (T_tight − T_slack)·R of the membrane force = T_a within 4.5 %"
 FRICTION = "Belt3d Model 2: moment of the friction forces on the driven pulley = T_a within 2 %"
 MEASURES_ROW = "Belt3d Model 2: k ε torques below T_a, Green > true > Almansi (thesis: Green 1.4 N m)"
-SLIP = "Belt3d Model 2: driven slip vs the thesis' FE ≈ 10 % (Fig. 4.16) within 1.5 points"
-BECHTEL = "Belt3d Model 2: span membrane tensions within 5 % of Bechtel (full)"
-MODEL1 = "Belt3d Model 1: the driven pulley lags during the acceleration and follows after it (Fig. 4.10)"
+SLIP = "Belt3d Model 2: driven slip vs the thesis' FE ≈ 10 % (Fig. 4.16) within 0.5 points"
+BECHTEL = "Belt3d Model 2: span membrane tensions within 3.7 % of Bechtel (full)"
+MODEL1 = ("Belt3d Model 1: the driven pulley lags during the acceleration and follows after it "
+          "(Fig. 4.10); the driver's shift (Eq. 4.46) keeps both spans tensioned")
 POINTS_ROW = "Belt3d Model 2: 49 vs 81 contact points: driven speed and span tensions within 1 %"
 ELEMENTS_ROW = "Belt3d Model 2: span tensions of 20 and 30 plates within 2 % of 40"
 CHECK_NAMES = (STEADY, TORQUE, FRICTION, MEASURES_ROW, SLIP, BECHTEL, MODEL1, POINTS_ROW, ELEMENTS_ROW)
@@ -91,7 +101,7 @@ def torque_balance() -> Check:
     T = r["torques_from_tensions_Nm"]["membrane"]
     Ta = SCENES["belt3d"].resolve({})["Ta_max"]
     return Check(TORQUE,
-                 T, Ta, _relative(T, Ta), 0.05, "N m",
+                 T, Ta, _relative(T, Ta), TORQUE_TOL, "N m",
                  "span means of the membrane's axial force at t_end; relative difference")
 
 
@@ -116,7 +126,7 @@ def strain_measure_torques() -> Check:
 
 def slip_vs_thesis() -> Check:
     s = model2()["slip_driven"]
-    return Check(SLIP, s, THESIS_SLIP, abs(s - THESIS_SLIP), 0.015, "-",
+    return Check(SLIP, s, THESIS_SLIP, abs(s - THESIS_SLIP), SLIP_TOL, "-",
                  "1 − mean ω_driven/ω_driver over the last 0.1 s; absolute difference")
 
 
@@ -124,25 +134,33 @@ def tensions_vs_bechtel() -> Check:
     tn, full = model2()["tensions"]["membrane"], analytic()
     d = max(_relative(tn[s], full[f"T_{s}_N"]) for s in ("tight", "slack"))
     return Check(BECHTEL,
-                 tn["slack"], full["T_slack_N"], d, 0.05, "N",
+                 tn["slack"], full["T_slack_N"], d, BECHTEL_TOL, "N",
                  "largest relative difference of the tight and slack span means; value and "
                  "reference: the slack span")
 
 
 def model1_lag() -> tuple:
-    """(mean lag rad/s over the ramp, relative steady error after 0.8 s) of Model 1."""
-    r = run("belt3d", model=1, t_end=1.0, dt=2.5e-4)[0]["results"]
+    """(mean lag rad/s over the ramp, relative steady error after 0.8 s, the smaller span
+    membrane force at t_end N, the quasi-static pre-tension N) of Model 1."""
+    out = run("belt3d", model=1, t_end=1.0, dt=2.5e-4)[0]
+    p, r = out["params"], out["results"]
     t, wd, wn = (np.asarray(r[k]) for k in ("times", "omega_driver", "omega_driven"))
     ramp = (t > MODEL1_RAMP[0]) & (t <= MODEL1_RAMP[1])
     late = t >= 0.8
-    return float(np.mean(wd[ramp] - wn[ramp])), float(np.mean(np.abs(wn[late] - wd[late])) / 12.0)
+    pre = p["E"] * p["h"] * p["width"] * 2 * p["u0"] / (4 * np.pi * p["R"])
+    return (float(np.mean(wd[ramp] - wn[ramp])), float(np.mean(np.abs(wn[late] - wd[late])) / 12.0),
+            min(r["tensions"]["membrane"].values()), float(pre))
 
 
 def model1_check() -> Check:
-    lag, late = model1_lag()
-    return Check(MODEL1, lag, 0.0, 0.0 if lag > 0 and late < 0.02 else 1.0, 0.5,
+    lag, late, T_min, pre = model1_lag()
+    ok = lag > 0 and late < MODEL1_FOLLOW and T_min > MODEL1_TENSION_FRACTION * pre
+    return Check(MODEL1, lag, 0.0, 0.0 if ok else 1.0, 0.5,
                  "rad/s", f"mean ω_driver − ω_driven over 0.05-0.6 s (value); after 0.8 s the "
-                          f"mean |difference| is {100 * late:.2g} % of 12 rad/s (limit 2 %)")
+                          f"mean |difference| is {100 * late:.2g} % of 12 rad/s (limit "
+                          f"{100 * MODEL1_FOLLOW:g} %); "
+                          f"smaller span force at t_end {T_min:.3g} N (limit "
+                          f"{MODEL1_TENSION_FRACTION * pre:.3g} N)")
 
 
 def points_spread(points=(49, 81)) -> float:
