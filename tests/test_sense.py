@@ -101,3 +101,9 @@ def test_circle():
     assert sense.circle(0.20308, 4.3e-5, 0.20308) == []  # the default run
     [line] = sense.circle(0.19363, 0.04323, 0.20308)  # elastic_points = 2
     assert "no circle: 0.213 of the radius" in line
+
+
+def test_span_samples():
+    assert sense.span_samples({"tight": 30.6, "slack": None}) == []
+    [line] = sense.span_samples({"tight": 524.0, "slack": float("nan")})  # n_elements = 4
+    assert "middle third of the slack span" in line

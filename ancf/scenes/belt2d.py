@@ -165,6 +165,8 @@ def sense_checks(p: dict, res: SceneResult) -> list:
     r = res.results
     if ramp or not res.converged or r.get("tension_tight_mean_N") is None:
         return out + ramp
+    means = {"tight": r["tension_tight_mean_N"], "slack": r["tension_slack_mean_N"]}
+    out += sense.span_samples(means)
     t = np.asarray(r["times"])
     sel = t >= t[-1] - STEADY_WINDOW - 1e-12
     rim_d = float(np.mean(np.asarray(r["omega_driver"])[sel])) * R1
@@ -173,8 +175,7 @@ def sense_checks(p: dict, res: SceneResult) -> list:
     if rim_d > 0:
         out += sense.gross_slip(1.0 - rim_n / rim_d, r["tension_tight_mean_N"],
                                 r["tension_slack_mean_N"], k)
-    out += sense.compression({"tight": r["tension_tight_mean_N"],
-                              "slack": r["tension_slack_mean_N"]})
+    out += sense.compression(means)
     return out + sense.drift(t[sel], np.asarray(r["omega_driven"])[sel], STEADY_WINDOW)
 
 

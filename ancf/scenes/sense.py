@@ -99,6 +99,14 @@ def compression(tensions: dict) -> list[str]:
             "it has gone slack" for k, v in bad.items()]
 
 
+def span_samples(tensions: dict) -> list[str]:
+    """Span mean tensions {name: N} that are NaN: no belt point was found in a span's
+    middle third (the cause of a 'non-finite result' exit 3)."""
+    return [f"no belt point in the middle third of the {k} span at some sample: its mean "
+            "tension is undefined (the belt is far off its wrapped path, or too few elements)"
+            for k, v in tensions.items() if v is not None and math.isnan(v)]
+
+
 def pretension(T0: float, centrifugal: float) -> list[str]:
     """Pre-tension T0 (N) against the centrifugal tension rho A v^2 (N)."""
     if T0 > centrifugal:
