@@ -106,7 +106,7 @@ def params() -> tuple:
               choices=("generalized-alpha",)),
     ) + march_params(1e-4, "time step", 1.2) + (
         Param("steady_window", following(0.1, "t_end"), float, "s", "window before t_end over "
-              "which the driven slip is averaged", lo=0, lo_open=True, hi=100),
+              "which the driven slip is averaged (at most t_end)", lo=0, lo_open=True, hi=100),
         Param("max_steps", 400_000, int, doc="step budget (beyond it: not converged)", lo=1,
               hi=MAX_STEPS),
     )
