@@ -1,7 +1,7 @@
 """Scenes: one declarative scene per paper example, each in one file on the scene API
 (``base``: ``Scene``, ``SceneResult``); ``analytic`` exposes the references of
 ``analytic/`` the same way (``ancf analytic NAME``); ``accuracy`` the per-scene
-accuracy warnings; ``beam_static``, ``beam_dynamic`` and ``belt_common`` the builders
+accuracy warnings and ``sense`` the physical-sense checks (issue 22); ``beam_static``, ``beam_dynamic`` and ``belt_common`` the builders
 the scenes share; ``beam3d_published`` the published data of the 3D beam benchmarks
 (``princeton-beam``, ``beam3d-bending``); ``frames`` the deformed geometry of a finished
 run per output step and ``vtk`` its ParaView output (``--vtk``); ``modes`` the natural

@@ -10,7 +10,6 @@ reports/beam3d_benchmarks.md).  Results as ``beam3d-cantilever``: the tip positi
 """
 from __future__ import annotations
 
-from ancf.scenes import accuracy
 from ancf.scenes import beam3d_cantilever as b3
 from ancf.scenes.base import Scene
 from ancf.scenes.beam3d_published import GENERAL_BENDING, GENERAL_BENDING_KS_TORSION
@@ -36,4 +35,4 @@ SCENE = Scene(
     "beam3d-bending",
     "3D general bending (Nachbagauer et al. 2013, Table 4): the cantilever under tip "
     "moments about x (torsion) and y.",
-    b3.params(PRESETS), b3.run, b3.check, warn=accuracy.static)
+    b3.params(PRESETS), b3.run, b3.check, warn=b3.warn)

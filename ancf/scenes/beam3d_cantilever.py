@@ -20,6 +20,7 @@ import numpy as np
 from ancf.scenes import accuracy
 from ancf.models import beam3d
 from ancf.scenes import beam_static as bs
+from ancf.scenes import sense
 from ancf.common.params import InputError, Param
 from ancf.scenes.base import STEEL_DENSITY, Scene
 from ancf.scenes.cantilever import cantilever_params
@@ -87,6 +88,23 @@ def run(p):
                     forces=beam3d.tip_moment(m, p))
 
 
+def chords(mesh, q) -> np.ndarray:
+    """Element chord lengths (m): distances between consecutive nodes' positions in q."""
+    r = np.array([[q[mesh.dof(k, "r", c)] for c in range(3)]
+                  for k in range(mesh.n_elements + 1)])
+    return np.linalg.norm(np.diff(r, axis=0), axis=1)
+
+
+def warn(p, res) -> list:
+    """The static accuracy checks and, as the 2D scenes' area check, an element stretched
+    or shortened beyond its factor (:func:`ancf.scenes.sense.stretch`)."""
+    out = accuracy.static(p, res)
+    if res.converged and "q" in res.extra:
+        m, q, q0 = res.extra["mesh"], res.extra["q"], res.extra["q0"]
+        out += sense.stretch(chords(m, q), chords(m, q0))
+    return out
+
+
 def modal(p):
     return bs.modal(p, *setup(p))
 
@@ -94,4 +112,4 @@ def modal(p):
 SCENE = Scene(
     "beam3d-cantilever",
     "The cantilever with a 3D beam element, tip force at an angle in the section plane.",
-    params(), run, check, warn=accuracy.static, modal=modal, modal_params=(STEEL_DENSITY,))
+    params(), run, check, warn=warn, modal=modal, modal_params=(STEEL_DENSITY,))

@@ -22,9 +22,11 @@ import numpy as np
 
 from ancf.belts.drive2d import BeltDrive, BeltSpec
 from ancf.belts.friction import LAW
+from ancf.belts.pulleys import T1
 from ancf.belts.post2d import sample, span_midpoint, span_tension, spans
 from ancf.common.inputs import MAX_STEPS
 from ancf.scenes import belt_common as bc
+from ancf.scenes import sense
 from ancf.common.params import Param
 from ancf.scenes.base import Scene, SceneResult
 from ancf.belts.bdf import simulate_bdf
@@ -84,7 +86,10 @@ def _at_end(drive, res, p) -> dict:
     for i in window:
         s_i = sample(drive, res.q[i], res.v[i], float(res.t[i]), npts=4)
         for k, span in sp.items():
-            mean[k].append(span_tension(s_i, span, R))
+            T = span_tension(s_i, span, R)
+            if math.isnan(T):  # no point of 4 per element in the middle third (few elements)
+                T = span_tension(sample(drive, res.q[i], res.v[i], float(res.t[i])), span, R)
+            mean[k].append(T)
     return {"tension_tight_N": span_tension(smp, sp["tight"], R),
             "tension_slack_N": span_tension(smp, sp["slack"], R),
             "tension_tight_mean_N": float(np.mean(mean["tight"])),
@@ -141,6 +146,40 @@ def prestretch(spec) -> float:
 
 
 def warn(p: dict, res: SceneResult) -> list:
+    """The penetration check (:func:`penetration`) and the physical-sense checks of
+    :mod:`ancf.scenes.sense` (:func:`sense_checks`)."""
+    return penetration(p, res) + sense_checks(p, res)
+
+
+def sense_checks(p: dict, res: SceneResult) -> list:
+    """Pre-tension, capstan bound and steady window from the input; reversal, gross slip,
+    compression and drift over the steady window of a finished run (not when the window
+    lies in the driver ramp: its values are transient anyway)."""
+    k, R1, R2 = p["E"] * p["b"] * p["h"], p["R1"], p["R2"]
+    T0 = sense.membrane_force(k, bc.path_of(p).length / bc.belt_length(p))
+    wrap = sense.min_wrap(R1, R2, 2 * bc.X_CENTRE)
+    out = (sense.pretension(T0, p["rho"] * p["b"] * p["h"] * (p["omega_final"] * R1) ** 2)
+           + sense.capstan(p["Ta_max"], sense.capstan_torque(T0, p["mu"], wrap, R2), T0,
+                           p["mu"], wrap))
+    ramp = sense.steady_window(p["t_end"], STEADY_WINDOW, {"driver ramp (Eq. 3.29)": T1})
+    r = res.results
+    if ramp or not res.converged or r.get("tension_tight_mean_N") is None:
+        return out + ramp
+    means = {"tight": r["tension_tight_mean_N"], "slack": r["tension_slack_mean_N"]}
+    out += sense.span_samples(means)
+    t = np.asarray(r["times"])
+    sel = t >= t[-1] - STEADY_WINDOW - 1e-12
+    rim_d = float(np.mean(np.asarray(r["omega_driver"])[sel])) * R1
+    rim_n = float(np.mean(np.asarray(r["omega_driven"])[sel])) * R2
+    out += sense.reversed_driven(rim_d, rim_n)
+    if rim_d > 0:
+        out += sense.gross_slip(1.0 - rim_n / rim_d, r["tension_tight_mean_N"],
+                                r["tension_slack_mean_N"], k)
+    out += sense.compression(means)
+    return out + sense.drift(t[sel], np.asarray(r["omega_driven"])[sel], STEADY_WINDOW)
+
+
+def penetration(p: dict, res: SceneResult) -> list:
     """Penetration beyond PENETRATION_WARN x the pre-stretch per wrap: the penalty is too
     soft for the pre-tension (the drive then slips for want of belt tension)."""
     pen, drive = res.results.get("penetration_max_m"), res.extra.get("drive")

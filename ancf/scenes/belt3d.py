@@ -38,6 +38,7 @@ from ancf.belts.path import TwoPulleyPath
 from ancf.belts.contact3d import SUPPORTED_RULES
 from ancf.common.inputs import MAX_STEPS, following
 from ancf.scenes import belt_common as bc
+from ancf.scenes import sense
 from ancf.scenes.belt_common import check_belt_length, check_steps, march_params
 from ancf.common.params import InputError, Param
 from ancf.scenes.base import Scene, SceneResult
@@ -105,7 +106,7 @@ def params() -> tuple:
               choices=("generalized-alpha",)),
     ) + march_params(1e-4, "time step", 1.2) + (
         Param("steady_window", following(0.1, "t_end"), float, "s", "window before t_end over "
-              "which the driven slip is averaged", lo=0, lo_open=True, hi=100),
+              "which the driven slip is averaged (at most t_end)", lo=0, lo_open=True, hi=100),
         Param("max_steps", 400_000, int, doc="step budget (beyond it: not converged)", lo=1,
               hi=MAX_STEPS),
     )
@@ -146,6 +147,9 @@ def check(p: dict) -> None:
         raise InputError(f"R = {p['R']:g} m: the pulleys overlap; allowed: 2 R < centre_distance "
                          f"= {p['centre_distance']:g} m")
     check_belt_length(p["belt_length"], path_of(p).length)
+    if p["steady_window"] > p["t_end"]:
+        raise InputError(f"steady_window = {p['steady_window']:g} s is out of range; allowed: "
+                         f"a number in (0, t_end = {p['t_end']:g}] s (a window within the run)")
     lam = stretch_for(p["T_i"], p["E"] * p["h"] * p["width"])
     if lam > 2.0:
         raise InputError(f"T_i = {p['T_i']:g} N is out of range: it needs a belt shorter than half "
@@ -187,8 +191,36 @@ def run(p: dict) -> SceneResult:
     return out
 
 
+def warn(p: dict, res: SceneResult) -> list:
+    """The physical-sense checks of :mod:`ancf.scenes.sense`: pre-tension, capstan bound and
+    steady window from the input; reversal, gross slip (membrane span tensions), compression
+    and drift over the steady window of a finished run (not when the window lies in a ramp)."""
+    k, R = p["E"] * p["h"] * p["width"], p["R"]
+    L0 = res.results.get("belt_length_m") or belt_length(p)
+    T0 = sense.membrane_force(k, (path_of(p).length + 2.0 * p["u0"]) / L0)
+    out = (sense.pretension(T0, p["rho"] * p["h"] * p["width"] * (p["omega_final"] * R) ** 2)
+           + sense.capstan(p["Ta_max"], sense.capstan_torque(T0, p["mu"], math.pi, R), T0,
+                           p["mu"], math.pi))
+    ramps = {"driver ramp (Eq. 3.29)": p["t1"]}
+    if p["Ta_max"] > 0:
+        ramps["load torque ramp (Eq. 4.47)"] = TA_T1
+    ramp = sense.steady_window(p["t_end"], p["steady_window"], ramps)
+    r = res.results
+    if ramp or not res.converged or not r.get("tensions"):
+        return out + ramp
+    t = np.asarray(r["times"])
+    sel = t >= t[-1] - p["steady_window"] - 1e-12
+    wd, wn = np.asarray(r["omega_driver"])[sel], np.asarray(r["omega_driven"])[sel]
+    out += sense.reversed_driven(float(wd.mean()) * R, float(wn.mean()) * R)
+    T = r["tensions"]["membrane"]
+    if r["slip_driven"] is not None:
+        out += sense.gross_slip(r["slip_driven"], T["tight"], T["slack"], k)
+    out += sense.compression({"tight": T["tight"], "slack": T["slack"]})
+    return out + sense.drift(t[sel], wn, p["steady_window"])
+
+
 SCENE = Scene(
     "belt3d",
     "Three-dimensional belt drive of thin ANCF plates on two pulleys, surface penalty contact "
     "with creep-rate friction, Models 1 and 2 of Table 4.1 (thesis 4.6).",
-    params(), run, check)
+    params(), run, check, warn=warn)

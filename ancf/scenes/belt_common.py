@@ -78,7 +78,11 @@ def check_belt_length(length, P: float) -> None:
 
 
 def check_steps(p: dict) -> None:
-    """Samples on steps (dt <= output_dt) and at most MAX_STEPS steps."""
+    """At least one step (dt <= t_end), samples on steps (dt <= output_dt) and at most
+    MAX_STEPS steps."""
+    if p["t_end"] < p["dt"]:
+        raise InputError(f"t_end = {p['t_end']:g} s is out of range; allowed: at least one "
+                         f"step, t_end >= dt = {p['dt']:g} s")
     check_sampling(p)
     if p["dt"] > p["output_dt"]:
         raise InputError(f"dt = {p['dt']:g} s is out of range; allowed: a number in [1e-07, "

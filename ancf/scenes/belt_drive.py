@@ -32,6 +32,7 @@ from ancf.belts.pretension import settle
 from ancf.common.params import Param
 from ancf.common.paths import REPO
 from ancf.scenes import belt_common as bc
+from ancf.scenes import sense
 from ancf.scenes.base import Scene, SceneResult
 
 PROGRESS_STEPS = 20_000  # runs of at least this many steps report progress on a terminal
@@ -144,12 +145,29 @@ def warn(p: dict, res: SceneResult) -> list:
     if ramps and t_end - window < max(ramps):
         out.append(f"run.steady_window = {window:g} s starts at {t_end - window:g} s, before "
                    f"the pulley laws settle at {max(ramps):g} s: the means are not steady")
+    out += _sense(desc, res.results)
     pre = -desc.belt["prestretch"] * desc.path.length / (2 * np.pi)
     pen = res.results["penetration_max_m"]
     if pre > 0 and pen > 0.5 * pre:
         out.append(f"penetration {1e3 * pen:.2g} mm = {pen / pre:.2g} x the pre-stretch per "
                    f"wrap ({1e3 * pre:.2g} mm): contact.k_p = {desc.contact['k_p']:g} N/m^2 is "
                    "too soft for the pre-tension; raise it")
+    return out
+
+
+def _sense(desc, r: dict) -> list:
+    """Spans in compression and pulleys still drifting over the steady window
+    (:mod:`ancf.scenes.sense`; not when the window lies in a ramp)."""
+    t_end, window = desc.run["t_end"], desc.run["steady_window"]
+    if any(t_end - window < q.params["t1"] for q in desc.pulleys if "t1" in q.params):
+        return []
+    out = sense.compression({f"{s['from']}-{s['to']}": s["tension_mean_N"] for s in r["spans"]})
+    t = np.asarray(r["times"])
+    sel = t >= t[-1] - window - 1e-12
+    for q, pul in zip(desc.pulleys, r["pulleys"]):
+        if q.law != "prescribed":
+            out += [f"{q.name}: {w}" for w in sense.drift(t[sel], np.asarray(pul["omega"])[sel],
+                                                          window)]
     return out
 
 

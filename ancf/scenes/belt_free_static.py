@@ -33,6 +33,7 @@ from ancf.core.mesh import BeamMesh
 from ancf.core.pattern import ReducedPattern
 from ancf.core.quadrature import RectangularSection
 from ancf.scenes import belt_common as bc
+from ancf.scenes import sense
 from ancf.common.params import InputError, Param
 from ancf.scenes.base import Equilibrium, ModalModel, Scene, SceneResult
 from ancf.solvers.minimize import minimize
@@ -126,9 +127,17 @@ def modal(p: dict) -> ModalModel:
                       equilibrium, centreline(mesh), "centreline", mesh)
 
 
+def warn(p: dict, res: SceneResult) -> list:
+    """The shape found against its circle (:func:`ancf.scenes.sense.circle`)."""
+    r = res.results
+    if not res.converged or r.get("radius_mean_m") is None:
+        return []
+    return sense.circle(r["radius_mean_m"], r["radius_max_dev_m"], r["radius_reference_m"])
+
+
 SCENE = Scene(
     "belt-free-static",
     "Belt released from the pulleys: Newton from the wrapped shape to the circle "
     "(thesis Figs 3.4-3.5).",
-    params(), run, check, modal=modal,
+    params(), run, check, warn=warn, modal=modal,
     modal_params=tuple(q for q in bc.belt_params() if q.name == "rho"))

@@ -28,6 +28,7 @@ from analytic import navier_plate
 from ancf.core.constraints import Elimination
 from ancf.models.plate import grid_points, simply_supported, simply_supported_model
 from ancf.common.params import InputError, Param
+from ancf.scenes import sense
 from ancf.scenes.base import STEEL_DENSITY, Equilibrium, Scene, SceneResult
 
 SUPPORTS = Param("supports", "simple", str, doc="edge supports (ancf modes only): 'simple' "
@@ -65,9 +66,10 @@ def run(p: dict) -> SceneResult:
     if not (math.isfinite(D) and D > 0):
         return SceneResult(False, f"No solution: the bending rigidity E h^3/(12 (1 - nu^2)) = "
                                   f"{D:g} N m is not a positive finite number in double precision",
-                           dict.fromkeys(("center_deflection_m", "navier_center_deflection_m",
-                                          "relative_error")) | {
-                               "navier_terms": 0, "tangent_evaluations": 0, "factorizations": 0})
+                           _failed())
+    singular = sense.near_singular(p["h"], p["a"] / p["n_elements"])
+    if singular:
+        return SceneResult(False, singular, _failed())
     m, u = simply_supported(p["n_elements"], p["a"], p["a"], ng=p["ng"], **geo)
     w = float(u[m.dof(m.node(p["n_elements"] // 2, p["n_elements"] // 2), "r", 2)])
     w_ref, terms = navier_plate.centre_deflection(p["a"], p["a"], **geo)
@@ -77,6 +79,19 @@ def run(p: dict) -> SceneResult:
         "relative_error": rel,
         "tangent_evaluations": 1, "factorizations": 1},
         extra={"mesh": m, "q0": m.reference(), "q": m.reference() + u})
+
+
+def _failed() -> dict:
+    """The results of a run that solved nothing."""
+    return dict.fromkeys(("center_deflection_m", "navier_center_deflection_m",
+                          "relative_error")) | {
+        "navier_terms": 0, "tangent_evaluations": 0, "factorizations": 0}
+
+
+def warn(p: dict, res: SceneResult) -> list:
+    """A centre deflection beyond the linear thin-plate range (:func:`ancf.scenes.sense.thin_plate`)."""
+    w = res.results.get("center_deflection_m")
+    return [] if w is None else sense.thin_plate(w, p["h"])
 
 
 def modal(p: dict):
@@ -94,5 +109,5 @@ def modal(p: dict):
 SCENE = Scene(
     "plate-square",
     "Simply supported square thin plate under uniform pressure, linear, against Navier.",
-    params(), run, check, modal=modal,
+    params(), run, check, warn=warn, modal=modal,
     modal_params=(STEEL_DENSITY, SUPPORTS))

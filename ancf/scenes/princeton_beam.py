@@ -13,7 +13,6 @@ section is several times too stiff in torsion (reports/beam3d_benchmarks.md).  R
 from __future__ import annotations
 
 from ancf.models.beam3d import torsion_factor
-from ancf.scenes import accuracy
 from ancf.scenes import beam3d_cantilever as b3
 from ancf.scenes.base import Scene
 from ancf.scenes.beam3d_published import PRINCETON, PRINCETON_LOADS
@@ -39,4 +38,4 @@ SCENE = Scene(
     "princeton-beam",
     "The Princeton beam: the thin aluminium strip with a tip force at an angle (Dowell et "
     "al.; ANSYS references of Obrezkov et al. 2022).",
-    b3.params(PRESETS), b3.run, b3.check, warn=accuracy.static)
+    b3.params(PRESETS), b3.run, b3.check, warn=b3.warn)

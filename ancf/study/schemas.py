@@ -33,9 +33,10 @@ def field(kind: str, doc: str, nullable: bool = False, required: bool = True,
             "items": items, "keys": keys}
 
 
-def series(doc: str) -> dict:
-    """A sampled time history: an array of numbers (null where not finite)."""
-    return field("array", doc, items=NUM)
+def series(doc: str, nullable: bool = False) -> dict:
+    """A sampled time history: an array of numbers (null where not finite; ``nullable``:
+    the whole array null when the run stopped)."""
+    return field("array", doc, nullable=nullable, items=NUM)
 
 
 _STATIC = {
@@ -269,8 +270,10 @@ RESULTS = {
     "bechtel": {**_BELT_STEADY, "capstan": field("object", "the same keys with the belt's "
                                                  "inertia neglected (capstan model)",
                                                  keys=_BELT_STEADY)},
-    "rigid-pendulum": {"times": series("sample times, s"), "theta": series("angle, rad"),
-                       "tip_x": series("tip x, m"), "tip_y": series("tip y, m")},
+    "rigid-pendulum": {"times": series("sample times, s"),
+                       "theta": series("angle, rad (null when the integration failed)", True),
+                       "tip_x": series("tip x, m (null when the integration failed)", True),
+                       "tip_y": series("tip y, m (null when the integration failed)", True)},
 }
 
 _MODES_NULL = "null when no eigenpairs were found"

@@ -1,0 +1,201 @@
+"""Physical-sense checks of a finished run (issue 22 item 1): the run did what was asked,
+these say when its answer is not what the scene stands for (a ``warnings`` line each).
+
+Each check is a function of plain numbers returning a list of one-line warnings (empty:
+the check passes), so that the scenes' ``warn`` functions only gather the numbers.  The
+thresholds are named here and listed in the README's table "Physical-sense checks".
+
+Belt drives (``belt2d``, ``belt3d``, ``belt-drive``), the means over the steady window:
+
+* :func:`reversed_driven`: the driven pulley turns against the driver;
+* :func:`gross_slip`: the driven rim lags the driver's by more than the belt's creep
+  ``(T_t - T_s) / (k + T_t)`` (steady mass flow through the spans, ``k`` = E A) plus
+  :data:`SLIP_EXCESS`;
+* :func:`compression`: a span mean tension below zero (a belt cannot push);
+* :func:`pretension`: a pre-tension ``T_0`` not above the centrifugal tension
+  ``rho A v^2`` of the driver's rim speed (the belt lifts off; ``T_0 <= 0``: a belt as
+  long as the path, which the penetration check cannot judge);
+* :func:`capstan`: the load torque above the capstan bound ``2 T_0 r tanh(mu theta / 2)``
+  (``T_t / T_s = exp(mu theta)`` with ``T_t + T_s = 2 T_0``, theta the smaller wrap);
+* :func:`steady_window`: a steady window that starts before the prescribed ramps end;
+* :func:`drift`: the driven speed's trend over the window (least-squares slope times
+  the window) above :data:`DRIFT_REL` of its mean.
+
+Plates: :func:`thin_plate` (deflection against the thickness) and
+:func:`near_singular` (the bending stiffness lost in round-off: exit 3).  Beams in 3D:
+:func:`stretch` (an element's chord stretched or shortened by more than the 2D area
+check's factor).  Statics: :func:`circle` (the free belt's shape against its circle).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ancf.core.validity import AREA_FACTOR
+
+#: slip beyond the creep the span tensions explain: 0.05 (the belt2d default slips 0.0008,
+#: Model 2 of belt3d 0.10 against a creep of 0.15; nu_s = 1e3 in the extremes study: 0.29)
+SLIP_EXCESS = 0.05
+#: the driven pulley counts as reversed below -REVERSE_REL x the driver's rim speed
+REVERSE_REL = 0.01
+#: trend of the driven speed over the steady window / its mean: 0.05 (ten times the
+#: belt2d default's 0.005, the spans' vibration; Model 2 of belt3d: below 2e-4)
+DRIFT_REL = 0.05
+#: below this speed (rad/s) a pulley is at rest for the drift and reversal checks
+SPEED_FLOOR = 1e-9
+#: thin-plate (Kirchhoff, linear) range: centre deflection below this times h (membrane
+#: action adds about (w/h)^2 / 2 to the stiffness: 0.3 h changes w by about 5 %)
+THIN_PLATE_W_OVER_H = 0.3
+#: plate36 stiffness: relative round-off of the bending terms, eps x 12 (l / h)^2 (the
+#: membrane's E h against the bending's E h^3 / 12 over an element side l), above which the
+#: linear solve holds no answer (h/l = 8e-7: 0.4 % off Navier's h^-3 scaling; 8e-8: 190 %)
+BENDING_ROUNDOFF = 0.01
+#: free belt: a shape off its circle by more than this share of the radius
+CIRCLE_REL = 0.05
+
+
+def membrane_force(k: float, stretch: float) -> float:
+    """Axial force k lambda (lambda^2 - 1) / 2 (N) of a uniaxially stretched belt of
+    axial stiffness k = E A (N) at stretch lambda (Green strain, S = E E)."""
+    return 0.5 * k * stretch * (stretch * stretch - 1.0)
+
+
+def min_wrap(R1: float, R2: float, distance: float) -> float:
+    """The smaller wrap angle (rad) of an open belt on two pulleys of radii R1, R2 (m)
+    whose centres are ``distance`` (m) apart: pi - 2 asin(|R2 - R1| / distance)."""
+    return math.pi - 2.0 * math.asin(abs(R2 - R1) / distance)
+
+
+def capstan_torque(T0: float, mu: float, wrap: float, r: float) -> float:
+    """Largest torque (N m) on a pulley of radius r (m) at pre-tension T0 (N): 2 T0 r
+    tanh(mu wrap / 2), from T_t / T_s = exp(mu wrap) and T_t + T_s = 2 T0."""
+    return 2.0 * max(T0, 0.0) * r * math.tanh(0.5 * mu * wrap)
+
+
+def reversed_driven(rim_driver: float, rim_driven: float) -> list[str]:
+    """Mean rim speeds (m/s, the driver's direction positive) of the two pulleys."""
+    if rim_driven >= -REVERSE_REL * abs(rim_driver) - SPEED_FLOOR:
+        return []
+    return [f"the driven pulley turns against the driver (rim speed {rim_driven:.4g} m/s "
+            f"against {rim_driver:.4g} m/s over the steady window): the belt does not drive it"]
+
+
+def gross_slip(slip: float, T_t: float, T_s: float, k: float) -> list[str]:
+    """``slip`` = 1 - driven rim speed / driver's (window means), span tensions T_t, T_s
+    (N) and the belt's axial stiffness k = E A (N)."""
+    creep = (T_t - T_s) / (k + T_t) if k + T_t > 0 else 0.0
+    if not (math.isfinite(slip) and slip > max(creep, 0.0) + SLIP_EXCESS):
+        return []
+    return [f"gross slip: the driven pulley's rim lags the driver's by {slip:.3g} against a "
+            f"creep (T_t - T_s)/(k + T_t) = {creep:.3g} of the span tensions (bound: creep + "
+            f"{SLIP_EXCESS:g}): the belt slides over the whole wrap"]
+
+
+def compression(tensions: dict) -> list[str]:
+    """Span mean tensions {name: N}."""
+    bad = {k: v for k, v in tensions.items() if v is not None and v < 0}
+    return [f"the {k} span is in compression (mean tension {v:.3g} N): a belt cannot push; "
+            "it has gone slack" for k, v in bad.items()]
+
+
+def span_samples(tensions: dict) -> list[str]:
+    """Span mean tensions {name: N} that are NaN: no belt point was found in a span's
+    middle third (the cause of a 'non-finite result' exit 3)."""
+    return [f"no belt point in the middle third of the {k} span at some sample: its mean "
+            "tension is undefined (the belt is far off its wrapped path, or too few elements)"
+            for k, v in tensions.items() if v is not None and math.isnan(v)]
+
+
+def pretension(T0: float, centrifugal: float) -> list[str]:
+    """Pre-tension T0 (N) against the centrifugal tension rho A v^2 (N)."""
+    if T0 > centrifugal:
+        return []
+    if T0 <= 0:
+        return [f"no pre-tension (T_0 = {T0:.3g} N: the belt is at least as long as its path): "
+                "nothing presses it on the pulleys, the penetration check has nothing to judge"]
+    return [f"pre-tension T_0 = {T0:.3g} N is not above the centrifugal tension rho A v^2 = "
+            f"{centrifugal:.3g} N at the driver's final rim speed: the belt lifts off the pulleys"]
+
+
+def capstan(Ta: float, bound: float, T0: float, mu: float, wrap: float) -> list[str]:
+    """Load torque Ta (N m) against :func:`capstan_torque`'s ``bound``."""
+    if Ta <= bound:
+        return []
+    return [f"load torque {Ta:g} N m is above what friction can transmit, 2 T_0 r tanh(mu "
+            f"theta / 2) = {bound:.4g} N m (capstan bound at T_0 = {T0:.4g} N, mu = {mu:g}, "
+            f"theta = {wrap:.4g} rad): the belt cannot carry it"]
+
+
+def steady_window(t_end: float, window: float, ramps: dict) -> list[str]:
+    """A window (s) before t_end (s) against the end times (s) of the ramps {name: t1}."""
+    start = t_end - window
+    late = {k: v for k, v in ramps.items() if start < v}
+    if not late:
+        return []
+    name, t1 = max(late.items(), key=lambda kv: kv[1])
+    return [f"the steady window [{max(start, 0.0):g}, {t_end:g}] s starts before the {name} "
+            f"ends at {t1:g} s: the steady results are transient values"]
+
+
+def drift(t, omega, window: float) -> list[str]:
+    """Driven speeds ``omega`` (rad/s) at times ``t`` (s) of the steady window."""
+    t, omega = np.asarray(t, dtype=float), np.asarray(omega, dtype=float)
+    if t.size < 3 or not np.all(np.isfinite(omega)):
+        return []
+    trend = abs(float(np.polyfit(t - t[0], omega, 1)[0])) * window
+    mean = abs(float(omega.mean()))
+    if trend <= DRIFT_REL * mean or trend <= SPEED_FLOOR:
+        return []
+    return [f"not steady: the driven speed changes by {trend:.3g} rad/s over the {window:g} s "
+            f"window (trend), {trend / max(mean, SPEED_FLOOR):.3g} of its mean {mean:.3g} "
+            f"rad/s (bound {DRIFT_REL:g}): run longer"]
+
+
+def thin_plate(w: float, h: float) -> list[str]:
+    """Centre deflection w (m) of a linear thin plate of thickness h (m)."""
+    if not (math.isfinite(w) and abs(w) > THIN_PLATE_W_OVER_H * h):
+        return []
+    return [f"centre deflection {abs(w):.3g} m = {abs(w) / h:.3g} h is beyond the linear "
+            f"thin-plate range (|w| <= {THIN_PLATE_W_OVER_H:g} h): membrane stretching, "
+            "ignored by the linear solve, would carry the load"]
+
+
+def bending_roundoff(h: float, side: float) -> float:
+    """Relative round-off (-) of a plate element's bending stiffness: eps 12 (side / h)^2,
+    the double-precision eps against the ratio (h / side)^2 / 12 of the bending terms
+    E h^3 / 12 to the membrane terms E h they are summed with (h, side in m)."""
+    return float(np.finfo(float).eps) * 12.0 * (side / h) ** 2
+
+
+def near_singular(h: float, side: float) -> str | None:
+    """The cause of a plate solve that holds no digits (None: it is well conditioned)."""
+    err = bending_roundoff(h, side)
+    if not err > BENDING_ROUNDOFF:
+        return None
+    return (f"No solution: the bending stiffness is lost in round-off (h = {h:g} m on elements "
+            f"of side {side:g} m: relative error eps 12 (side/h)^2 = {err:.3g} > "
+            f"{BENDING_ROUNDOFF:g}); a thicker plate or larger elements")
+
+
+def stretch(chords, chords0) -> list[str]:
+    """Element chord lengths (m) deformed and in the reference: a chord stretched or
+    shortened by more than AREA_FACTOR (the 2D area check's factor)."""
+    ratio = np.asarray(chords, dtype=float) / np.asarray(chords0, dtype=float)
+    factor = np.maximum(ratio, 1.0 / np.maximum(ratio, 1e-300))
+    k = int(np.argmax(factor))
+    if not factor[k] > AREA_FACTOR:
+        return []
+    return [f"element {k + 1} of {ratio.size} changes its length by a factor {factor[k]:.3g}: "
+            "strains far beyond the small-strain range of the St Venant-Kirchhoff material, "
+            "the result is a property of the model, not of a beam"]
+
+
+def circle(radius_mean: float, max_dev: float, radius_ref: float) -> list[str]:
+    """The free belt's mean radius and largest deviation from it against L/(2 pi), m."""
+    off = max(abs(radius_mean - radius_ref), max_dev) / radius_ref
+    if not off > CIRCLE_REL:
+        return []
+    return [f"the equilibrium found is no circle: {off:.3g} of the radius L/(2 pi) = "
+            f"{radius_ref:.4g} m off (bound {CIRCLE_REL:g}); a zero-energy mode of the "
+            "under-integrated elements (raise elastic_points)"]
