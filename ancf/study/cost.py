@@ -52,6 +52,10 @@ first run 1.8x), as good as a refit (NNLS: 8 % / 17 %), so no belt table was add
 ``cpu_time_s`` now leaves compiling and loading out, as ``compile_cpu_s``, so :func:`calibrate`
 fits the solves alone.)
 
+``ancf modes`` runs (``--quantity frequency``) count as static ones: the equilibrium's
+Newton iterations (none about the reference), two tangent evaluations (stiffness and
+mass) and the eigensolver's factorisations.
+
 Missing counters degrade gracefully: static runs use ``tangent_evaluations`` and
 ``factorizations`` when the solver reports them, else ``newton_iterations``; a run whose
 results carry none of the counters has ``work`` NaN and ranks after every counted run.
@@ -152,6 +156,12 @@ def _stability_checked(results) -> bool:
     return _num(results.get("negative_tangent_eigenvalues")) is not None
 
 
+def _modal(results) -> bool:
+    """An ``ancf modes`` run (its stiffness and mass assembled once each: counted as two
+    tangent evaluations beside the equilibrium's Newton iterations)."""
+    return _num(results.get("reduced_size")) is not None
+
+
 def _evaluations(params, results) -> tuple | None:
     """(kind, force evaluations, tangent evaluations, factorisations, steps) or None."""
     if _num(results.get("nfev")) is not None:
@@ -163,7 +173,7 @@ def _evaluations(params, results) -> tuple | None:
     its = _first(results, "newton_iterations")
     tangents = _first(results, "tangent_evaluations")
     if tangents is None and its is not None:
-        tangents = its + _stability_checked(results)
+        tangents = its + _stability_checked(results) + 2 * _modal(results)
     factors = _first(results, "factorizations", "newton_iterations")
     if tangents is None or factors is None:
         return None
