@@ -174,6 +174,9 @@ def _expected() -> dict:
     from ancf.study.references import specs
     out.update({f"Speed–accuracy {name}: Pareto plot + cheapest-configuration table": "PASS"
                 for name in specs()})
+    from ancf.study.references import FREQUENCY_SPECS
+    out.update({f"Speed–accuracy frequencies {name}: Pareto plot + cheapest-configuration "
+                "table": "PASS" for name in FREQUENCY_SPECS})
     out.update({f"Extremes: {a.title}": _axis_status(a) for a in AXES})
     return out
 
