@@ -137,14 +137,18 @@ def _sweep(args) -> int:
     if args.name not in SCENES:
         raise InputError(f"sweep: unknown scene {args.name!r}; allowed: {', '.join(SCENES)}")
     grid = parse_grid(args.name, args.grid, args.quantity) if args.grid else None
-    validate_fixed(runner(args.name, args.quantity), _parse_sets(args.set))
+    sets = _overrides(args)
+    if args.name in FILE_SCENES:  # the file's keys: the file validates them
+        runner(args.name, args.quantity).resolve(sets)
+    else:
+        validate_fixed(runner(args.name, args.quantity), sets)
     out = args.out or f"sweep-{args.name}.parquet"
 
     def _term(signum, frame):
         raise KeyboardInterrupt
     signal.signal(signal.SIGTERM, _term)  # like Ctrl-C: keep the finished rows, then stop
     try:
-        df = run_sweep(args.name, grid, out=out, fixed=_parse_sets(args.set),
+        df = run_sweep(args.name, grid, out=out, fixed=sets,
                        reference=args.reference, workers=args.workers, scheduler=args.scheduler,
                        time_limit=args.time_limit, retry_failed=args.retry_failed,
                        progress=not args.no_progress, quantity=args.quantity)
@@ -165,7 +169,7 @@ def _sweep(args) -> int:
 
 def _recommend(args) -> int:
     from ancf.study.recommend import public, recommend
-    res = recommend(args.name, args.tol, fixed=_parse_sets(args.set), reference=args.reference,
+    res = recommend(args.name, args.tol, fixed=_overrides(args), reference=args.reference,
                     data=args.data, workers=args.workers, scheduler=args.scheduler,
                     time_limit=args.time_limit, progress=not args.no_progress,
                     quantity=args.quantity)
@@ -173,12 +177,23 @@ def _recommend(args) -> int:
         print(dumps(public(res)))
     else:
         print(res["message"])
-        if res["params"]:  # the frequencies: ancf modes (its own --count: modes computed)
-            command = "modes" if args.quantity == "frequency" else "run"
-            print(f"  ancf {command} {args.name} " + " ".join(
-                f"--set {k}={v}" for k, v in res["params"].items()
-                if v is not None and not (command == "modes" and k == "count")))
+        if res["params"]:
+            print(_command(args, res["params"]))
     return res["exit_code"]
+
+
+def _command(args, params: dict) -> str:
+    """The command that runs a recommended model: ``ancf modes`` for the frequencies (its
+    own --count: modes computed), a drive file's overrides one --set each."""
+    from ancf.scenes.belt_drive import SEP
+    command = "modes" if args.quantity == "frequency" else "run"
+    params = dict(params)
+    words = [f"  ancf {command} {args.name}"]
+    if args.name in FILE_SCENES:
+        words.append(f"--file {params.pop('file')}")
+        words += [f"--set {item}" for item in params.pop("set").split(SEP) if item]
+    return " ".join(words + [f"--set {k}={v}" for k, v in params.items()
+                             if v is not None and not (command == "modes" and k == "count")])
 
 
 def _positive(kind):
@@ -197,6 +212,8 @@ def _positive(kind):
 
 
 def _quantity(p) -> None:
+    p.add_argument("--file", metavar="PATH", help="the drive file of the belt-drive scene "
+                   "(TOML; as --set file=PATH)")
     p.add_argument("--quantity", default="results", metavar="Q", help="results (default: the "
                    "scene's results against its reference) or frequency (the lowest --set "
                    "count=K bending frequencies of `ancf modes` against the analytic ones: "

@@ -81,6 +81,10 @@ WEIGHTS = {
               "steps": 0.0, "kernel_points": 1.0, "factor_dofs": 150.0, "stability_dofs": 0.0},
 }
 
+#: the elastic Gauss points of a drive file's belt (``belt-drive``: the file's
+#: belt.elastic_points default; the scene's parameters do not carry it)
+DRIVE_ELASTIC_POINTS = 5
+
 #: integrators whose force evaluations (nfev) include the tangent evaluations (njev)
 TANGENT_WITHIN_FORCE = ("generalized-alpha",)
 
@@ -109,7 +113,8 @@ def belt_shape(params) -> tuple[int, int]:
     knob): 12 coordinates (r, r_x, r_y at two nodes), elastic plus contact points."""
     from ancf.elements.dufva2d import DufvaBelt2D
     contact = _num(params.get("gauss_points")) or 0
-    return 4 * len(DufvaBelt2D.slots), int(_num(params.get("elastic_points")) + contact)
+    elastic = _num(params.get("elastic_points")) or DRIVE_ELASTIC_POINTS
+    return 4 * len(DufvaBelt2D.slots), int(elastic + contact)
 
 
 def plate_belt_shape(params) -> tuple[int, int]:
@@ -134,7 +139,8 @@ def element_shape(params) -> tuple[int, int]:
     if cls is None and _num(params.get("ng")):  # the thin plate: 36 coordinates, ng x ng points
         return 36, int(_num(params.get("ng"))) ** 2
     if cls is None:
-        return belt_shape(params) if _num(params.get("elastic_points")) else (0, 0)
+        return belt_shape(params) if (_num(params.get("elastic_points"))
+                                      or params.get("file") is not None) else (0, 0)
     spec = getattr(cls, "schemes", {}).get(params.get("integration"), params.get("integration"))
     return 4 * len(cls.slots), quadrature_points(str(spec))
 
@@ -162,12 +168,19 @@ def _modal(results) -> bool:
     return _num(results.get("reduced_size")) is not None
 
 
+def _integrator(params) -> str | None:
+    """The run's integrator; a drive file's (``file``) is generalised-alpha."""
+    if params.get("integrator") is None and params.get("file") is not None:
+        return "generalized-alpha"
+    return params.get("integrator")
+
+
 def _evaluations(params, results) -> tuple | None:
     """(kind, force evaluations, tangent evaluations, factorisations, steps) or None."""
     if _num(results.get("nfev")) is not None:
         nfev, njev = _num(results.get("nfev")), _first(results, "njev") or 0.0
         nlu, steps = _first(results, "nlu") or 0.0, _first(results, "steps") or 0.0
-        if params.get("integrator") in TANGENT_WITHIN_FORCE:
+        if _integrator(params) in TANGENT_WITHIN_FORCE:
             return "alpha", max(nfev - njev, 0.0), njev, nlu, steps
         return "dynamic", nfev, njev, nlu, steps
     its = _first(results, "newton_iterations")

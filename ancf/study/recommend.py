@@ -72,7 +72,7 @@ def describe(p: dict, dynamic: bool, quantity: str = "results") -> str:
     if quantity == "frequency":
         parts.append("eigen solve about the reference")
     elif dynamic:
-        integ = p.get("integrator")
+        integ = p.get("integrator") or "generalized-alpha"  # a drive file's: its dt
         parts.append(f"{integ}, dt = {p.get('dt'):g}" if integ == "generalized-alpha"
                      else f"{integ}, rtol = {p.get('rtol'):g}")
         if p.get("newton_tol") is not None:

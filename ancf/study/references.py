@@ -735,6 +735,50 @@ def _bending_spec() -> SceneSpec:
                      notes="3D general bending (Mx = 0.5e6, My = 2e6 N m) against ANSYS.")
 
 
+def _drive_steady(p):
+    from ancf.scenes.belt_drive import steady_reference
+    from ancf.common.params import InputError
+    try:
+        return steady_reference(p)
+    except (InputError, ValueError) as exc:
+        raise ReferenceFailed(f"steady reference (analytic/belt_steady.py): {exc}") from None
+
+
+def _drive_error(res, ref, p):
+    """max of the span tensions' |T_mean − T_ref| / |T_ref| and the free pulleys'
+    |omega_mean − omega_ref| / |omega_ref| (every pulley but the prescribed and fixed)."""
+    spans = [abs(a["tension_mean_N"] - b["tension_N"]) / abs(b["tension_N"])
+             for a, b in zip(res["spans"], ref["spans"])]
+    speeds = [abs(a["omega_mean"] - b["omega"]) / abs(b["omega"])
+              for a, b in zip(res["pulleys"], ref["pulleys"])
+              if b["law"] not in ("prescribed", "fixed") and b["omega"]]
+    return float(max(spans + speeds))
+
+
+#: the drive file's model parameters (ancf.scenes.belt_drive.MODEL_KEYS)
+DRIVE_KNOBS = ("n_elements", "dt", "gauss_points")
+
+
+def _belt_drive_spec() -> SceneSpec:
+    refs = {"steady": Reference(
+        "steady", "analytic",
+        "steady extensible belt on the drive's layout (`analytic/belt_steady.py`: Bechtel's "
+        "string with the centrifugal term around the N pulleys, Coulomb stick and creep arcs, "
+        "the laws' final values); error = max of the spans' |T_mean − T_ref| / |T_ref| (mean "
+        "over run.steady_window and the span's middle third) and the free pulleys' |ω_mean − "
+        "ω_ref| / |ω_ref|. It includes the model gap (creep-rate against Coulomb friction, "
+        "the penalty's penetration: 1-2 % on the shipped examples) and whatever of the "
+        "start-up the window still holds", _drive_steady, _drive_error)}
+    grids = ({"n_elements": [30, 45, 60], "gauss_points": [5, 7]},)
+    return SceneSpec("belt-drive", DRIVE_KNOBS, frozenset({"axial", "bending", "inertia",
+                                                          "contact"}),
+                     refs, "steady", report_grids=grids, recommend_grids=grids, dynamic=True,
+                     provides=frozenset({"axial", "bending", "shear", "large-rotation",
+                                         "inertia", "contact"}),
+                     notes="A drive file (`--set file=PATH`; default the thesis drive) "
+                           "against the steady reference on its layout.")
+
+
 # ---------------------------------------------------------------------------------------
 # frequencies (``--quantity frequency``: ``ancf modes`` about the reference)
 # ---------------------------------------------------------------------------------------
@@ -832,6 +876,7 @@ SPECS: dict[str, Callable[[], SceneSpec]] = {
     "beam3d-cantilever": _beam3d_spec,
     "princeton-beam": _princeton_spec,
     "beam3d-bending": _bending_spec,
+    "belt-drive": _belt_drive_spec,
 }
 
 
