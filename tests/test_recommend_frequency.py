@@ -97,3 +97,17 @@ def test_recommend_frequency_prints_an_ancf_modes_command(capsys):
 def test_frequency_quantity_bad_input(capsys, argv, text):
     rc, _, err = _cli(capsys, *argv)
     assert rc == 2 and err.startswith(text) and len(err.strip().splitlines()) == 1
+
+
+def test_frequency_runs_report_the_modes_schema_and_the_api_sweeps_them():
+    """A frequency run's results are `ancf modes`'s (its schema, no key of its own); the
+    Python API sweeps them as the command line does."""
+    from ancf.scenes.modes import frequency_scene
+    from ancf.study.schemas import schema, validate
+    out, _ = frequency_scene("plate-square").execute({"n_elements": 4, "count": 2})
+    assert out["converged"] and out["results"]["count"] == 6
+    assert validate(out["results"], schema("modes plate-square")["properties"]["results"]) == []
+    df = ancf.sweep("simply-supported", {"n_elements": [8, 16]}, fixed={"count": 2},
+                    quantity="frequency", workers=1)
+    assert list(df["status"]) == ["ok", "ok"] and set(df["reference"]) == {"timoshenko-frequencies"}
+    assert df["error"].iloc[1] < df["error"].iloc[0] / 3  # second order: 4x less, seen 4.0
