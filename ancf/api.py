@@ -301,13 +301,13 @@ def scenes() -> list[dict]:
     return catalogue()
 
 
-def _grid(scene: str, grid) -> list | dict | None:
+def _grid(scene: str, grid, quantity: str = "results") -> list | dict | None:
     """``grid`` ({param: value or [values]} or a list of them) parsed by the scene's
     parameters (InputError naming the field, as ``--grid``)."""
     if grid is None:
         return None
-    from ancf.scenes import SCENES
-    params = {p.name: p for p in SCENES[scene].params}
+    from ancf.study.references import runner
+    params = {p.name: p for p in runner(scene, quantity).params}
     grids = [grid] if isinstance(grid, dict) else list(grid)
     out = []
     for g in grids:
@@ -327,13 +327,15 @@ def _grid(scene: str, grid) -> list | dict | None:
 def sweep(scene: str, grid=None, *, fixed: dict | None = None, out=None,
           reference: str | None = None, workers: int | None = None, scheduler=None,
           time_limit: float = 600.0, retry_failed: bool = False, progress: bool = False,
-          log=None):
+          log=None, quantity: str = "results"):
     """Run the cartesian product of ``grid`` ({param: [values]}, or a list of such grids;
     default: the scene's speed-accuracy grid) with ``fixed`` overrides, as ``ancf sweep``;
     returns a pandas DataFrame, one row per run (parameters, status, results, the error
     against ``reference`` and the counted work).  ``out`` (.parquet or .csv) keeps the rows
     and resumes an interrupted sweep; without it the rows go to a temporary file that is
-    removed.  ``log``: a function of one line (default: silent).
+    removed.  ``log``: a function of one line (default: silent).  ``quantity="frequency"``:
+    ``ancf modes`` runs (``fixed={"count": K}``: the lowest K bending frequencies) against
+    the analytic frequencies (cantilever, simply-supported, plate-square).
 
     >>> import ancf
     >>> df = ancf.sweep("axial-bar", grid={"n_elements": [1, 2]}, workers=1)  # doctest: +SKIP
@@ -342,12 +344,14 @@ def sweep(scene: str, grid=None, *, fixed: dict | None = None, out=None,
     from ancf.study.sweep import run_sweep
     if scene not in SCENES:
         raise InputError(f"sweep: unknown scene {scene!r}; allowed: {', '.join(SCENES)}")
-    grids = _grid(scene, grid)
+    from ancf.study.references import runner
+    grids = _grid(scene, grid, quantity)
     if fixed:
-        SCENES[scene].resolve(fixed)
+        runner(scene, quantity).resolve(fixed)
     log = log or (lambda msg: None)
     kw = dict(fixed=fixed, reference=reference, workers=workers, scheduler=scheduler,
-              time_limit=time_limit, retry_failed=retry_failed, progress=progress, log=log)
+              time_limit=time_limit, retry_failed=retry_failed, progress=progress, log=log,
+              quantity=quantity)
     if out is not None:
         return run_sweep(scene, grids, out=out, **kw)
     with tempfile.TemporaryDirectory(prefix="ancf-sweep-") as tmp:
@@ -356,13 +360,15 @@ def sweep(scene: str, grid=None, *, fixed: dict | None = None, out=None,
 
 def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: str | None = None,
               data=None, workers: int | None = None, scheduler=None, time_limit: float = 300.0,
-              progress: bool = False, log=None) -> dict:
+              progress: bool = False, log=None, quantity: str = "results") -> dict:
     """The cheapest configuration of ``scene`` meeting the error tolerance ``tol``, as
     ``ancf recommend SCENE --tol TOL --json``: the same dict (``params`` that
     :func:`run` accepts as they are, ``error``, ``work``, ``cpu_time_s``, ``found``,
     ``message``, ``evidence``).  ``data``: answer from a sweep file (:func:`sweep`'s
     ``out``) instead of running the scene's recommendation sweep (cached under
-    ``reports/.cache/``).
+    ``reports/.cache/``).  ``quantity="frequency"``: the cheapest model whose lowest K
+    (``fixed={"count": K}``, default 3) bending frequencies are within ``tol`` of the
+    analytic ones.
 
     >>> import ancf
     >>> rec = ancf.recommend("cantilever", 1e-3)  # doctest: +SKIP
@@ -372,5 +378,5 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     from ancf.study.recommend import public, recommend as _recommend
     res = _recommend(scene, tol, fixed=fixed, reference=reference, data=data, workers=workers,
                      scheduler=scheduler, time_limit=time_limit, progress=progress,
-                     log=log or (lambda msg: None))
+                     log=log or (lambda msg: None), quantity=quantity)
     return public(res)

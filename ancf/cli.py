@@ -131,23 +131,27 @@ def _print(out: dict, args) -> int:
 
 def _sweep(args) -> int:
     from ancf.scenes import SCENES
-    from ancf.study.references import spec
+    from ancf.study.references import runner, spec
     from ancf.common.inputs import validate_fixed
     from ancf.study.sweep import parse_grid, run_sweep
     if args.name not in SCENES:
         raise InputError(f"sweep: unknown scene {args.name!r}; allowed: {', '.join(SCENES)}")
-    grid = parse_grid(args.name, args.grid) if args.grid else None
-    validate_fixed(SCENES[args.name], _parse_sets(args.set))
+    grid = parse_grid(args.name, args.grid, args.quantity) if args.grid else None
+    sets = _overrides(args)
+    if args.name in FILE_SCENES:  # the file's keys: the file validates them
+        runner(args.name, args.quantity).resolve(sets)
+    else:
+        validate_fixed(runner(args.name, args.quantity), sets)
     out = args.out or f"sweep-{args.name}.parquet"
 
     def _term(signum, frame):
         raise KeyboardInterrupt
     signal.signal(signal.SIGTERM, _term)  # like Ctrl-C: keep the finished rows, then stop
     try:
-        df = run_sweep(args.name, grid, out=out, fixed=_parse_sets(args.set),
+        df = run_sweep(args.name, grid, out=out, fixed=sets,
                        reference=args.reference, workers=args.workers, scheduler=args.scheduler,
                        time_limit=args.time_limit, retry_failed=args.retry_failed,
-                       progress=not args.no_progress)
+                       progress=not args.no_progress, quantity=args.quantity)
     except KeyboardInterrupt:
         print(f"interrupted: the finished rows are in {out}; the same command resumes",
               file=sys.stderr)
@@ -156,7 +160,8 @@ def _sweep(args) -> int:
     if args.json:
         print(dumps({"scene": args.name, "out": str(out), "rows": int(len(df)),
                           "status": counts,
-                          "reference": args.reference or spec(args.name).default_reference}))
+                          "reference": args.reference
+                          or spec(args.name, args.quantity).default_reference}))
     else:
         print(out)
     return 0
@@ -164,17 +169,31 @@ def _sweep(args) -> int:
 
 def _recommend(args) -> int:
     from ancf.study.recommend import public, recommend
-    res = recommend(args.name, args.tol, fixed=_parse_sets(args.set), reference=args.reference,
+    res = recommend(args.name, args.tol, fixed=_overrides(args), reference=args.reference,
                     data=args.data, workers=args.workers, scheduler=args.scheduler,
-                    time_limit=args.time_limit, progress=not args.no_progress)
+                    time_limit=args.time_limit, progress=not args.no_progress,
+                    quantity=args.quantity)
     if args.json:
         print(dumps(public(res)))
     else:
         print(res["message"])
         if res["params"]:
-            print("  ancf run " + args.name + " " + " ".join(
-                f"--set {k}={v}" for k, v in res["params"].items() if v is not None))
+            print(_command(args, res["params"]))
     return res["exit_code"]
+
+
+def _command(args, params: dict) -> str:
+    """The command that runs a recommended model: ``ancf modes`` for the frequencies (its
+    own --count: modes computed), a drive file's overrides one --set each."""
+    from ancf.scenes.belt_drive import SEP
+    command = "modes" if args.quantity == "frequency" else "run"
+    params = dict(params)
+    words = [f"  ancf {command} {args.name}"]
+    if args.name in FILE_SCENES:
+        words.append(f"--file {params.pop('file')}")
+        words += [f"--set {item}" for item in params.pop("set").split(SEP) if item]
+    return " ".join(words + [f"--set {k}={v}" for k, v in params.items()
+                             if v is not None and not (command == "modes" and k == "count")])
 
 
 def _positive(kind):
@@ -190,6 +209,15 @@ def _positive(kind):
             raise argparse.ArgumentTypeError(f"{text!r} is out of range; {allowed}")
         return v
     return parse
+
+
+def _quantity(p) -> None:
+    p.add_argument("--file", metavar="PATH", help="the drive file of the belt-drive scene "
+                   "(TOML; as --set file=PATH)")
+    p.add_argument("--quantity", default="results", metavar="Q", help="results (default: the "
+                   "scene's results against its reference) or frequency (the lowest --set "
+                   "count=K bending frequencies of `ancf modes` against the analytic ones: "
+                   "cantilever, simply-supported, plate-square)")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -238,6 +266,7 @@ def main(argv=None) -> int:
     p.add_argument("--time-limit", type=_positive(float), default=600.0, metavar="SECONDS",
                    help="per run; a run over it is killed and recorded (default 600)")
     p.add_argument("--retry-failed", action="store_true", help="rerun failed / timed-out rows")
+    _quantity(p)
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.add_argument("--json", action="store_true", help="print a JSON summary")
     p = sub.add_parser("recommend", help="cheapest model meeting an error tolerance")
@@ -247,6 +276,7 @@ def main(argv=None) -> int:
                    help="fix a parameter (physical ones define the problem)")
     p.add_argument("--reference", help="reference (default: the scene's)")
     p.add_argument("--data", help="answer from this sweep file instead of running a sweep")
+    _quantity(p)
     p.add_argument("--workers", type=_positive(int), help="local worker processes")
     p.add_argument("--scheduler", metavar="ADDRESS", help="run the sweep on a Dask cluster")
     p.add_argument("--time-limit", type=_positive(float), default=300.0, metavar="SECONDS")

@@ -144,6 +144,10 @@ AGREES = {
          "test_free_free_plate_ratios_within_0p2_percent_of_the_ritz_series_and_exudyn"),
         ("Plate free-free: Ritz series = Exudyn's published ratios to their last digit",
          "test_free_free_plate_ratios_within_0p2_percent_of_the_ritz_series_and_exudyn"),
+        ("Plate simply supported: first four frequencies converge from below at order 2 (fit "
+         "over n = 8…16)", "test_plate_converges_from_below_at_second_order"),
+        ("Plate simply supported, 8 × 8: first six frequencies = Exudyn's ANCFThinPlate on the "
+         "same mesh and constraints", "test_plate_8x8_frequencies_equal_exudyns_thin_plate"),
         *((f"Belt 120 rad/s, {k} span: mid-span frequency within 5 % of the moving string",
            "test_belt_span_frequency_within_5_percent_of_the_moving_string")
           for k in ("tight", "slack")))},
@@ -170,6 +174,9 @@ def _expected() -> dict:
     from ancf.study.references import specs
     out.update({f"Speed–accuracy {name}: Pareto plot + cheapest-configuration table": "PASS"
                 for name in specs()})
+    from ancf.study.references import FREQUENCY_SPECS
+    out.update({f"Speed–accuracy frequencies {name}: Pareto plot + cheapest-configuration "
+                "table": "PASS" for name in FREQUENCY_SPECS})
     out.update({f"Extremes: {a.title}": _axis_status(a) for a in AXES})
     return out
 

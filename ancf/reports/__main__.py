@@ -25,6 +25,7 @@ from ancf.reports.elements3d import elements3d_chapter
 from ancf.reports import studies, tables
 from ancf.reports.output import configure, markdown_table, progress, run
 from ancf.reports.speed_accuracy import speed_accuracy_chapter
+from ancf.reports.speed_accuracy_frequencies import frequency_speed_accuracy_chapter
 from ancf.study.schemas import schemas_markdown
 
 
@@ -193,7 +194,8 @@ def static_chapter() -> tuple[str, dict]:
 
 
 CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md", "belt2d.md",
-            "bechtel.md", "elements3d.md", "belt3d.md", "beam3d_benchmarks.md", "frequencies.md")
+            "bechtel.md", "elements3d.md", "belt3d.md", "beam3d_benchmarks.md", "frequencies.md",
+            "speed_accuracy_frequencies.md")
 
 _INDEX = [
     "| report | contents |", "|---|---|",
@@ -229,6 +231,11 @@ _INDEX = [
     "the simply supported plate vs Navier, the free-free plate's ratios vs Exudyn and the "
     "Ritz series, the axial bar's first frequency falling to zero at Euler's load, the "
     "running belt's span spectra vs the axially moving string; acceptance checks |",
+    "| [speed_accuracy_frequencies.md](speed_accuracy_frequencies.md) | Speed versus accuracy "
+    "of the natural frequencies: error of the lowest bending frequencies vs counted work and "
+    "CPU time per element, scheme and mesh (cantilever and simply supported beam vs "
+    "Timoshenko, the simply supported plate vs Navier), cheapest configuration per error "
+    "level |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
@@ -244,7 +251,7 @@ def _chapters() -> dict:
     return dict(zip(CHAPTERS, (static_chapter, dynamics_chapter, speed_accuracy_chapter,
                                extremes_chapter, belt2d_chapter, bechtel_chapter,
                                elements3d_chapter, belt3d_chapter, beam3d_benchmarks_chapter,
-                               frequencies_chapter)))
+                               frequencies_chapter, frequency_speed_accuracy_chapter)))
 
 
 def write_chapters(root: Path, only: str | None = None) -> dict:

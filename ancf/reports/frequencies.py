@@ -165,7 +165,7 @@ def _plate_part() -> list:
         markdown_table(plate.assign(**{c: plate[c].map(_pct) for c in plate.columns
                                        if c.startswith("error")},
                                     **{TIMING: plate["timing: CPU s"].map(_ms)}).drop(columns="timing: CPU s"), 5),
-        "", _plate_figure(plate, free),
+        "", _plate_figure(plate, free), *_decision_part(plate),
         "## Free–free square plate: eigenvalue ratios (Exudyn's ANCFThinPlateTests)\n",
         "`ancf modes plate-square --set supports=free` with Exudyn's plate (a = "
         f"{p['a']:g} m, h = {p['h']:g} m, E = {p['E']:g} Pa, ν = {p['nu']:g}, ρ = "
@@ -180,6 +180,64 @@ def _plate_part() -> list:
         "Exudyn's printed ratios equal the Ritz series to their last digit (the third, "
         f"{exu[2]}, against {ritz[2]:.8f}, rounds the other way: a difference of "
         f"{abs(exu[2] - ritz[2]):.1e}). Ours converge to them from above.\n"]
+
+
+def _decision_part(plate: pd.DataFrame) -> list:
+    """The 8 x 8 decision (issue 24): ours beside Exudyn's thin plate on the same mesh, the
+    quadrature, the constraints, the convergence order."""
+    progress("frequencies: the 8 x 8 plate against Exudyn's thin plate")
+    ev = fq.plate_evidence()
+    ref = ev["navier"]
+    rows = [{"source": r["source"], **{f"f{k + 1} Hz": r["f"][k] for k in range(fq.PLATE_COUNT)},
+             "worst error": _pct(float((r["f"] / ref - 1.0)[np.argmax(np.abs(r["f"] / ref - 1.0))])),
+             TIMING: _ms(r["cpu"])} for r in ev["rows"]]
+    rows.append({"source": "Navier", **{f"f{k + 1} Hz": ref[k] for k in range(fq.PLATE_COUNT)}})
+    table = pd.DataFrame(rows)
+    write_csv(table, "frequencies_plate_decision")
+    order = pd.DataFrame([{f"mode {k + 1}": o for k, o in enumerate(ev["order"])}])
+    err = plate.set_index("n per side")
+    within = [int(n) for n in err.index
+              if all(abs(err.loc[n, f"error f{k}"]) <= fq.PLATE_TOL for k in range(1, 7))]
+    diff = fq.exudyn_difference()
+    same = ("Exudyn was not installed when this chapter was generated: its columns are "
+            "missing." if diff is None else
+            f"Exudyn's element on our constraints gives our frequencies to {diff:.1e} "
+            "(relative): the same element, the same numbers.")
+    return [
+        "### The 8 × 8 decision: the element, not the model around it\n",
+        "At 8 × 8 elements the fundamental is within 1 % of Navier but the higher modes are "
+        f"not ({_pct(err.loc[8, 'error f2'])} for (1, 2), {_pct(err.loc[8, 'error f4'])} "
+        "for (2, 2)); the first six are within 1 % from "
+        f"{min(within) if within else '—'} × {min(within) if within else '—'} on. What could "
+        "cause the shortfall, each checked:\n",
+        "* **The element.** Thesis 4.3 uses the 36-coordinate thin plate of Dufva and "
+        "Shabana (2005): four nodes with r, r_x, r_y (Eq. 4.14), and says of it: “The "
+        "continuity of the gradients at the interface between adjoined elements is not "
+        "ensured due the nonconformity of the element”. Exudyn's `ObjectANCFThinPlate` "
+        "(4 `NodePointSlope12` nodes: r, r_x, r_y) is the same element. Built by Exudyn's "
+        "`ShellMesh` on plate-square's 8 × 8 mesh and solved by its "
+        "`ComputeODE2Eigenvalues` (dense), fixing what plate-square fixes, it gives the rows "
+        f"below. {same} A non-conforming element is no Rayleigh–Ritz bound: its "
+        "frequencies may lie below the exact ones, and ours do on every mesh "
+        f"({'all' if ev['from_below'] else 'not all'} errors of the table above are negative).\n",
+        "* **Quadrature.** 4 × 4 Gauss points integrate the linearised stiffness and the "
+        "consistent mass exactly; 6 × 6 give the same frequencies (rows 1–2).\n",
+        "* **Mass matrix.** Consistent in ours and in Exudyn's (a lumped mass would lower "
+        "the frequencies further, not raise them).\n",
+        "* **Boundary conditions.** Ours fix w and the slope along the edge (w = 0 along an "
+        "edge between its nodes needs both); Exudyn's test fixes the boundary positions only "
+        "(its spherical joints), which lets the edge bulge between nodes and lowers the "
+        "frequencies slightly (row 4): the constraint is not too soft on our side.\n",
+        markdown_table(table, 6), "",
+        "Fitted order of convergence, slope of log |error| over log n for n = "
+        f"{', '.join(map(str, fq.PLATE_ORDER_MESHES))} (−2 is second order):\n",
+        markdown_table(order, 3), "",
+        "**Conclusion.** The 8 × 8 shortfall of the higher modes is the discretisation error "
+        "of the thesis's non-conforming 36-coordinate plate element, converging from below at "
+        "second order, reproduced digit for digit by Exudyn's implementation of the same "
+        "element; neither the quadrature, nor the mass matrix nor the supports explain it. "
+        "The acceptance's 1 % at 8 × 8 holds for the fundamental; the first six need 16 × 16 "
+        "(or a conforming element with the twist r_xy, which the thesis does not use).\n"]
 
 
 def _plate_figure(plate: pd.DataFrame, free: list) -> str:

@@ -20,7 +20,7 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.study.cost import FEATURES, calibrate, with_work  # noqa: E402
-from ancf.study.references import cache_root, rescore, spec, specs  # noqa: E402
+from ancf.study.references import cache_root, rescore, runner, spec, specs  # noqa: E402
 from ancf.reports.output import (fmt, markdown_table, progress, save_figure,  # noqa: E402
                                  settings, write_csv)
 from ancf.study.sweep import run_sweep  # noqa: E402
@@ -61,6 +61,8 @@ def _model(row, dynamic: bool) -> str:
 
 
 def _solver(row, dynamic: bool) -> str:
+    if row.get("quantity") == "frequency":
+        return "eigen solve about the reference"
     if dynamic:
         if row.get("integrator") == "generalized-alpha":
             tol = f", Newton tol = {row['newton_tol']:g}" if "newton_tol" in row else ""
@@ -71,8 +73,7 @@ def _solver(row, dynamic: bool) -> str:
 
 def _knob_defaults(name: str, s) -> dict:
     """The scene's default value of each model knob (the tie-breaker of last resort)."""
-    from ancf.scenes import SCENES
-    p = SCENES[name].resolve({})
+    p = runner(name, s.quantity).resolve({})
     return {k: p[k] for k in s.knobs if k in p}
 
 
@@ -135,28 +136,37 @@ def quick_grids(grids) -> list:
             for g in grids]
 
 
-def scene_grids(scene: str) -> tuple[list, dict]:
-    """(grids, fixed parameters) of the scene's speed-accuracy sweep in this report run."""
-    s = spec(scene)
+def scene_grids(scene: str, quantity: str = "results",
+                fixed: dict | None = None) -> tuple[list, dict]:
+    """(grids, fixed parameters) of the scene's speed-accuracy sweep in this report run
+    (``fixed``: the chapter's own, beside the reduced configuration's)."""
+    s = spec(scene, quantity)
+    fixed = dict(fixed or {})
     if settings().quick:
-        return quick_grids(s.report_grids), QUICK_FIXED.get(scene, {})
-    return list(s.report_grids), {}
+        return quick_grids(s.report_grids), {**QUICK_FIXED.get(scene, {}), **fixed}
+    return list(s.report_grids), fixed
 
 
-def scene_sweep(scene: str, workers=None, fresh: bool = True, out=None) -> pd.DataFrame:
+def slug(scene: str, quantity: str = "results") -> str:
+    """The scene's file-name stem in this chapter (``_frequency`` appended for frequencies)."""
+    return scene.replace("-", "_") + ("" if quantity == "results" else f"_{quantity}")
+
+
+def scene_sweep(scene: str, workers=None, fresh: bool = True, out=None,
+                quantity: str = "results", fixed: dict | None = None) -> pd.DataFrame:
     """The scene's rows (fresh unless ``fresh=False``: resumed) with their counted work."""
-    out = out or cache_root() / "speed_accuracy" / f"{scene}.parquet"
+    out = out or cache_root() / "speed_accuracy" / f"{slug(scene, quantity)}.parquet"
     if fresh:
         for p in (out, out.with_name(out.name + ".journal.jsonl")):
             if p.exists():
                 p.unlink()
-    grids, fixed = scene_grids(scene)
+    grids, fixed = scene_grids(scene, quantity, fixed)
     df = run_sweep(scene, grids, out=out, fixed=fixed, workers=workers, time_limit=300.0,
-                   progress=False, log=progress)
+                   progress=False, log=progress, quantity=quantity)
     return with_work(df[df["scene"] == scene])
 
 
-_CSV_COLS = ("element", "integration", "n_elements", "gauss_points", "contact_points", "elastic_points",
+_CSV_COLS = ("element", "integration", "n_elements", "ng", "gauss_points", "contact_points", "elastic_points",
              "integrator", "rtol", "atol", "dt", "newton_tol", "load_steps", "status", "message", "error", "error_self", "work", "cpu_time_s",
              "steps", "iterations") + tuple(f"count_{k}" for k in FEATURES)
 
@@ -175,7 +185,8 @@ _INTRO = (
     "{tie:g} % of the least work as equally cheap (the cost model's scatter) and takes the "
     "smallest model among them, then the smallest error, then the scene's default settings "
     "(`ancf/study/selection.py`). `ancf recommend SCENE --tol TOL` answers the last question of "
-    "each section for a given tolerance.\n")
+    "each section for a given tolerance. The natural frequencies (`--quantity frequency`) "
+    "have their own chapter, speed_accuracy_frequencies.md.\n")
 
 
 def _references_table(sp: dict) -> list:
@@ -188,7 +199,7 @@ def _references_table(sp: dict) -> list:
     return parts + [""]
 
 
-def _figure(df: pd.DataFrame, name: str, s) -> None:
+def _figure(df: pd.DataFrame, name: str, s) -> str:
     ncols = 2 if "error_self" in df else 1
     fig, axes = plt.subplots(1, ncols, figsize=(6.2 * ncols + 2.6, 4.4), squeeze=False)
     plot(df, name, s.dynamic, axes[0][0], title=f"{name}: error vs {s.default_reference}",
@@ -196,22 +207,26 @@ def _figure(df: pd.DataFrame, name: str, s) -> None:
     if ncols == 2:
         plot(df, name, s.dynamic, axes[0][1], err="error_self",
              title=f"{name}: error vs converged self-reference")
-    save_figure(fig, f"pareto_{name.replace('-', '_')}")
+    stem = f"pareto_{slug(name, s.quantity)}"
+    save_figure(fig, stem)
+    return stem
 
 
-def scene_section(name: str, s, df: pd.DataFrame) -> tuple[list, bool]:
-    """(markdown lines, PASS) of one scene's section from its sweep rows."""
-    slug = name.replace("-", "_")
-    grids, fixed = scene_grids(name)
+def scene_section(name: str, s, df: pd.DataFrame,
+                  fixed: dict | None = None) -> tuple[list, bool]:
+    """(markdown lines, PASS) of one scene's section from its sweep rows (``fixed``: the
+    parameters its sweep fixed beside the reduced configuration's)."""
+    stem = slug(name, s.quantity)
+    grids, fixed = scene_grids(name, s.quantity, fixed)
     grid_txt = "; ".join(" × ".join(f"{k} ∈ {{{', '.join(map(str, v))}}}" for k, v in g.items())
                          for g in grids)
     if fixed:
-        grid_txt += " (reduced configuration, with " + ", ".join(
-            f"{k} = {v:g}" for k, v in fixed.items()) + ")"
+        grid_txt += (" (reduced configuration, with " if settings().quick else " (with ") + \
+            ", ".join(f"{k} = {v:g}" for k, v in fixed.items()) + ")"
     if "self" in s.references and s.default_reference != "self" and not s.dynamic:
         df = df.assign(error_self=rescore(df, name, "self"))
-    write_csv(df[[c for c in _CSV_COLS if c in df]], f"speed_accuracy_{slug}")
-    _figure(df, name, s)
+    write_csv(df[[c for c in _CSV_COLS if c in df]], f"speed_accuracy_{stem}")
+    figure = _figure(df, name, s)
     defaults = _knob_defaults(name, s)
     table = cheapest_table(df, s.dynamic, defaults=defaults)
     counts = df["status"].value_counts().to_dict()
@@ -219,7 +234,7 @@ def scene_section(name: str, s, df: pd.DataFrame) -> tuple[list, bool]:
     parts = [f"## `{name}`\n", f"{s.notes} Grid: {grid_txt} ({len(df)} runs: "
              + ", ".join(f"{k} {v}" for k, v in counts.items()) + "). Reference: "
              f"{s.reference().doc}.\n",
-             f"![pareto {name}](figures/pareto_{slug}.png)\n",
+             f"![pareto {name}](figures/{figure}.png)\n",
              f"Cheapest configuration per error level (against {s.default_reference}):\n",
              markdown_table(table, 3), ""]
     extra = ""
@@ -229,7 +244,7 @@ def scene_section(name: str, s, df: pd.DataFrame) -> tuple[list, bool]:
                   markdown_table(cheapest_table(df, s.dynamic, "error_self", defaults), 3), ""]
         extra = _self_note(df, s.reference().kind)
     parts += [f"Pareto front: {len(front)} of {len(df)} runs. " + _front_text(front, s.dynamic)
-              + extra + "\n", f"Data: `data/speed_accuracy_{slug}.csv`.\n"]
+              + extra + "\n", f"Data: `data/speed_accuracy_{stem}.csv`.\n"]
     return parts, bool(len(front)) and len(table) == len(TOLERANCES)
 
 

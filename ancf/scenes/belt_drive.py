@@ -29,7 +29,7 @@ from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, simulate
 from ancf.belts.post2d import sample, span_tension
 from ancf.belts.pretension import settle
-from ancf.common.params import Param
+from ancf.common.params import InputError, Param
 from ancf.common.paths import REPO
 from ancf.scenes import belt_common as bc
 from ancf.scenes import sense
@@ -40,8 +40,16 @@ DEFAULT_FILE = str(REPO / "examples" / "thesis_table_3_1.toml")
 SEP = "; "  # between the overrides in params["set"]
 
 
+#: the model choices of a drive file that sweeps and ``ancf recommend`` vary, as scene
+#: parameters (resolved to the file's value when not given): parameter -> file key
+MODEL_KEYS = {"n_elements": "belt.n_elements", "dt": "run.dt",
+              "gauss_points": "contact.gauss_points"}
+
+
 def _items(p: dict) -> list:
-    return p["set"].split(SEP) if p["set"] else []
+    """The file's overrides: ``set`` and the model parameters."""
+    return (p["set"].split(SEP) if p["set"] else []) + [
+        f"{key}={p[name]!r}" for name, key in MODEL_KEYS.items() if p.get(name) is not None]
 
 
 def pulley_moments(drive, x, v, t: float, state=None) -> np.ndarray:
@@ -173,15 +181,71 @@ def _sense(desc, r: dict) -> list:
 
 @dataclass(frozen=True)
 class FileScene(Scene):
-    """A scene whose input is a drive file and its overrides: ``resolve`` takes ``file``
-    and ``section.key`` overrides, reads and validates the file."""
+    """A scene whose input is a drive file and its overrides: ``resolve`` takes ``file``,
+    the model parameters (:data:`MODEL_KEYS`, also given as their file keys) and
+    ``section.key`` overrides, reads and validates the file; the model parameters resolve
+    to the values the file (with its overrides) sets."""
 
     def resolve(self, overrides: dict | None = None) -> dict:
         overrides = {k: str(v) for k, v in (overrides or {}).items()}
         path = overrides.pop("file", DEFAULT_FILE)
+        joined = overrides.pop("set", "")  # resolved parameters resolve to themselves
+        overrides = {**dict(item.split("=", 1) for item in joined.split(SEP) if "=" in item),
+                     **overrides}
+        model = {}
+        for name, key in MODEL_KEYS.items():
+            given = [v for v in (overrides.pop(name, None), overrides.pop(key, None))
+                     if v is not None]
+            if len(set(given)) > 1:
+                raise InputError(f"{key}: given twice ({name} = {given[0]}, {key} = "
+                                 f"{given[1]}); allowed: one value")
+            model[name] = given[0] if given else None
         p = {"file": path, "set": SEP.join(f"{k}={v}" for k, v in overrides.items())}
-        load(p["file"], _items(p))  # InputError naming the file key
-        return p
+        desc = load(p["file"], _items(p) + [f"{MODEL_KEYS[k]}={v}" for k, v in model.items()
+                                            if v is not None])  # InputError naming the key
+        return {**p, "n_elements": int(desc.belt["n_elements"]), "dt": float(desc.run["dt"]),
+                "gauss_points": int(desc.contact["gauss_points"])}
+
+
+def steady_reference(p: dict) -> dict:
+    """:func:`analytic.belt_steady.solve` on the drive of the resolved parameters ``p``:
+    its layout (a tensioner at its file position as the arm's nominal one), the laws' final
+    values (driver speed, load torques, damping, the arm's spring), the belt's EA, rho A,
+    reference length and the friction's mu.  InputError (a ValueError) where the steady
+    belt does not exist."""
+    from analytic.belt_steady import path_length, solve
+    desc = load(p["file"], _items(p))
+    pulleys = [_steady_pulley(q) for q in desc.pulleys]
+    for i, q in enumerate(desc.pulleys):
+        if q.law == "tensioner":
+            pulleys[i].update(pivot=q.params["pivot"], stiffness=q.params["arm_stiffness"],
+                              preload=q.params["arm_preload"])
+            pulleys[i]["preload"] *= _into(pulleys, i, q, path_length)
+    b = desc.belt
+    return solve(pulleys, EA=b["EA"], rhoA=b["rho"] * b["b"] * b["h"], L0=b["length"],
+                 mu=desc.friction["mu"])
+
+
+def _steady_pulley(q) -> dict:
+    out = {"name": q.name, "centre": q.centre, "radius": q.radius, "side": q.side,
+           "law": q.law}
+    if q.law == "prescribed":
+        out["omega"] = q.params["omega_final"]
+    elif q.law == "driven":
+        out.update(torque=q.params["load_torque"], damping=q.params["damping"])
+    elif q.law != "fixed":
+        out["damping"] = q.params["damping"]
+    return out
+
+
+def _into(pulleys, i, q, path_length) -> float:
+    """+1 if turning tensioner i's arm counter-clockwise lengthens the path, else -1 (the
+    reference's preload turns the arm into the belt, the file's counter-clockwise)."""
+    turned = [dict(x) for x in pulleys]
+    a = np.arctan2(*np.subtract(q.centre, q.params["pivot"])[::-1]) + 1e-6
+    turned[i]["centre"] = np.add(q.params["pivot"], q.params["arm_length"]
+                                 * np.array([np.cos(a), np.sin(a)]))
+    return float(np.sign(path_length(turned) - path_length(pulleys)))
 
 
 SCENE = FileScene(
@@ -192,5 +256,10 @@ SCENE = FileScene(
     "idler, tensioner and fixed pulleys, on the belt's inner side or its back.",
     (Param("file", DEFAULT_FILE, str, doc="the TOML drive file (ancf run belt-drive --file)"),
      Param("set", "", str, doc=f"the drive file's overrides applied, '{SEP}'-separated "
-           "(--set section.key=value)")),
+           "(--set section.key=value), the model parameters below apart"),
+     Param("n_elements", None, int, doc="belt elements (the file's belt.n_elements unless "
+           "given)"),
+     Param("dt", None, float, "s", "time step (the file's run.dt unless given)"),
+     Param("gauss_points", None, int, doc="contact points per element (the file's "
+           "contact.gauss_points unless given)")),
     run, warn=warn, swept=False)

@@ -61,6 +61,31 @@ def modal_scene(name: str) -> Scene:
     return replace(sc, params=sc.params + sc.modal_params, warn=None)
 
 
+#: ``ancf sweep|recommend SCENE --quantity frequency``: the bending modes compared
+COMPARED = Param("count", 3, int, doc="frequencies compared (sweep and recommend "
+                 "--quantity frequency): the lowest K bending modes, those with more than "
+                 "half their sampled motion across the first axis", lo=1, hi=50)
+
+
+def frequency_scene(name: str) -> Scene:
+    """``ancf modes NAME`` as a scene of the sweeps (``--quantity frequency``): its
+    parameters and ``count`` (:data:`COMPARED`), about the reference state, with the
+    lowest 2 count + 2 modes computed (fewer if the reduced system is smaller) so that the
+    study layer finds ``count`` bending modes among them; the results are ``ancf
+    modes``'s."""
+    sc = modal_scene(name)
+    return replace(sc, params=sc.params + (COMPARED,), run=partial(_run_compared, sc.modal))
+
+
+def _run_compared(modal, p: dict) -> SceneResult:
+    mm = modal(p)
+    n = mm.pattern.n
+    if n < 2:
+        raise InputError(f"n_elements = {p.get('n_elements')} is out of range for modes: the "
+                         "reduced system has fewer than 2 unknowns")
+    return _run(lambda _: mm, min(2 * p["count"] + 2, n - 1), "reference", p)
+
+
 def _count(value) -> int | None:
     """``count`` as an integer >= 1 (None: the default); its upper bound needs the model."""
     allowed = "allowed: an integer >= 1 and below the reduced size of the model"

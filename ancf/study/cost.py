@@ -52,6 +52,10 @@ first run 1.8x), as good as a refit (NNLS: 8 % / 17 %), so no belt table was add
 ``cpu_time_s`` now leaves compiling and loading out, as ``compile_cpu_s``, so :func:`calibrate`
 fits the solves alone.)
 
+``ancf modes`` runs (``--quantity frequency``) count as static ones: the equilibrium's
+Newton iterations (none about the reference), two tangent evaluations (stiffness and
+mass) and the eigensolver's factorisations.
+
 Missing counters degrade gracefully: static runs use ``tangent_evaluations`` and
 ``factorizations`` when the solver reports them, else ``newton_iterations``; a run whose
 results carry none of the counters has ``work`` NaN and ranks after every counted run.
@@ -76,6 +80,10 @@ WEIGHTS = {
     "alpha": {"runs": 1e6, "forces": 600.0, "tangents": 0.0, "factorizations": 0.0,
               "steps": 0.0, "kernel_points": 1.0, "factor_dofs": 150.0, "stability_dofs": 0.0},
 }
+
+#: the elastic Gauss points of a drive file's belt (``belt-drive``: the file's
+#: belt.elastic_points default; the scene's parameters do not carry it)
+DRIVE_ELASTIC_POINTS = 5
 
 #: integrators whose force evaluations (nfev) include the tangent evaluations (njev)
 TANGENT_WITHIN_FORCE = ("generalized-alpha",)
@@ -105,7 +113,8 @@ def belt_shape(params) -> tuple[int, int]:
     knob): 12 coordinates (r, r_x, r_y at two nodes), elastic plus contact points."""
     from ancf.elements.dufva2d import DufvaBelt2D
     contact = _num(params.get("gauss_points")) or 0
-    return 4 * len(DufvaBelt2D.slots), int(_num(params.get("elastic_points")) + contact)
+    elastic = _num(params.get("elastic_points")) or DRIVE_ELASTIC_POINTS
+    return 4 * len(DufvaBelt2D.slots), int(elastic + contact)
 
 
 def plate_belt_shape(params) -> tuple[int, int]:
@@ -130,7 +139,8 @@ def element_shape(params) -> tuple[int, int]:
     if cls is None and _num(params.get("ng")):  # the thin plate: 36 coordinates, ng x ng points
         return 36, int(_num(params.get("ng"))) ** 2
     if cls is None:
-        return belt_shape(params) if _num(params.get("elastic_points")) else (0, 0)
+        return belt_shape(params) if (_num(params.get("elastic_points"))
+                                      or params.get("file") is not None) else (0, 0)
     spec = getattr(cls, "schemes", {}).get(params.get("integration"), params.get("integration"))
     return 4 * len(cls.slots), quadrature_points(str(spec))
 
@@ -152,18 +162,31 @@ def _stability_checked(results) -> bool:
     return _num(results.get("negative_tangent_eigenvalues")) is not None
 
 
+def _modal(results) -> bool:
+    """An ``ancf modes`` run (its stiffness and mass assembled once each: counted as two
+    tangent evaluations beside the equilibrium's Newton iterations)."""
+    return _num(results.get("reduced_size")) is not None
+
+
+def _integrator(params) -> str | None:
+    """The run's integrator; a drive file's (``file``) is generalised-alpha."""
+    if params.get("integrator") is None and params.get("file") is not None:
+        return "generalized-alpha"
+    return params.get("integrator")
+
+
 def _evaluations(params, results) -> tuple | None:
     """(kind, force evaluations, tangent evaluations, factorisations, steps) or None."""
     if _num(results.get("nfev")) is not None:
         nfev, njev = _num(results.get("nfev")), _first(results, "njev") or 0.0
         nlu, steps = _first(results, "nlu") or 0.0, _first(results, "steps") or 0.0
-        if params.get("integrator") in TANGENT_WITHIN_FORCE:
+        if _integrator(params) in TANGENT_WITHIN_FORCE:
             return "alpha", max(nfev - njev, 0.0), njev, nlu, steps
         return "dynamic", nfev, njev, nlu, steps
     its = _first(results, "newton_iterations")
     tangents = _first(results, "tangent_evaluations")
     if tangents is None and its is not None:
-        tangents = its + _stability_checked(results)
+        tangents = its + _stability_checked(results) + 2 * _modal(results)
     factors = _first(results, "factorizations", "newton_iterations")
     if tangents is None or factors is None:
         return None

@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 
 from ancf.study.cost import calibrate, counts, with_work, work
-from ancf.study.references import (ReferenceFailed, cache_root, model_physics, spec,
+from ancf.study.references import (ReferenceFailed, cache_root, model_physics, runner, spec,
                                    stable_hash)
 from ancf.study.selection import WORK_TIE, cheapest_first
 from ancf.common.params import InputError
@@ -65,12 +65,14 @@ def _given(v) -> bool:
     return v is not None and str(v) not in ("None", "nan")
 
 
-def describe(p: dict, dynamic: bool) -> str:
+def describe(p: dict, dynamic: bool, quantity: str = "results") -> str:
     """Short text of a model configuration."""
     parts = ([f"{p.get('element')} element", f"{p.get('integration')} quadrature",
               f"n = {p.get('n_elements')}"] if p.get("element") is not None else _belt_parts(p))
-    if dynamic:
-        integ = p.get("integrator")
+    if quantity == "frequency":
+        parts.append("eigen solve about the reference")
+    elif dynamic:
+        integ = p.get("integrator") or "generalized-alpha"  # a drive file's: its dt
         parts.append(f"{integ}, dt = {p.get('dt'):g}" if integ == "generalized-alpha"
                      else f"{integ}, rtol = {p.get('rtol'):g}")
         if p.get("newton_tol") is not None:
@@ -141,16 +143,19 @@ def _missing_reference(df) -> str | None:
 
 def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: str | None = None,
               data=None, workers: int | None = None, scheduler=None, time_limit: float = 300.0,
-              progress: bool = True, log=None) -> dict:
+              progress: bool = True, log=None, quantity: str = "results") -> dict:
     """The cheapest configuration meeting ``tol`` (see the module doc).  ``fixed``:
     parameter overrides (physical parameters define the problem; fixed knobs restrict
-    the candidates)."""
+    the candidates).  ``quantity = "frequency"``: the error is that of the lowest
+    ``count`` bending frequencies (``ancf modes``) against the scene's frequency
+    reference (:data:`ancf.study.references.FREQUENCY_SPECS`)."""
     from ancf.scenes import SCENES
     if scene not in SCENES:
         raise InputError(f"scene: unknown name {scene!r}; allowed: {', '.join(SCENES)}")
     if not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol > 0):
         raise InputError(f"tol = {tol!r} is out of range; allowed: a number > 0")
-    sc, s = SCENES[scene], spec(scene)
+    s = spec(scene, quantity)
+    sc = runner(scene, quantity)
     ref = s.reference(reference)
     fixed = dict(fixed or {})
     base = sc.resolve(fixed)
@@ -175,11 +180,13 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
                              f"{ref.name!r} for these physical parameters")
     else:
         grids = _restrict(s.recommend_grids, fixed_knobs)
-        key = stable_hash({"physical": physical, "reference": ref.name, "grids": grids})
+        key = stable_hash({"physical": physical, "reference": ref.name, "grids": grids,
+                           **({"quantity": quantity} if quantity != "results" else {})})
         out = cache_root() / "recommend" / f"{scene}-{key}.parquet"
         source = str(out)
         df = run_sweep(scene, grids, out=out, fixed=fixed, reference=ref.name, workers=workers,
-                       scheduler=scheduler, time_limit=time_limit, progress=progress, log=log)
+                       scheduler=scheduler, time_limit=time_limit, progress=progress, log=log,
+                       quantity=quantity)
         df = rows_for(df, scene, physical)
 
     df = with_work(df)
@@ -193,7 +200,8 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
 
     def entry(row):
         p = _params(row, names)
-        return {"model": describe(p, s.dynamic), "params": {k: p[k] for k in s.knobs if k in p},
+        return {"model": describe(p, s.dynamic, quantity),
+                "params": {k: p[k] for k in s.knobs if k in p},
                 "error": float(row["error"]), "cpu_time_s": float(row["cpu_time_s"]),
                 "work": float(row["work"])}
 
@@ -208,8 +216,9 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
         cheap_ex = cheapest_first(excluded).iloc[0]
         evidence["excluded_for_physics"] = {**entry(cheap_ex), "lacks": cheap_ex["_lacks"],
                                             "count": int(len(excluded))}
-    result = {"scene": scene, "tol": tol, "reference": ref.name, "found": bool(len(adequate))}
-    default = _default_model(scene, base, s, ref, df, names)
+    result = {"scene": scene, "tol": tol, "reference": ref.name, "found": bool(len(adequate)),
+              "quantity": quantity}
+    default = _default_model(scene, base, s, ref, df, names, sc)
     evidence["default_model"] = default
 
     if len(adequate):
@@ -224,7 +233,7 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
             c = cheaper.loc[cheaper["error"].astype(float).idxmin()]
             evidence["best_cheaper_run"] = entry(c)
         provides = sorted(model_physics(scene, params))
-        result["model"] = describe(params, s.dynamic)
+        result["model"] = describe(params, s.dynamic, quantity)
         lines.append(f"{scene}: cheapest model with error <= {tol:g} against {ref.name}: "
                      f"{result['model']}; error {result['error']:.3g}, work {result['work']:.3g} "
                      f"units, CPU {result['cpu_time_s']:.3g} s ({len(adequate)} of {len(df)} runs "
@@ -286,14 +295,13 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     return result
 
 
-def _default_model(scene, base, s, ref, df, names) -> dict:
+def _default_model(scene, base, s, ref, df, names, sc) -> dict:
     """Error, CPU time and work of the scene's default knobs at these physical parameters
-    (from the data when present, else run once here)."""
-    from ancf.scenes import SCENES
-    sc = SCENES[scene]
+    (from the data when present, else run once here); ``sc``: the scene the sweep runs."""
     p = sc.resolve(s.physical(base))
     rows = rows_for(df, scene, {k: p[k] for k in names if k in df}) if len(df) else df
-    out = {"model": describe(p, s.dynamic), "params": {k: p[k] for k in s.knobs if k in p}}
+    out = {"model": describe(p, s.dynamic, s.quantity),
+           "params": {k: p[k] for k in s.knobs if k in p}}
     if len(rows):
         r = rows.iloc[0]
         ok = r["status"] == "ok" and math.isfinite(float(r["error"]))
@@ -315,7 +323,7 @@ def _default_model(scene, base, s, ref, df, names) -> dict:
 def public(result: dict) -> dict:
     """The JSON printed by ``ancf recommend --json``."""
     keys = ("scene", "tol", "params", "error", "reference", "cpu_time_s", "found", "model",
-            "message", "evidence", "work")
+            "message", "evidence", "work", "quantity")
     return {k: _clean(result.get(k)) for k in keys}
 
 

@@ -244,6 +244,7 @@ class SceneSpec:
     dynamic: bool = False
     notes: str = ""
     provides: frozenset | None = None  # physics of a scene without an element choice
+    quantity: str = "results"  # what the runs compute: the scene's results or frequencies
 
     def reference(self, name: str | None = None) -> Reference:
         name = name or self.default_reference
@@ -734,6 +735,132 @@ def _bending_spec() -> SceneSpec:
                      notes="3D general bending (Mx = 0.5e6, My = 2e6 N m) against ANSYS.")
 
 
+def _drive_steady(p):
+    from ancf.scenes.belt_drive import steady_reference
+    from ancf.common.params import InputError
+    try:
+        return steady_reference(p)
+    except (InputError, ValueError) as exc:
+        raise ReferenceFailed(f"steady reference (analytic/belt_steady.py): {exc}") from None
+
+
+def _drive_error(res, ref, p):
+    """max of the span tensions' |T_mean − T_ref| / |T_ref| and the free pulleys'
+    |omega_mean − omega_ref| / |omega_ref| (every pulley but the prescribed and fixed)."""
+    spans = [abs(a["tension_mean_N"] - b["tension_N"]) / abs(b["tension_N"])
+             for a, b in zip(res["spans"], ref["spans"])]
+    speeds = [abs(a["omega_mean"] - b["omega"]) / abs(b["omega"])
+              for a, b in zip(res["pulleys"], ref["pulleys"])
+              if b["law"] not in ("prescribed", "fixed") and b["omega"]]
+    return float(max(spans + speeds))
+
+
+#: the drive file's model parameters (ancf.scenes.belt_drive.MODEL_KEYS)
+DRIVE_KNOBS = ("n_elements", "dt", "gauss_points")
+
+
+def _belt_drive_spec() -> SceneSpec:
+    refs = {"steady": Reference(
+        "steady", "analytic",
+        "steady extensible belt on the drive's layout (`analytic/belt_steady.py`: Bechtel's "
+        "string with the centrifugal term around the N pulleys, Coulomb stick and creep arcs, "
+        "the laws' final values); error = max of the spans' |T_mean − T_ref| / |T_ref| (mean "
+        "over run.steady_window and the span's middle third) and the free pulleys' |ω_mean − "
+        "ω_ref| / |ω_ref|. It includes the model gap (creep-rate against Coulomb friction, "
+        "the penalty's penetration: 1-2 % on the shipped examples) and whatever of the "
+        "start-up the window still holds", _drive_steady, _drive_error)}
+    grids = ({"n_elements": [30, 45, 60], "gauss_points": [5, 7]},)
+    return SceneSpec("belt-drive", DRIVE_KNOBS, frozenset({"axial", "bending", "inertia",
+                                                          "contact"}),
+                     refs, "steady", report_grids=grids, recommend_grids=grids, dynamic=True,
+                     provides=frozenset({"axial", "bending", "shear", "large-rotation",
+                                         "inertia", "contact"}),
+                     notes="A drive file (`--set file=PATH`; default the thesis drive) "
+                           "against the steady reference on its layout.")
+
+
+# ---------------------------------------------------------------------------------------
+# frequencies (``--quantity frequency``: ``ancf modes`` about the reference)
+# ---------------------------------------------------------------------------------------
+
+#: what a sweep computes: the scene's own results, or its natural frequencies
+QUANTITIES = ("results", "frequency")
+
+
+def bending_frequencies(res: dict, count: int) -> np.ndarray:
+    """The lowest ``count`` bending frequencies (Hz) of ``ancf modes`` results: the modes
+    with more than half their sampled motion across the first axis (beams: off the
+    centreline; the plate, its in-plane coordinates fixed: every mode).  ValueError when
+    fewer were computed."""
+    f = [x for x, s in zip(res["frequencies_hz"] or [], res["mode_direction_shares"] or [])
+         if 1.0 - s[0] > 0.5][:count]
+    if len(f) < count:
+        raise ValueError(f"{len(f)} bending mode(s) among the lowest {len(res['frequencies_hz'] or [])}"
+                         f", {count} compared: the mesh is too coarse")
+    return np.array(f)
+
+
+def _frequency_error(res, ref, p):
+    """max over the first K modes of |f_k / f_ref,k - 1|."""
+    f = bending_frequencies(res, int(p["count"]))
+    return float(np.max(np.abs(f / np.asarray(ref["frequencies_hz"]) - 1.0)))
+
+
+def _timoshenko_modes(support: str):
+    def values(p):
+        from analytic import beam_modes
+        return {"frequencies_hz": [float(x) for x in beam_modes.timoshenko(
+            support, count=int(p["count"]), L=p["L"], E=p["E"],
+            G=p["E"] / (2.0 * (1.0 + p["nu"])), I=p["b"] * p["h"] ** 3 / 12.0,
+            A=p["b"] * p["h"], rho=p["rho"], ks=p["ks"])]}
+    return values
+
+
+def _navier_modes(p):
+    from analytic import plate_modes
+    return {"frequencies_hz": [float(x) for x in plate_modes.navier_frequencies(
+        p["a"], p["a"], p["h"], p["E"], p["nu"], p["rho"], int(p["count"]))[0]]}
+
+
+_FREQUENCY_ERROR = ("error = max over the lowest K = count bending modes of |f_k / f_ref,k − 1| "
+                    "(`ancf modes` about the reference, consistent mass)")
+_BEAM_FREQUENCY_MESHES = (2, 4, 8, 16, 32, 64, 128)
+
+
+def _beam_frequency_spec(scene: str, support: str, what: str) -> SceneSpec:
+    name = "timoshenko-frequencies"
+    refs = {name: Reference(
+        name, "analytic", f"Timoshenko beam frequencies, {what} (`analytic/beam_modes.py`: "
+        f"shear and rotary inertia, frequency equations solved numerically); {_FREQUENCY_ERROR}",
+        _timoshenko_modes(support), _frequency_error)}
+    grids = _element_grids(_BEAM_FREQUENCY_MESHES)
+    return SceneSpec(scene, STATIC_KNOBS, frozenset({"bending", "shear"}), refs, name,
+                     report_grids=grids, recommend_grids=grids, quantity="frequency",
+                     notes=f"The {what} beam's lowest bending frequencies against Timoshenko.")
+
+
+def _plate_frequency_spec() -> SceneSpec:
+    name = "navier-frequencies"
+    refs = {name: Reference(
+        name, "analytic", "Navier's frequencies of the simply supported Kirchhoff plate "
+        f"(`analytic/plate_modes.py`); {_FREQUENCY_ERROR}", _navier_modes, _frequency_error)}
+    grid = ({"n_elements": [2, 4, 6, 8, 12, 16, 24], "ng": [3, 4]},)
+    return SceneSpec("plate-square", PLATE_KNOBS, frozenset({"bending", "3D"}), refs, name,
+                     report_grids=grid, recommend_grids=grid,
+                     provides=frozenset({"bending", "3D"}), quantity="frequency",
+                     notes="The simply supported square plate's lowest frequencies against "
+                           "Navier.")
+
+
+#: Scene name -> spec factory of its frequencies (``--quantity frequency``).
+FREQUENCY_SPECS: dict[str, Callable[[], SceneSpec]] = {
+    "cantilever": lambda: _beam_frequency_spec("cantilever", "cantilever", "clamped–free"),
+    "simply-supported": lambda: _beam_frequency_spec("simply-supported", "simply-supported",
+                                                     "simply supported"),
+    "plate-square": _plate_frequency_spec,
+}
+
+
 #: Scene name -> spec factory.  One entry per scene; dynamic ones activate with their scene.
 SPECS: dict[str, Callable[[], SceneSpec]] = {
     "cantilever": _cantilever_spec,
@@ -749,18 +876,46 @@ SPECS: dict[str, Callable[[], SceneSpec]] = {
     "beam3d-cantilever": _beam3d_spec,
     "princeton-beam": _princeton_spec,
     "beam3d-bending": _bending_spec,
+    "belt-drive": _belt_drive_spec,
 }
 
 
+def runner(scene: str, quantity: str = "results"):
+    """The :class:`~ancf.scenes.base.Scene` a sweep runs: the scene itself, or for
+    ``quantity = "frequency"`` its ``ancf modes`` about the reference
+    (:func:`ancf.scenes.modes.frequency_scene`)."""
+    check_quantity(scene, quantity)
+    if quantity == "frequency":
+        from ancf.scenes.modes import frequency_scene
+        return frequency_scene(scene)
+    from ancf.scenes import SCENES
+    return SCENES[scene]
+
+
+def check_quantity(scene: str, quantity: str) -> None:
+    """InputError unless ``quantity`` is one of :data:`QUANTITIES` that ``scene`` has."""
+    from ancf.common.params import InputError
+    if quantity not in QUANTITIES:
+        raise InputError(f"quantity: {quantity!r} is not valid; allowed: "
+                         f"{', '.join(QUANTITIES)}")
+    if quantity == "frequency" and scene not in FREQUENCY_SPECS:
+        raise InputError(f"quantity frequency: scene {scene!r} has no frequency reference; "
+                         f"allowed: the scenes {', '.join(FREQUENCY_SPECS)}")
+
+
 @lru_cache(maxsize=None)
-def spec(scene: str) -> SceneSpec:
-    """The spec of a scene of ``SCENES``: its entry in :data:`SPECS`, else one built from
+def spec(scene: str, quantity: str = "results") -> SceneSpec:
+    """The spec of a scene of ``SCENES``: its entry in :data:`SPECS` (for ``quantity =
+    "frequency"``: in :data:`FREQUENCY_SPECS`), else one built from
     the scene's optional ``knobs`` / ``needs`` / ``reference`` fields with a self-reference
     at 8x the default element count."""
     from ancf.scenes import SCENES
     from ancf.common.params import InputError
     if scene not in SCENES:
         raise InputError(f"scene: unknown name {scene!r}; allowed: {', '.join(SCENES)}")
+    check_quantity(scene, quantity)
+    if quantity == "frequency":
+        return FREQUENCY_SPECS[scene]()
     if scene in SPECS:
         return SPECS[scene]()
     sc = SCENES[scene]
@@ -799,13 +954,12 @@ def model_physics(scene: str, params: dict) -> frozenset:
     return frozenset(got)
 
 
-def rescore(df, scene: str, reference: str):
+def rescore(df, scene: str, reference: str, quantity: str = "results"):
     """Errors of sweep rows (a DataFrame from :mod:`ancf.study.sweep`) against another reference,
     from the stored scalar results (``res_*`` columns); NaN where not converged."""
-    from ancf.scenes import SCENES
-    s = spec(scene)
+    s = spec(scene, quantity)
     ref = s.reference(reference)
-    names = [p.name for p in SCENES[scene].params]
+    names = [p.name for p in runner(scene, quantity).params]
     cache = {}
     out = []
     for _, row in df.iterrows():

@@ -47,7 +47,7 @@ import numpy as np
 import pandas as pd
 
 from ancf.study.cost import row_counts, work
-from ancf.study.references import ReferenceFailed, spec, stable_hash
+from ancf.study.references import ReferenceFailed, runner, spec, stable_hash
 from ancf.common.threads import BLAS_ENV
 from ancf.common.params import InputError
 from ancf.common.paths import REPO
@@ -61,12 +61,11 @@ _ENV = {**BLAS_ENV, "PYTHONWARNINGS": "ignore"}
 # grids and tasks
 # ---------------------------------------------------------------------------------------
 
-def parse_grid(scene: str, items) -> dict:
+def parse_grid(scene: str, items, quantity: str = "results") -> dict:
     """``["n_elements=2,4,8", "integration=thesis;normal=2x2,shear=1x1"]`` -> {name: [values]}.
     Values are separated by ',' (or by ';' when a value itself holds commas) and parsed
     by the scene's parameter (bad values raise InputError naming the field)."""
-    from ancf.scenes import SCENES
-    sc = SCENES[scene]
+    sc = runner(scene, quantity)
     params = {p.name: p for p in sc.params}
     grid = {}
     for item in items or []:
@@ -105,22 +104,24 @@ def expand(grids, fixed: dict | None = None) -> list[dict]:
     return out
 
 
-def run_key(scene: str, params: dict) -> str:
+def run_key(scene: str, params: dict, quantity: str = "results") -> str:
+    if quantity != "results":  # the scene's own runs keep their keys
+        return stable_hash({"scene": scene, "params": params, "quantity": quantity})
     return stable_hash({"scene": scene, "params": params})
 
 
-def make_tasks(scene: str, overrides: list[dict], reference: str | None = None) -> list[dict]:
+def make_tasks(scene: str, overrides: list[dict], reference: str | None = None,
+               quantity: str = "results") -> list[dict]:
     """Resolve every combination, key it, and attach the reference values (computed
     once per distinct physical problem, in this process)."""
-    from ancf.scenes import SCENES
-    sc = SCENES[scene]
-    s = spec(scene)
+    sc = runner(scene, quantity)
+    s = spec(scene, quantity)
     ref = s.reference(reference)
     refs: dict = {}
     tasks = []
     for i, ov in enumerate(overrides):
         t = {"index": i, "scene": scene, "reference": ref.name, "ref_values": None,
-             "ref_error": None}
+             "ref_error": None, "quantity": quantity}
         try:
             params = sc.resolve(ov)
         except InputError as exc:
@@ -129,7 +130,7 @@ def make_tasks(scene: str, overrides: list[dict], reference: str | None = None) 
             tasks.append(t)
             continue
         t.update(params={k: _jsonable(v) for k, v in params.items()},
-                 key=run_key(scene, params))
+                 key=run_key(scene, params, quantity))
         pk = stable_hash(s.physical(params))
         if pk not in refs:
             try:
@@ -153,6 +154,8 @@ def _jsonable(v):
 
 def _base_row(task: dict) -> dict:
     row = {"key": task["key"], "scene": task["scene"]}
+    if task.get("quantity", "results") != "results":
+        row["quantity"] = task["quantity"]
     row.update(task.get("params") or task.get("overrides") or {})
     row.update(status=None, converged=False, message="", error=float("nan"),
                reference=task["reference"], cpu_time_s=float("nan"),
@@ -168,14 +171,14 @@ def failure_row(task: dict, status: str, message: str, wall: float = float("nan"
 
 def run_case(task: dict) -> dict:
     """Run one task; never raises (failures become rows)."""
-    from ancf.scenes import SCENES
+    quantity = task.get("quantity", "results")
     if task.get("invalid"):
         return failure_row(task, "invalid", f"invalid input: {task['invalid']}", 0.0)
     row = _base_row(task)
     t0 = time.perf_counter()
     try:
         with np.errstate(all="ignore"):
-            out, _ = SCENES[task["scene"]].execute(task["params"])
+            out, _ = runner(task["scene"], quantity).execute(task["params"])
     except InputError as exc:
         return failure_row(task, "invalid", f"invalid input: {exc}", time.perf_counter() - t0)
     except Exception as exc:  # noqa: BLE001 - a failing run is data, not a crash
@@ -207,7 +210,7 @@ def run_case(task: dict) -> dict:
     row["status"] = "ok"
     if task.get("ref_values") is not None:
         try:
-            ref = spec(task["scene"]).reference(task["reference"])
+            ref = spec(task["scene"], quantity).reference(task["reference"])
             err = float(ref.error(res, task["ref_values"], out["params"]))
         except Exception as exc:  # noqa: BLE001
             err, row["message"] = float("nan"), f"{out['message']}; error not computed: {exc}"
@@ -664,22 +667,24 @@ def _order(df: pd.DataFrame, param_names, keys_in_order) -> pd.DataFrame:
 def run_sweep(scene: str, grids=None, *, out, fixed: dict | None = None,
               reference: str | None = None, workers: int | None = None, scheduler=None,
               time_limit: float = 600.0, retry_failed: bool = False, progress: bool = True,
-              log=None) -> pd.DataFrame:
+              log=None, quantity: str = "results") -> pd.DataFrame:
     """Run (or resume) a sweep; returns every row of ``out`` (this grid's first, in grid
     order).  ``grids``: dict or list of dicts {param: [values]} (default: the scene's
     report grid); ``fixed``: overrides applied to every run; ``scheduler``: a Dask
-    scheduler address (or a ``distributed.Client``) instead of local processes."""
+    scheduler address (or a ``distributed.Client``) instead of local processes;
+    ``quantity``: ``results`` (the scene's runs) or ``frequency`` (its ``ancf modes`` about
+    the reference against the frequency references, :mod:`ancf.study.references`)."""
     from ancf.scenes import SCENES
     if scene not in SCENES:
         raise InputError(f"scene: unknown name {scene!r}; allowed: {', '.join(SCENES)}")
     if not time_limit > 0:
         raise InputError(f"time_limit = {time_limit!r} is out of range; allowed: a number > 0")
     out = _check_out(out)
-    s = spec(scene)
+    s = spec(scene, quantity)
     grids = s.report_grids if grids is None else grids
     ref = s.reference(reference)
     log = log or (lambda msg: print(msg, file=sys.stderr, flush=True))
-    tasks = make_tasks(scene, expand(grids, fixed), ref.name)
+    tasks = make_tasks(scene, expand(grids, fixed), ref.name, quantity)
     if tasks and all(t.get("invalid") for t in tasks):  # nothing to run: bad input, not rows
         raise InputError(tasks[0]["invalid"])
     keys = [t["key"] for t in tasks]
@@ -728,7 +733,7 @@ def run_sweep(scene: str, grids=None, *, out, fixed: dict | None = None,
             gen.close()
         df = read_rows(out)
         if len(df):
-            df = _order(_with_work(df), [p.name for p in SCENES[scene].params], keys)
+            df = _order(_with_work(df), [p.name for p in runner(scene, quantity).params], keys)
             _write_table(df, out)
         if jp.exists():
             jp.unlink()
