@@ -29,8 +29,8 @@ import numpy as np
 
 from ancf.belts.drive_data import DriveDescription, load_law
 from ancf.checks.belt2d import Check
+from ancf.checks.belt_drives import steady_reference
 from ancf.common.paths import REPO
-from analytic.belt_steady import path_length, solve
 
 DATA = REPO / "tests" / "data" / "thread"
 CASE = "tt245-hh50-nn4-ns4-cs10-fs10-ib1-df5"   # the base case (README)
@@ -165,41 +165,6 @@ def _driver(desc):
 
 def _driven(desc):
     return next(q for q in desc.pulleys if q.law == "driven")
-
-
-def steady_reference(desc: DriveDescription) -> dict:
-    """:func:`analytic.belt_steady.solve` on the drive's layout, its final laws (the
-    prescribed speeds' and load torques' end values) and its belt."""
-    pulleys = []
-    for p in desc.pulleys:
-        q = {"name": p.name, "centre": p.centre, "radius": p.radius, "side": p.side,
-             "law": p.law}
-        if p.law == "prescribed":
-            q["omega"] = p.params["omega_final"]
-        elif p.law == "driven":
-            q.update(torque=p.params["load_torque"], damping=p.params["damping"])
-        elif p.law != "fixed":
-            q["damping"] = p.params["damping"]
-        if p.law == "tensioner":
-            q.update(pivot=p.params["pivot"], stiffness=p.params["arm_stiffness"],
-                     preload=p.params["arm_preload"])
-        pulleys.append(q)
-    for i, p in enumerate(desc.pulleys):
-        if p.law == "tensioner":
-            pulleys[i]["preload"] *= _into(pulleys, i, p)
-    b = desc.belt
-    return solve(pulleys, EA=b["EA"], rhoA=b["rho"] * b["b"] * b["h"], L0=b["length"],
-                 mu=desc.friction["mu"])
-
-
-def _into(pulleys, i, p) -> float:
-    """+1 if turning tensioner i's arm counter-clockwise lengthens the path, else -1 (the
-    reference's preload turns the arm into the belt, the file's counter-clockwise)."""
-    turned = [dict(q) for q in pulleys]
-    a = np.arctan2(*np.subtract(p.centre, p.params["pivot"])[::-1]) + 1e-6
-    turned[i]["centre"] = np.add(p.params["pivot"], p.params["arm_length"]
-                                 * np.array([np.cos(a), np.sin(a)]))
-    return float(np.sign(path_length(turned) - path_length(pulleys)))
 
 
 def _pct(value: float, reference: float) -> float:
