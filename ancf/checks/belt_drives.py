@@ -81,9 +81,9 @@ def serpentine_checks(results: dict, desc: DriveDescription) -> list[Check]:
     laws = {p.name: p.law for p in desc.pulleys}
     driven = min(abs(T[n]) for n, law in laws.items() if law == "driven")
     idle = max(abs(T[n]) for n, law in laws.items() if law in ("idler", "tensioner"))
-    rows = [(speeds, "speeds", "%", "largest |ω_ours − ω_ref| / ω_ref over the pulleys"),
-            (spans, "spans", "%", "largest |T_ours − T_ref| / T_ref over the spans"),
-            (arm, "arm", "deg", "|arm angle − the reference's equilibrium|"),
+    rows = [(speeds, "speeds", "%", "largest abs(ω_ours − ω_ref) / ω_ref over the pulleys"),
+            (spans, "spans", "%", "largest abs(T_ours − T_ref) / T_ref over the spans"),
+            (arm, "arm", "deg", "abs(arm angle − the reference's equilibrium)"),
             (100 * idle / driven, "idler", "%", "largest idler / tensioner moment, % of the "
              "smallest driven pulley's")]
     return [Check(name, v, 0.0, v, TOLERANCES[k], u, m)

@@ -204,5 +204,5 @@ def compare(results: dict, desc: DriveDescription, stored: Stored) -> list[Check
                      resisting, _pct((tight - slack) * R, resisting), TOLERANCES["balance"],
                      "N m", "% of load + damping ω over the window"))
     out.append(Check("THREAD span tensions vs the steady reference (worst span)", worst, 0.0,
-                     worst, TOLERANCES["steady"], "%", "largest |ours - reference| / reference"))
+                     worst, TOLERANCES["steady"], "%", "largest abs(ours − reference) / reference"))
     return out

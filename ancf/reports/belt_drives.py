@@ -139,7 +139,10 @@ def _thread_figures(cur: th.Curves, st: th.Stored) -> list:
         a.grid(alpha=0.3)
     ax[0].legend()
     times = save_figure(fig, "belt_drives_thread_time")
-    return [f"![THREAD along the belt](figures/{along.name})\n",
+    return ["Along the belt: our axial force is the element's E A α1 ε_l (Eq. 3.17) and our "
+            "contact forces are per unit stress-free length; THREAD's are Exudyn's cable force "
+            "EA (ε − ε_ref) and its contact pressure times the width, per unit laid length.\n",
+            f"![THREAD along the belt](figures/{along.name})\n",
             f"![THREAD in time](figures/{times.name})\n"]
 
 
@@ -214,9 +217,9 @@ def belt_drives_chapter() -> tuple[str, dict]:
     text, serp = serpentine_section()
     parts += text
     checks = thread + serp
-    status = {c.name: "PASS" if c.passed else "FAIL" for c in checks}
-    for name in (*THREAD_NAMES, *bd.SERPENTINE_NAMES):
-        status.setdefault(name, QUICK_SKIPPED if settings().quick else "NOT RUN")
+    done = {c.name: "PASS" if c.passed else "FAIL" for c in checks}
+    status = {name: done.get(name, QUICK_SKIPPED if settings().quick else "NOT RUN")
+              for name in (*THREAD_NAMES, *bd.SERPENTINE_NAMES)}
     if checks:
         parts += checks_section(checks, status, "belt_drives",
                                 "`tests/test_thread.py` (the comparison) and "
