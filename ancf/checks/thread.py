@@ -125,6 +125,21 @@ def aligned(results: dict, L0: float, length: float) -> np.ndarray:
     return np.mod(sense * (s - top), L0) * length / L0
 
 
+def true_force(N, EA_alpha1: float):
+    """The belt's force (N) from our axial force N = E A alpha1 eps_l (Eq. 3.17, eps_l the
+    Green strain (|r_x|^2 - 1)/2): the energy's derivative by the stretch |r_x| =
+    sqrt(1 + 2 N / (E A alpha1)) is N |r_x|, the force that balances the pulleys' moments
+    and that Exudyn's cable reports (EA (|r'| - 1 - eps_ref))."""
+    N = np.asarray(N, dtype=float)
+    return N * np.sqrt(1.0 + 2.0 * N / EA_alpha1)
+
+
+def stiffness(desc: DriveDescription) -> float:
+    """E A alpha1 of the drive's belt, N."""
+    b = desc.belt
+    return b["E"] * b["b"] * b["h"] * b["alpha1"]
+
+
 def _periodic(sigma, y, at, length: float) -> np.ndarray:
     order = np.argsort(sigma)
     return np.interp(at, np.asarray(sigma)[order], np.asarray(y)[order], period=length)
@@ -135,7 +150,7 @@ class Curves:
     """Our curves at t_end on THREAD's coordinate sigma (m), and the time series (s)."""
 
     sigma: np.ndarray
-    axial_force: np.ndarray   # N
+    axial_force: np.ndarray   # N, true_force of ours
     speed: np.ndarray         # m/s
     normal: np.ndarray        # N/m
     tangential: np.ndarray    # N/m, along THREAD's increasing s
@@ -153,7 +168,8 @@ def curves(results: dict, desc: DriveDescription, stored: Stored) -> Curves:
     p = {q["name"]: q for q in results["pulleys"]}
     dr, dn = _driver(desc), _driven(desc)
     pick = lambda key: np.asarray(results[key])[order]  # noqa: E731
-    return Curves(sigma[order], pick("axial_force_N"), pick("speed_m_s"),
+    return Curves(sigma[order], true_force(pick("axial_force_N"), stiffness(desc)),
+                  pick("speed_m_s"),
                   pick("normal_force_N_m"), -pick("friction_force_N_m"),
                   np.asarray(results["times"]), np.asarray(p[dn.name]["omega"]),
                   -np.asarray(p[dr.name]["torque_Nm"]))
@@ -174,11 +190,13 @@ def _pct(value: float, reference: float) -> float:
 def compare(results: dict, desc: DriveDescription, stored: Stored) -> list[Check]:
     """Issue 21's acceptance figures of our run (``results`` of ``ancf run belt-drive
     --json``, ``desc`` its drive) against the stored case: errors in % (``difference``)
-    with the issue's tolerances.  The span forces are our spans' ``tension_mean_N`` (the
-    span reaching the driver is the tight one), the means over our ``run.steady_window``."""
+    with the issue's tolerances.  Forces are :func:`true_force` of ours (the span forces of
+    our spans' ``tension_mean_N``; the span reaching the driver is the tight one); means
+    over our ``run.steady_window``."""
     ref, cur = scalars(stored), curves(results, desc, stored)
     dr, dn = _driver(desc), _driven(desc)
-    spans = {(q["from"], q["to"]): q["tension_mean_N"] for q in results["spans"]}
+    spans = {(q["from"], q["to"]): float(true_force(q["tension_mean_N"], stiffness(desc)))
+             for q in results["spans"]}
     tight = next(v for (a, b), v in spans.items() if b == dr.name)
     slack = next(v for (a, b), v in spans.items() if a == dr.name)
     t = cur.t

@@ -139,9 +139,12 @@ def _thread_figures(cur: th.Curves, st: th.Stored) -> list:
         a.grid(alpha=0.3)
     ax[0].legend()
     times = save_figure(fig, "belt_drives_thread_time")
-    return ["Along the belt: our axial force is the element's E A α1 ε_l (Eq. 3.17) and our "
-            "contact forces are per unit stress-free length; THREAD's are Exudyn's cable force "
-            "EA (ε − ε_ref) and its contact pressure times the width, per unit laid length.\n",
+    return ["Along the belt and in the span forces, ours is the belt's force N |r_x| "
+            "(`ancf.checks.thread.true_force`: the element's N = E A α1 ε_l of Eq. 3.17 is taken "
+            "on the Green strain ε_l = (|r_x|² − 1)/2, and N |r_x| is the force that balances the "
+            "pulleys' moments, as the torque-balance row shows); our contact forces are per unit "
+            "stress-free length.  THREAD's are Exudyn's cable force EA (|r′| − 1 − ε_ref) and its "
+            "contact pressure times the width, per unit laid length.\n",
             f"![THREAD along the belt](figures/{along.name})\n",
             f"![THREAD in time](figures/{times.name})\n"]
 
