@@ -20,7 +20,8 @@ Writes ``peers_thread.json`` (``--t-end`` below 2.45 s: ``peers_thread_short.jso
 with keys ``schema``, ``started``, ``command``, ``machine``, ``settings``, ``ours``,
 ``exudyn`` (per side: ``cpu_s``, driven ``omega_driven`` at t_end and
 ``omega_driven_mean``, ``driver_torque_mean_Nm``, ``tension_tight_N`` and
-``tension_slack_N`` at t_end, the run's counts), ``ratio`` = ours / Exudyn CPU, and the
+``tension_slack_N`` at t_end (ours: the belt's force N |r_x| of
+:func:`ancf.checks.thread.true_force`, its axial force N beside it), the run's counts), ``ratio`` = ours / Exudyn CPU, and the
 markdown table beside it.
 """
 from __future__ import annotations
@@ -30,10 +31,13 @@ import datetime as dt
 import json
 import subprocess
 import sys
+from functools import partial
 from pathlib import Path
 
 import numpy as np
 
+from ancf.belts.drive_file import load
+from ancf.checks.thread import stiffness, true_force
 from benchmarks import peers
 from benchmarks.peers_thread_exudyn import N_ELEMENTS, SEGMENTS, STEP, T_END, WINDOW
 
@@ -70,13 +74,14 @@ def _ours(path: Path, t_end: float, extra: list, env: dict) -> dict:
     win = t >= t[-1] - window - 1e-9
     tight = next(s for s in r["spans"] if s["to"] == driver)
     slack = next(s for s in r["spans"] if s["from"] == driver)
+    force = partial(true_force, EA_alpha1=stiffness(load(path, sets)))  # N |r_x|, as Exudyn's
     return {"sets": sets, "converged": True, "cpu_s": out["cpu_time_s"],
             "compile_cpu_s": out["compile_cpu_s"], "warnings": out["warnings"],
             "omega_driven": p[driven]["omega"][-1], "omega_driven_mean": p[driven]["omega_mean"],
             "driver_torque_mean_Nm": float(-np.mean(np.array(p[driver]["torque_Nm"])[win])),
-            "tension_tight_N": tight["tension_N"], "tension_slack_N": slack["tension_N"],
-            "tension_tight_mean_N": tight["tension_mean_N"],
-            "tension_slack_mean_N": slack["tension_mean_N"],
+            "tension_tight_N": float(force(tight["tension_N"])),
+            "tension_slack_N": float(force(slack["tension_N"])),
+            "axial_force_tight_N": tight["tension_N"], "axial_force_slack_N": slack["tension_N"],
             **{k: r[k] for k in ("steps", "newton_iterations", "njev", "nlu")}}
 
 
