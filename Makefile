@@ -26,6 +26,7 @@ bench: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(PY) -m benchmarks.core_profile
 	$(PY) -m benchmarks.peers
 	$(PY) -m benchmarks.peers_belt
+	$(PY) -m benchmarks.peers_thread
 
 clean:
 	rm -rf $(VENV) .pytest_cache .benchmarks "$${XDG_CACHE_HOME:-$$HOME/.cache}/ancf-bench"

@@ -13,6 +13,8 @@ import pytest
 
 from ancf.checks.belt3d import CHECK_NAMES as BELT3D_ROWS
 from ancf.checks.belt2d import GAUSS_CHECK
+from ancf.checks.belt_drives import SERPENTINE_NAMES
+from ancf.reports.belt_drives import THREAD_NAMES
 from ancf.checks.frequencies import ACCEPT_MESH, AXIAL_MESHES, SUPPORTS
 from ancf.study.extremes import AXES, QUICK_SKIPPED
 from ancf.reports.__main__ import CHAPTERS
@@ -155,6 +157,10 @@ AGREES = {
        for name in BELT3D_ROWS[:7]},
     **{name: (("test_belt3d_checks", "test_settled_pretension_converges_with_the_element_count"),
               QUICK_SKIPPED) for name in BELT3D_ROWS[7:]},
+    **{name: (("test_thread", "test_perturbed_copy_fails"), QUICK_SKIPPED)
+       for name in THREAD_NAMES},
+    **{name: (("test_belt_npulley", "test_serpentine_settles_to_the_steady_reference"),
+              QUICK_SKIPPED) for name in SERPENTINE_NAMES},
 }
 #: rows a quick report does not compute (their test still runs)
 QUICK_ONLY_SKIPPED = (GAUSS_CHECK,)

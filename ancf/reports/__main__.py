@@ -16,6 +16,7 @@ from analytic import timoshenko
 from ancf.reports.belt2d import belt2d_chapter
 from ancf.reports.bechtel import bechtel_chapter
 from ancf.reports.belt3d import belt3d_chapter
+from ancf.reports.belt_drives import belt_drives_chapter
 from ancf.reports.beam3d_benchmarks import beam3d_benchmarks_chapter
 from ancf.reports.extremes import extremes_chapter
 from ancf.reports.frequencies import frequencies_chapter
@@ -195,7 +196,7 @@ def static_chapter() -> tuple[str, dict]:
 
 CHAPTERS = ("static_beams.md", "dynamics.md", "speed_accuracy.md", "extremes.md", "belt2d.md",
             "bechtel.md", "elements3d.md", "belt3d.md", "beam3d_benchmarks.md", "frequencies.md",
-            "speed_accuracy_frequencies.md")
+            "speed_accuracy_frequencies.md", "belt_drives.md")
 
 _INDEX = [
     "| report | contents |", "|---|---|",
@@ -236,6 +237,10 @@ _INDEX = [
     "CPU time per element, scheme and mesh (cantilever and simply supported beam vs "
     "Timoshenko, the simply supported plate vs Navier), cheapest configuration per error "
     "level |",
+    "| [belt_drives.md](belt_drives.md) | Belt drives of any layout from drive files: the steady "
+    "reference of each example, the THREAD benchmark against its stored Exudyn results (axial "
+    "force, speed and contact forces along the belt, ω₂(t), driver torque), the serpentine "
+    "drive against its steady reference; acceptance checks |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
@@ -251,7 +256,8 @@ def _chapters() -> dict:
     return dict(zip(CHAPTERS, (static_chapter, dynamics_chapter, speed_accuracy_chapter,
                                extremes_chapter, belt2d_chapter, bechtel_chapter,
                                elements3d_chapter, belt3d_chapter, beam3d_benchmarks_chapter,
-                               frequencies_chapter, frequency_speed_accuracy_chapter)))
+                               frequencies_chapter, frequency_speed_accuracy_chapter,
+                               belt_drives_chapter)))
 
 
 def write_chapters(root: Path, only: str | None = None) -> dict:

@@ -13,7 +13,8 @@ Results: the sample times; per pulley its angular velocity and the belt's moment
 velocity and the slip over ``run.steady_window`` (1 - its rim speed / the driver's, the
 driver the first prescribed pulley); per span (pulley k to k + 1) the mean axial force
 over its middle third at t_end and averaged over the samples of the steady window; the
-axial force and the speed along the belt at t_end; per tensioner its arm's angle; the run
+axial force, the speed, the position and the contact forces (normal and friction per unit
+length, summed over the pulleys) along the belt at t_end; per tensioner its arm's angle; the run
 statistics.
 """
 from __future__ import annotations
@@ -117,7 +118,10 @@ def _results(desc, drive, res) -> dict:
            "arms": _arms(drive, res, window)}
     spans, last = _spans(desc, drive, res, window)
     out.update(spans=spans, belt_s_m=last.s.tolist(), axial_force_N=last.N.tolist(),
-               speed_m_s=last.speed.tolist(), penetration_max_m=float(max(last.d.max(), 0.0)))
+               speed_m_s=last.speed.tolist(), penetration_max_m=float(max(last.d.max(), 0.0)),
+               belt_x_m=last.r[:, 0].tolist(), belt_y_m=last.r[:, 1].tolist(),
+               normal_force_N_m=last.Fn.sum(axis=1).tolist(),
+               friction_force_N_m=last.Ft.sum(axis=1).tolist())
     return out
 
 
@@ -133,7 +137,8 @@ def run(p: dict) -> SceneResult:
         res.converged, res.message = False, f"pre-tension: {pre.message}"
     results = _results(desc, drive, res) if res.converged else {
         "times": res.t.tolist(), "pulleys": None, "arms": None, "spans": None, "belt_s_m": None,
-        "axial_force_N": None, "speed_m_s": None, "penetration_max_m": None}
+        "axial_force_N": None, "speed_m_s": None, "penetration_max_m": None, "belt_x_m": None,
+        "belt_y_m": None, "normal_force_N_m": None, "friction_force_N_m": None}
     results.update(res.stats(), samples=int(res.t.size), t_reached=float(res.t[-1]),
                    contact_pairs=res.extra["contact_pairs"], total_dofs=drive.n + drive.k,
                    pretension_iterations=0 if pre is None else pre.iterations)

@@ -201,6 +201,15 @@ RESULTS = {
                            items=NUM),
         "penetration_max_m": _nullable("largest penetration of the belt's centreline sample "
                                        "points into a pulley at t_end, m"),
+        "belt_x_m": field("array", "x of those points at t_end, m", nullable=True, items=NUM),
+        "belt_y_m": field("array", "y of those points at t_end, m", nullable=True, items=NUM),
+        "normal_force_N_m": field("array", "the pulleys' normal force on the belt per unit "
+                                  "length at those points at t_end (summed over the pulleys; "
+                                  "0 off contact), N/m", nullable=True, items=NUM),
+        "friction_force_N_m": field("array", "the friction force on the belt per unit length "
+                                    "along the pulley's counter-clockwise tangent at those "
+                                    "points at t_end, summed over the pulleys, N/m", nullable=True,
+                                    items=NUM),
         "total_dofs": field(INT, "belt coordinates plus the free pulleys' angles"),
         "contact_pairs": field(INT, "element-pulley pairs whose Gauss points were evaluated "
                                     "(after the bounding test), summed over force evaluations"),

@@ -1,0 +1,235 @@
+"""Belt drives of any layout (issue 21): ``belt_drives_chapter() -> (markdown, status)``.
+
+The steady reference of every example drive file, the THREAD benchmark
+(``examples/thread_benchmark.toml``, 2.45 s) against THREAD's stored Exudyn results
+(:mod:`ancf.checks.thread`: our curves over theirs, the acceptance figures) and the
+serpentine drive (``examples/serpentine.toml``) against its steady reference
+(:mod:`ancf.checks.belt_drives`).  The runs are the files' own cases; ``THREAD_SET`` and
+``SERPENTINE_SET`` are the ``--set`` overrides the chapter applies (today the serpentine
+needs ``belt.damping_axial=0``: the belt's strain-rate damping is not in the dynamics yet).
+The reduced configuration (``--quick``) skips both runs.  Timing: only the column marked
+"(timing)" changes from run to run.
+"""
+from __future__ import annotations
+
+import math
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+
+from ancf.belts.drive_file import load  # noqa: E402
+from ancf.checks import belt_drives as bd  # noqa: E402
+from ancf.checks import thread as th  # noqa: E402
+from ancf.common.params import InputError  # noqa: E402
+from ancf.common.paths import REPO  # noqa: E402
+from ancf.reports.output import (checks_section, markdown_table, progress, save_figure,  # noqa: E402
+                                 settings, write_csv)
+from ancf.scenes import SCENES  # noqa: E402
+from ancf.study.extremes import QUICK_SKIPPED  # noqa: E402
+
+EXAMPLES = REPO / "examples"
+THREAD_FILE, THREAD_SET = EXAMPLES / "thread_benchmark.toml", ()
+SERPENTINE_FILE, SERPENTINE_SET = EXAMPLES / "serpentine.toml", ("belt.damping_axial=0",)
+THREAD_NAMES = ("THREAD tight span force", "THREAD slack span force", "THREAD driven ω mean",
+                "THREAD driver torque", "THREAD axial force along the belt, RMS",
+                "THREAD torque balance (T_t − T_s) R = load + damping",
+                "THREAD span tensions vs the steady reference (worst span)")
+
+
+def _name(path) -> str:
+    """The file's path from the repository's root (else as given)."""
+    try:
+        return path.relative_to(REPO).as_posix()
+    except ValueError:
+        return str(path)
+
+
+def _run(path, sets) -> tuple[dict, object]:
+    """(JSON output, description) of ``ancf run belt-drive --file path --set ...``."""
+    over = dict(s.split("=", 1) for s in sets)
+    progress(f"belt-drive {path.name} {' '.join(sets)}")
+    out, _ = SCENES["belt-drive"].execute({"file": str(path), **over})
+    return out, load(path, list(sets))
+
+
+def steady_tables() -> list:
+    """Per example file: the steady reference's spans and pulleys (or why there is none)."""
+    parts = ["## Steady reference of each example\n",
+             "`analytic/belt_steady.py` (Bechtel's extensible string with the centrifugal term, "
+             "Coulomb friction with stick and creep arcs, the belt-length constraint closing the "
+             "loop, a tensioner's arm in balance) on each file's layout, its prescribed speeds' and "
+             "load torques' final values and its belt (`ancf.checks.belt_drives.steady_reference`). "
+             "Torque: the belt's moment on the pulley, counter-clockwise positive.\n"]
+    for path in sorted(EXAMPLES.glob("*.toml")):
+        try:
+            ref = bd.steady_reference(load(path))
+        except InputError as e:
+            parts += [f"### {path.name}\n", f"No reference: `{e}`\n"]
+            continue
+        spans = pd.DataFrame([{"span": f"{s['from']} → {s['to']}", "length m": s["length_m"],
+                               "tension N": s["tension_N"], "speed m/s": s["speed"]}
+                              for s in ref["spans"]])
+        pulleys = pd.DataFrame([{"pulley": p["name"], "law": p["law"], "ω rad/s": p["omega"],
+                                 "torque N m": p["torque_Nm"], "slip": p["slip"],
+                                 "creep arc rad": p["creep_arc_rad"],
+                                 "arm angle deg": (None if p["arm_angle_rad"] is None
+                                                   else math.degrees(p["arm_angle_rad"]))}
+                                for p in ref["pulleys"]])
+        write_csv(spans, f"belt_drives_steady_{path.stem}_spans")
+        parts += [f"### {path.name}\n", markdown_table(spans, 5), "", markdown_table(pulleys, 5),
+                  ""]
+    return parts
+
+
+def _stored_vs_string() -> list:
+    """THREAD's stored span forces against the string with the file's EA and with Exudyn's
+    force law (N = EA (eps - eps_ref) on the laid length: our law with EA (1 + eps_ref))."""
+    try:
+        desc = load(THREAD_FILE, list(THREAD_SET))
+    except InputError as e:
+        return [f"(no steady reference: `{e}`)\n"]
+    st = th.scalars(th.read())
+    eps = desc.belt["prestretch"]
+    rows = []
+    for label, EA in (("file's EA", desc.belt["EA"]), ("EA (1 + ε_ref)", desc.belt["EA"] * (1 + eps))):
+        ref = bd.steady_reference(load(THREAD_FILE, [*THREAD_SET, f"belt.EA={EA!r}"]))
+        T = {(s["from"], s["to"]): s["tension_N"] for s in ref["spans"]}
+        rows.append({"string": label, "EA N": EA, "tight N": T[("driven", "driver")],
+                     "slack N": T[("driver", "driven")],
+                     "tight vs stored %": 100 * (T[("driven", "driver")] / st["tight_N"] - 1),
+                     "slack vs stored %": 100 * (T[("driver", "driven")] / st["slack_N"] - 1)})
+    EA, P, L0 = desc.belt["EA"], desc.path.length, desc.belt["length"]
+    return [f"Exudyn's cable takes its axial force as EA (ε − ε_ref) with ε the strain against "
+            f"the laid (path) length, so its belt is pre-tensioned to −EA ε_ref = {-EA * eps:.1f} N "
+            f"on the path; the string of the steady reference is EA (l / L0 − 1) with L0 the "
+            f"stress-free length, {EA * (P / L0 - 1):.1f} N for the same EA, and agrees with "
+            f"Exudyn's law when given EA (1 + ε_ref) = {EA * (1 + eps):.1f} N.  Our element's "
+            f"axial energy is on the Green strain, so its belt force N |r_x| on the path is "
+            f"{float(th.true_force(EA * ((P / L0) ** 2 - 1) / 2, th.stiffness(desc))):.1f} N: "
+            "no EA makes it Exudyn's law at these 2–9 % strains.  The string against the stored "
+            f"forces ({st['tight_N']:.1f} / {st['slack_N']:.1f} N):\n",
+            markdown_table(pd.DataFrame(rows), 5), ""]
+
+
+def _thread_figures(cur: th.Curves, st: th.Stored) -> list:
+    fig, ax = plt.subplots(2, 2, figsize=(12, 7.5))
+    pairs = ((ax[0, 0], st.s_force, st.axial_force, cur.axial_force, "axial force, N"),
+             (ax[0, 1], st.s_speed, st.speed, cur.speed, "belt speed, m/s"),
+             (ax[1, 0], st.s_contact, st.normal, cur.normal, "normal contact force, N/m"),
+             (ax[1, 1], st.s_contact, st.tangential, cur.tangential,
+              "tangential contact force (along s), N/m"))
+    for a, s, y, ours, label in pairs:
+        a.plot(s, y, "k-", lw=1.2, label="THREAD (Exudyn, stored)")
+        a.plot(cur.sigma, ours, "C1--", lw=1.0, label="ours")
+        a.set_xlabel("s along the belt from the top of the driver, m")
+        a.set_ylabel(label)
+        a.grid(alpha=0.3)
+    ax[0, 0].legend()
+    along = save_figure(fig, "belt_drives_thread_along")
+    fig, ax = plt.subplots(1, 2, figsize=(12, 4))
+    ax[0].plot(st.t, st.omega_driven, "k-", lw=1.0, label="THREAD (Exudyn, stored)")
+    ax[0].plot(cur.t, cur.omega_driven, "C1--", lw=1.0, label="ours")
+    ax[0].set_ylabel("driven pulley ω₂, rad/s")
+    ax[1].plot(st.t, st.driver_torque, "k-", lw=1.0)
+    ax[1].plot(cur.t, cur.driver_torque, "C1--", lw=1.0)
+    ax[1].set_ylabel("driver torque, N m")
+    for a in ax:
+        a.set_xlabel("t, s")
+        a.grid(alpha=0.3)
+    ax[0].legend()
+    times = save_figure(fig, "belt_drives_thread_time")
+    return ["Along the belt and in the span forces, ours is the belt's force N |r_x| "
+            "(`ancf.checks.thread.true_force`: the element's N = E A α1 ε_l of Eq. 3.17 is taken "
+            "on the Green strain ε_l = (|r_x|² − 1)/2, and N |r_x| is the force that balances the "
+            "pulleys' moments, as the torque-balance row shows); our contact forces are per unit "
+            "stress-free length.  THREAD's are Exudyn's cable force EA (|r′| − 1 − ε_ref) and its "
+            "contact pressure times the width, per unit laid length.\n",
+            f"![THREAD along the belt](figures/{along.name})\n",
+            f"![THREAD in time](figures/{times.name})\n"]
+
+
+def thread_section() -> tuple[list, list]:
+    """(markdown, checks) of the THREAD comparison."""
+    st = th.read()
+    sc = th.scalars(st)
+    parts = ["## THREAD benchmark against its stored Exudyn results\n",
+             f"Stored base case `{th.CASE}` (`tests/data/thread/`, README there): computed from "
+             f"the files, tight / slack span force {sc['tight_N']:.2f} / {sc['slack_N']:.2f} N "
+             f"(middle thirds), driven ω mean {sc['omega_mean']:.4f} rad/s and driver torque "
+             f"{sc['driver_torque_Nm']:.3f} N m over 2.0–2.45 s; their own torque balance "
+             f"(T_t − T_s) R = {sc['belt_moment_Nm']:.3f} N m against load + damping "
+             f"{sc['resisting_Nm']:.3f} N m.  Ours: `ancf run belt-drive --file "
+             f"{_name(THREAD_FILE)}{''.join(' --set ' + s for s in THREAD_SET)}`.  "
+             "Alignment along the belt: both curves are placed by where the belt is at t_end "
+             "(0 where it crosses the top of the driver, increasing along the upper span, ours "
+             "scaled by P / L0 from its stress-free length), see `ancf/checks/thread.py`.\n",
+             *_stored_vs_string()]
+    if settings().quick:
+        return parts + ["Reduced configuration: the 2.45 s run is skipped.\n"], []
+    try:
+        out, desc = _run(THREAD_FILE, THREAD_SET)
+    except InputError as e:
+        return parts + [f"Not run: `{e}`\n"], []
+    if not out["converged"]:
+        return parts + [f"Our run stopped: {out['message']}\n"], []
+    checks = th.compare(out["results"], desc, st)
+    parts += [f"Our run: {out['results']['steps']} steps, CPU {out['cpu_time_s']:.1f} s "
+              "(timing).  Warnings: " + ("; ".join(out["warnings"]) or "none") + "\n",
+              *_thread_figures(th.curves(out["results"], desc, st), st)]
+    return parts, checks
+
+
+def serpentine_section() -> tuple[list, list]:
+    """(markdown, checks) of the serpentine drive against its steady reference."""
+    parts = ["## Serpentine drive against the steady reference\n",
+             f"`ancf run belt-drive --file {_name(SERPENTINE_FILE)}"
+             f"{''.join(' --set ' + s for s in SERPENTINE_SET)}`; means over the file's steady "
+             "window.\n"]
+    if settings().quick:
+        return parts + ["Reduced configuration: the run is skipped.\n"], []
+    out, desc = _run(SERPENTINE_FILE, SERPENTINE_SET)
+    if not out["converged"]:
+        return parts + [f"Our run stopped: {out['message']}\n"], []
+    r, ref = out["results"], bd.steady_reference(desc)
+    T = bd.window_means(r, desc.run["steady_window"])
+    pulleys = pd.DataFrame([{"pulley": o["name"], "ω ours rad/s": o["omega_mean"],
+                             "ω reference": p["omega"], "torque ours N m": T[o["name"]],
+                             "torque reference": p["torque_Nm"]}
+                            for o, p in zip(r["pulleys"], ref["pulleys"])])
+    spans = pd.DataFrame([{"span": f"{o['from']} → {o['to']}", "ours N": o["tension_mean_N"],
+                           "reference N": p["tension_N"],
+                           "difference %": 100 * (o["tension_mean_N"] / p["tension_N"] - 1)}
+                          for o, p in zip(r["spans"], ref["spans"])])
+    arms = [f"- arm of `{a['name']}`: {math.degrees(a['angle_mean_rad']):.3f}° (reference "
+            f"{math.degrees(p['arm_angle_rad']):.3f}°)" for a in r["arms"]
+            for p in ref["pulleys"] if p["name"] == a["name"]]
+    write_csv(spans, "belt_drives_serpentine_spans")
+    parts += [markdown_table(pulleys, 5), "", markdown_table(spans, 5), "", *arms, "",
+              f"CPU {out['cpu_time_s']:.1f} s (timing).\n"]
+    return parts, bd.serpentine_checks(r, desc)
+
+
+def belt_drives_chapter() -> tuple[str, dict]:
+    parts = ["# Belt drives of any layout\n",
+             "Generated by `python -m ancf.reports --chapter belt_drives.md`; do not edit by "
+             "hand.  Drive files: `examples/`; keys, units and ranges: "
+             "`ancf/belts/drive_data.py`.\n", *steady_tables()]
+    text, thread = thread_section()
+    parts += text
+    text, serp = serpentine_section()
+    parts += text
+    checks = thread + serp
+    done = {c.name: "PASS" if c.passed else "FAIL" for c in checks}
+    status = {name: done.get(name, QUICK_SKIPPED if settings().quick else "NOT RUN")
+              for name in (*THREAD_NAMES, *bd.SERPENTINE_NAMES)}
+    if checks:
+        parts += checks_section(checks, status, "belt_drives",
+                                "`tests/test_thread.py` (the comparison) and "
+                                "`tests/test_belt_npulley.py` (the serpentine)")
+    parts += ["## Acceptance rows\n", "| check | status |", "|---|---|",
+              *(f"| {k} | {v} |" for k, v in status.items()), ""]
+    return "\n".join(parts), status
