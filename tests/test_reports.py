@@ -75,6 +75,9 @@ AGREES = {
          "test_normal_force_against_T_over_R_and_the_exact_relation", "PASS"),
         ("Belt 120 rad/s: F_n = (N λ² − ρAv²)/(R − d) within 1 % away from inlet and exit",
          "test_normal_force_against_T_over_R_and_the_exact_relation", "PASS"),
+        ("Belt 120 rad/s: Figs 3.10-3.11, the tight free span moves more than the slack "
+         "during the ramp", "test_the_slack_span_moves_more_than_the_tight_one_at_120_rad_s",
+         "DIFFERS (explained)"),
         (GAUSS_CHECK, "test_5_7_11_contact_points_give_the_same_driven_speed", "PASS"),
         ("Belt R2 = 0.1218 m: steady ω ratio within 2 % of R1/R2 (Fig. 3.21)",
          "test_larger_driven_pulley_turns_at_the_radius_ratio", "PASS"))},
@@ -216,35 +219,27 @@ def test_acceptance_statuses_agree_with_the_tests(quick):
         assert callable(getattr(mod, name, None)), f"{module}.{name} is gone: update AGREES"
 
 
-def _without_timing(text: str) -> str:
-    """Speed-accuracy Markdown without the CPU column and the calibration section."""
-    text = text.split("## Calibration of work to seconds", 1)[0]
-    out, drop = [], None
-    for line in text.splitlines():
-        cells = line.split(" | ") if line.startswith("| ") else None
-        if cells and "CPU ms" in line:
-            drop = [c.strip(" |") for c in cells].index("CPU ms")
-        elif not line.startswith("|"):
-            drop = None
-        if cells and drop is not None and not set(line) <= set("|-"):
-            cells = cells[:drop] + cells[drop + 1:]
-            line = " | ".join(cells)
-        out.append(line)
-    return "\n".join(out)
-
-
 def test_speed_accuracy_tables_are_reproducible(quick, workdir):
-    """A second quick speed-accuracy chapter (fresh sweeps, fresh timings): the same text
-    apart from the timing column and the calibration."""
+    """A second quick speed-accuracy chapter (fresh sweeps, fresh timings): the same page
+    and the same data files; the CPU times and the calibration went to its timing page
+    and ``data/timing/``."""
     from ancf.reports import output
     from ancf.reports.speed_accuracy import speed_accuracy_chapter
     before = output.settings()
     try:
         output.configure(workdir / "again", quick=True)
+        output.take_timing()
         again, status = speed_accuracy_chapter()
+        timing = "\n".join(output.take_timing())
     finally:
         output.configure(before.root, before.quick)
     first = (quick / "speed_accuracy.md").read_text()
     assert set(status.values()) == {"PASS"}
-    assert "CPU ms" in first and "## Calibration of work to seconds" in first
-    assert _without_timing(again) == _without_timing(first)
+    assert "CPU ms" in timing and "Calibration of work to seconds on this machine" in timing
+    assert "CPU ms" not in again and "cpu_time_s" not in again
+    assert first.startswith(again) and "timing/speed_accuracy.md" in first[len(again):]
+    data = sorted((quick / "data").glob("speed_accuracy_*.csv"))
+    assert len(data) >= 10
+    for path in data:
+        assert (workdir / "again" / "data" / path.name).read_bytes() == path.read_bytes(), path.name
+    assert (quick / "timing" / "speed_accuracy.md").exists()
