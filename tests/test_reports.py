@@ -9,6 +9,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pandas as pd
 import pytest
 
 from ancf.checks.belt3d import CHECK_NAMES as BELT3D_ROWS
@@ -243,3 +244,59 @@ def test_speed_accuracy_tables_are_reproducible(quick, workdir):
     for path in data:
         assert (workdir / "again" / "data" / path.name).read_bytes() == path.read_bytes(), path.name
     assert (quick / "timing" / "speed_accuracy.md").exists()
+
+
+def test_timing_columns_leave_the_page_and_the_data_file(tmp_path):
+    """A column named 'timing...' goes to data/timing/NAME.csv and the chapter's timing page
+    only; the page's table and data/NAME.csv keep the rest (reproducible across runs)."""
+    from ancf.reports import output
+    before = output.settings()
+    try:
+        output.configure(tmp_path)
+        output.take_timing()
+        df = pd.DataFrame({"n": [1, 2], "error": [0.5, 0.25], "timing: CPU s": [0.1, 0.2]})
+        output.write_csv(df, "t")
+        page = output.markdown_table(df, 3, "A table")
+        timing = "\n".join(output.take_timing())
+        with pytest.raises(ValueError, match="timing"):
+            output.markdown_table(df)               # a timing column needs its heading
+    finally:
+        output.configure(before.root, before.quick)
+    assert "timing" not in page and "0.25" in page
+    assert "## A table" in timing and "timing: CPU s" in timing and "0.2" in timing
+    assert list(pd.read_csv(tmp_path / "data" / "t.csv").columns) == ["n", "error"]
+    assert list(pd.read_csv(tmp_path / "data" / "timing" / "t.csv").columns) == list(df.columns)
+    assert output.take_timing() == []
+
+
+def test_run_store_meets_overrides_spelled_differently(tmp_path, monkeypatch):
+    """A kept run is found under its resolved parameters; without a store nothing is kept."""
+    from ancf.scenes import store
+    out = {"converged": True, "results": {"x": 0.1 + 0.2}, "cpu_time_s": 1.0}
+    store.keep("axial-bar", {}, out)                      # no store set: nothing happens
+    monkeypatch.setenv(store.ENV, str(tmp_path))
+    assert store.stored("axial-bar", {}) is None
+    store.keep("axial-bar", {}, out)
+    default_n = __import__("ancf.scenes", fromlist=["SCENES"]).SCENES["axial-bar"].resolve({})[
+        "n_elements"]
+    assert store.stored("axial-bar", {"n_elements": default_n}) == out
+    assert store.stored("axial-bar", {"n_elements": default_n + 1}) is None
+    store.keep("axial-bar", {"n_elements": default_n + 1}, {**out, "converged": False})
+    assert store.stored("axial-bar", {"n_elements": default_n + 1}) is None
+
+
+def test_heartbeat_speaks_after_silence_and_ends_with_its_input():
+    """`python -m ancf.reports.heartbeat`: silent while lines come, then one line per
+    silence naming the last step; it ends when its input closes."""
+    p = subprocess.Popen([sys.executable, "-m", "ancf.reports.heartbeat", "test", "1"],
+                         stdin=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    p.stdin.write("belt3d: Model 2\n")
+    p.stdin.flush()
+    import time
+    time.sleep(3.5)
+    p.stdin.close()
+    err = p.stderr.read()
+    assert p.wait(timeout=10) == 0
+    lines = err.strip().splitlines()
+    assert 2 <= len(lines) <= 4
+    assert all("test: still running belt3d: Model 2" in line for line in lines)
