@@ -102,7 +102,8 @@ def _princeton_figure(runs: dict) -> str:
 
 def _bending_table() -> pd.DataFrame:
     rows = bb.general_bending()
-    write_csv(pd.DataFrame(rows), "beam3d_general_bending")
+    write_csv(pd.DataFrame(rows).rename(columns={"cpu s": "timing: cpu s"}),
+              "beam3d_general_bending")
     return pd.DataFrame([{
         "source": r["source"], "elements": r["n"], "u_x [m]": r["ux"],
         "error u_x": _pct(r.get("ux error")), "u_y [m]": r["uy"],
@@ -195,7 +196,8 @@ def beam3d_benchmarks_chapter() -> tuple[str, dict]:
     checks = bb.checks()
     status = {c.name: "PASS" if c.passed else "FAIL" for c in checks}
     runs = {m: bb.princeton(m) for m in bb.PRINCETON_MODELS}
-    write_csv(pd.DataFrame([{"model": m, **r} for m, rows in runs.items() for r in rows]),
+    write_csv(pd.DataFrame([{"model": m, **r} for m, rows in runs.items() for r in rows])
+              .rename(columns={"cpu s": "timing: cpu s"}),
               "beam3d_princeton")
     tor, f = bb.princeton_torsion(), _princeton_facts(runs)
     d = SCENES["princeton-beam"].resolve({})
