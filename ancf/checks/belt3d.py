@@ -37,6 +37,10 @@ ELEMENTS_ROW = "Belt3d Model 2: span tensions of 20 and 30 plates within 2 % of 
 CHECK_NAMES = (STEADY, TORQUE, FRICTION, MEASURES_ROW, SLIP, BECHTEL, MODEL1, POINTS_ROW, ELEMENTS_ROW)
 
 
+#: the Model 1 run (Fig. 4.10): 1 s, the step of the thesis's Model 1
+MODEL1_RUN = {"model": 1, "t_end": 1.0, "dt": 2.5e-4}
+
+
 def model2(**overrides) -> dict:
     """Results of a Model 2 run (default: the scene's defaults)."""
     return run_json("belt3d", **overrides)["results"]
@@ -131,7 +135,7 @@ def tensions_vs_bechtel() -> Check:
 
 def model1_lag() -> tuple:
     """(mean lag rad/s over the ramp, relative steady error after 0.8 s) of Model 1."""
-    r = run_json("belt3d", model=1, t_end=1.0, dt=2.5e-4)["results"]
+    r = run_json("belt3d", **MODEL1_RUN)["results"]
     t, wd, wn = (np.asarray(r[k]) for k in ("times", "omega_driver", "omega_driven"))
     ramp = (t > MODEL1_RAMP[0]) & (t <= MODEL1_RAMP[1])
     late = t >= 0.8

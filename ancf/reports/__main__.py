@@ -30,7 +30,9 @@ from ancf.reports import studies, tables
 from ancf.reports.output import (configure, heartbeat, markdown_table, progress, run,
                                  take_timing, timing_note, write_csv)
 from ancf.reports.speed_accuracy import speed_accuracy_chapter
-from ancf.scenes.store import ENV as STORE_ENV
+from ancf.checks import belt3d as belt3d_checks
+from ancf.scenes import SCENES
+from ancf.scenes.store import ENV as STORE_ENV, keep, stored
 from ancf.study.schemas import schemas_markdown
 
 
@@ -280,12 +282,23 @@ GROUPS = (("speed_accuracy.md", "belt3d.md"),
           tuple(c for c in CHAPTERS if c not in ("speed_accuracy.md", "belt3d.md")))
 
 
-def _write_group(root: str, quick: bool, names: tuple) -> dict:
-    """Write the chapters ``names`` (in a process of its own); {chapter: statuses}."""
+#: runs the second process makes once its chapters are written, for the 3D belt chapter of
+#: the first (kept in the run store; the first makes any it does not find there yet)
+AHEAD = (("belt3d", belt3d_checks.MODEL1_RUN),)
+
+
+def _write_group(root: str, quick: bool, names: tuple, ahead: tuple = ()) -> dict:
+    """Write the chapters ``names`` (in a process of its own), then make the runs ``ahead``
+    (scene, overrides) not yet in the run store; {chapter: statuses}."""
     configure(root, quick)
     heartbeat(" + ".join(n.removesuffix(".md") for n in names[:2])
               + (" + ..." if len(names) > 2 else ""))
-    return {n: write_chapters(Path(root), n) for n in names}
+    written = {n: write_chapters(Path(root), n) for n in names}
+    for scene, overrides in () if quick else ahead:
+        if stored(scene, overrides) is None:
+            progress(f"ahead for the other process: {scene} {overrides}")
+            keep(scene, overrides, SCENES[scene].execute(dict(overrides))[0])
+    return written
 
 
 def write_all(root: Path, quick: bool, jobs: int = 2) -> dict:
@@ -303,7 +316,8 @@ def write_all(root: Path, quick: bool, jobs: int = 2) -> dict:
                 from ancf.reports.__main__ import _write_group as target
                 ctx = multiprocessing.get_context("spawn")
                 with ProcessPoolExecutor(len(GROUPS), mp_context=ctx) as ex:
-                    futures = [ex.submit(target, str(root), quick, g) for g in GROUPS]
+                    futures = [ex.submit(target, str(root), quick, g, ahead)
+                               for g, ahead in zip(GROUPS, ((), AHEAD))]
                     per = {k: v for f in futures for k, v in f.result().items()}
         finally:
             os.environ.pop(STORE_ENV, None)

@@ -127,8 +127,7 @@ def _force_figure() -> list:
 def _omega_figure() -> list:
     """Figs 4.10 and 4.16: pulley speeds of Models 1 and 2."""
     fig, ax = plt.subplots(1, 2, figsize=(12, 4))
-    for a, (label, kw) in zip(ax, (("Model 1, 16 plates (Fig. 4.10)", dict(model=1, t_end=1.0,
-                                                                          dt=2.5e-4)),
+    for a, (label, kw) in zip(ax, (("Model 1, 16 plates (Fig. 4.10)", bc.MODEL1_RUN),
                                    ("Model 2, 20 plates (Fig. 4.16)", {}))):
         r = run_json("belt3d", **kw)["results"]
         a.plot(r["times"], r["omega_driver"], "k--", lw=1, label="driver")
