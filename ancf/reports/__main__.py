@@ -214,8 +214,9 @@ _INDEX = [
     "modes, shear locking, Reissner reference, convergence plots, Newton-iteration timing |",
     "| [dynamics.md](dynamics.md) | Flexible pendulum and energy balance (Figs 2.6-2.8), "
     "spinning beam (Figs 2.10-2.11), constraint forms, integrator trade, Table 2.5 |",
-    "| [speed_accuracy.md](speed_accuracy.md) | Error vs counted work (and CPU time) per scene, "
-    "Pareto fronts, cheapest configuration per error level, calibration of work to seconds |",
+    "| [speed_accuracy.md](speed_accuracy.md) | Error vs counted work per scene, Pareto fronts, "
+    "cheapest configuration per error level (CPU times and the calibration of work to seconds "
+    "on its timing page) |",
     "| [extremes.md](extremes.md) | Stability maps at the extremes: slenderness, ν, element "
     "count, load, load steps, time limit, time steps (soft and stiff pendulum), spinning speed |",
     "| [belt2d.md](belt2d.md) | 2D belt drive (thesis 3.3, Figs 3.5-3.21): free belt, element "
@@ -242,6 +243,10 @@ _INDEX = [
     "the simply supported plate vs Navier, the free-free plate's ratios vs Exudyn and the "
     "Ritz series, the axial bar's first frequency falling to zero at Euler's load, the "
     "running belt's span spectra vs the axially moving string; acceptance checks |",
+    "| `timing/CHAPTER.md` (linked from each chapter) | What varies per run: CPU and wall "
+    "times, the machine (CPU, kernel, versions), the calibration of work to seconds; whole "
+    "tables with their timing columns in `data/timing/`, plots against CPU time in "
+    "`figures/timing/` |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
