@@ -16,6 +16,7 @@ import sys
 from ancf.common.diagnostics import numerical_warnings
 from ancf.common.params import InputError
 from ancf.common.strict_json import dumps
+from ancf.common.threads import one_blas_thread
 
 
 #: the scenes that read their input from a file (``ancf run NAME --file PATH``)
@@ -229,6 +230,8 @@ class _Parser(argparse.ArgumentParser):
 
 
 def main(argv=None) -> int:
+    if "numpy" not in sys.modules:  # the console script: pin BLAS before it loads (free)
+        one_blas_thread()
     ap = _Parser(prog="ancf", description="ANCF benchmark suite")
     sub = ap.add_subparsers(dest="cmd", required=True)
     sub.add_parser("scenes", help="list the scenes and their parameters")

@@ -60,6 +60,15 @@ def test_normal_force_against_T_over_R_and_the_exact_relation():
     assert bc.normal_force_status(thin, exact) == "PASS"
 
 
+def test_the_slack_span_moves_more_than_the_tight_one_at_120_rad_s():
+    """Figs 3.10-3.11 say the tight span moves more; here the slack span, at its lower
+    tension, moves more during the ramp (an acceptance row: DIFFERS (explained))."""
+    m = bc.span_motion(**dict(bc.CASE_120, nu_s=1e5))
+    assert m["slack"] > 1.1 * m["tight"] > 0
+    assert bc.span_status(m) == "DIFFERS (explained)"
+    assert bc.span_status({"tight": 2.0, "slack": 1.0}) == "PASS"
+
+
 def test_5_7_11_contact_points_give_the_same_driven_speed():
     c = bc.gauss_point_agreement()
     assert c.passed, c

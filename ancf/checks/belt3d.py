@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from analytic import bechtel
-from ancf.checks.belt2d import Check, _relative, run
+from ancf.checks.belt2d import Check, _relative, run_json
 from ancf.scenes import SCENES
 
 MODEL1_RAMP = (0.05, 0.6)     # s, Table 4.1 t0, t1 of Model 1
@@ -47,9 +47,13 @@ ELEMENTS_ROW = "Belt3d Model 2: span tensions of 20 and 30 plates within 2 % of 
 CHECK_NAMES = (STEADY, TORQUE, FRICTION, MEASURES_ROW, SLIP, BECHTEL, MODEL1, POINTS_ROW, ELEMENTS_ROW)
 
 
+#: the Model 1 run (Fig. 4.10): 1 s, the step of the thesis's Model 1
+MODEL1_RUN = {"model": 1, "t_end": 1.0, "dt": 2.5e-4}
+
+
 def model2(**overrides) -> dict:
     """Results of a Model 2 run (default: the scene's defaults)."""
-    return run("belt3d", **overrides)[0]["results"]
+    return run_json("belt3d", **overrides)["results"]
 
 
 def bechtel_params(p: dict) -> dict:
@@ -142,7 +146,7 @@ def tensions_vs_bechtel() -> Check:
 def model1_lag() -> tuple:
     """(mean lag rad/s over the ramp, relative steady error after 0.8 s, the smaller span
     membrane force at t_end N, the quasi-static pre-tension N) of Model 1."""
-    out = run("belt3d", model=1, t_end=1.0, dt=2.5e-4)[0]
+    out = run_json("belt3d", **MODEL1_RUN)
     p, r = out["params"], out["results"]
     t, wd, wn = (np.asarray(r[k]) for k in ("times", "omega_driver", "omega_driven"))
     ramp = (t > MODEL1_RAMP[0]) & (t <= MODEL1_RAMP[1])

@@ -1,9 +1,13 @@
 """Regenerate ``reports/`` (the main job): ``python -m ancf.reports [--out DIR] [--quick]``."""
 from __future__ import annotations
 
+import multiprocessing
+import os
 import re
 import sys
+import tempfile
 import time
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from ancf.common.threads import one_blas_thread
@@ -24,9 +28,13 @@ from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
 from ancf.reports.elements3d import elements3d_chapter
 from ancf.reports import studies, tables
-from ancf.reports.output import configure, markdown_table, progress, run
+from ancf.reports.output import (configure, heartbeat, markdown_table, progress, run,
+                                 take_timing, timing_note, write_csv)
 from ancf.reports.speed_accuracy import speed_accuracy_chapter
 from ancf.reports.speed_accuracy_frequencies import frequency_speed_accuracy_chapter
+from ancf.checks import belt3d as belt3d_checks
+from ancf.scenes import SCENES
+from ancf.scenes.store import ENV as STORE_ENV, keep, stored
 from ancf.study.schemas import schemas_markdown
 
 
@@ -181,13 +189,18 @@ def static_chapter() -> tuple[str, dict]:
     df = pd.DataFrame([{"n_elements": r["n_elements"], "linear ms": 1e3 * r["linear_s"],
                         "omar-shabana ms": 1e3 * r["omar_shabana_s"], "ratio": r["ratio"]}
                        for r in rows])
+    write_csv(df, "timing/newton_iteration_time")
+    timing_note("Time per Newton iteration", markdown_table(df, 3), "",
+                f"Machine: {rows[0]['machine']}.\n")
     parts += ["## Time per Newton iteration\n",
               "Cantilever; one Newton iteration as the static solver does it: the compiled assembly "
               "of gradient and band tangent, band LU and solve of the clamped system, "
-              "the two elements interleaved in one run, median of 30 repeats. The thesis reports "
+              "the two elements interleaved in one run, median of 30 repeats, at n = 4, 16, 64 "
+              "and 256; the measured times and their ratio (they vary per run and machine) are "
+              "on the timing page. The thesis reports "
               f"iterations 'two times shorter' with the linear element (ratio "
-              f"{pub.THESIS_NEWTON_TIME_RATIO}).\n", markdown_table(df, 3), "",
-              f"Machine: {rows[0]['machine']}. Both are compiled arithmetic at every n (3 vs 12 "
+              f"{pub.THESIS_NEWTON_TIME_RATIO}). "
+              "Both are compiled arithmetic at every n (3 vs 12 "
               "kernel points per element, 8 vs 12 coordinates per element, half-bandwidth 7 vs "
               "11), with a few microseconds of fixed call overhead that flattens the ratio at "
               "small n. Full benchmarks: `make bench` (reports/benchmarks/).\n"]
@@ -204,8 +217,9 @@ _INDEX = [
     "modes, shear locking, Reissner reference, convergence plots, Newton-iteration timing |",
     "| [dynamics.md](dynamics.md) | Flexible pendulum and energy balance (Figs 2.6-2.8), "
     "spinning beam (Figs 2.10-2.11), constraint forms, integrator trade, Table 2.5 |",
-    "| [speed_accuracy.md](speed_accuracy.md) | Error vs counted work (and CPU time) per scene, "
-    "Pareto fronts, cheapest configuration per error level, calibration of work to seconds |",
+    "| [speed_accuracy.md](speed_accuracy.md) | Error vs counted work per scene, Pareto fronts, "
+    "cheapest configuration per error level (CPU times and the calibration of work to seconds "
+    "on its timing page) |",
     "| [extremes.md](extremes.md) | Stability maps at the extremes: slenderness, ν, element "
     "count, load, load steps, time limit, time steps (soft and stiff pendulum), spinning speed |",
     "| [belt2d.md](belt2d.md) | 2D belt drive (thesis 3.3, Figs 3.5-3.21): free belt, element "
@@ -241,6 +255,10 @@ _INDEX = [
     "reference of each example, the THREAD benchmark against its stored Exudyn results (axial "
     "force, speed and contact forces along the belt, ω₂(t), driver torque), the serpentine "
     "drive against its steady reference; acceptance checks |",
+    "| `timing/CHAPTER.md` (linked from each chapter) | What varies per run: CPU and wall "
+    "times, the machine (CPU, kernel, versions), the calibration of work to seconds; whole "
+    "tables with their timing columns in `data/timing/`, plots against CPU time in "
+    "`figures/timing/` |",
     "| [benchmarks/README.md](benchmarks/README.md) | `make bench`: static solves, Newton kernels, "
     "pendulum per element × n × integrator, Table 2.5 ratio, cost per simulated second |",
     "| [benchmarks/peers.md](benchmarks/peers.md), [before/after](benchmarks/peers_before_after.md) "
@@ -266,12 +284,79 @@ def write_chapters(root: Path, only: str | None = None) -> dict:
     status = {}
     for name, chapter in _chapters().items():
         if only in (None, name):
+            take_timing()
             text, st = chapter()
-            (root / name).write_text(text)
+            (root / name).write_text(text + timing_page(root, name, take_timing()))
             status.update(st)
     if only is None:
         (root / "schemas.md").write_text(schemas_markdown())
     return status
+
+
+#: the two processes of a full generation, each writing its chapters in this order: the
+#: speed-accuracy sweeps (two sweep workers of their own) and then the 3D belt, whose Model 2
+#: runs the belt3d sweep has made and kept (``ancf.scenes.store``); every other chapter
+GROUPS = (("speed_accuracy.md", "belt3d.md"),
+          tuple(c for c in CHAPTERS if c not in ("speed_accuracy.md", "belt3d.md")))
+
+
+#: runs the second process makes once its chapters are written, for the 3D belt chapter of
+#: the first (kept in the run store; the first makes any it does not find there yet)
+AHEAD = (("belt3d", belt3d_checks.MODEL1_RUN),)
+
+
+def _write_group(root: str, quick: bool, names: tuple, ahead: tuple = ()) -> dict:
+    """Write the chapters ``names`` (in a process of its own), then make the runs ``ahead``
+    (scene, overrides) not yet in the run store; {chapter: statuses}."""
+    configure(root, quick)
+    heartbeat(" + ".join(n.removesuffix(".md") for n in names[:2])
+              + (" + ..." if len(names) > 2 else ""))
+    written = {n: write_chapters(Path(root), n) for n in names}
+    for scene, overrides in () if quick else ahead:
+        if stored(scene, overrides) is None:
+            progress(f"ahead for the other process: {scene} {overrides}")
+            keep(scene, overrides, SCENES[scene].execute(dict(overrides))[0])
+    return written
+
+
+def write_all(root: Path, quick: bool, jobs: int = 2) -> dict:
+    """Every chapter and the schemas page: in the :data:`GROUPS` processes (``jobs`` = 2) or
+    in this one (1), runs shared through a run store of this generation; the acceptance
+    statuses in chapter order, as a single process writes them."""
+    with tempfile.TemporaryDirectory(prefix="ancf-runs-") as store:
+        os.environ[STORE_ENV] = store
+        try:
+            if jobs == 1:
+                per = _write_group(str(root), quick, CHAPTERS)
+            else:
+                # by its module's name: under `python -m` this module is __main__, which a
+                # spawned process cannot look the function up in
+                from ancf.reports.__main__ import _write_group as target
+                ctx = multiprocessing.get_context("spawn")
+                with ProcessPoolExecutor(len(GROUPS), mp_context=ctx) as ex:
+                    futures = [ex.submit(target, str(root), quick, g, ahead)
+                               for g, ahead in zip(GROUPS, ((), AHEAD))]
+                    per = {k: v for f in futures for k, v in f.result().items()}
+        finally:
+            os.environ.pop(STORE_ENV, None)
+    (root / "schemas.md").write_text(schemas_markdown())
+    return {k: v for name in CHAPTERS for k, v in per[name].items()}
+
+
+def timing_page(root: Path, chapter: str, parts: list) -> str:
+    """Write the chapter's timing parts to ``timing/CHAPTER`` (CPU times, the machine: they
+    vary per run) and return the page's closing line that links it ('' without timing)."""
+    if not parts:
+        return ""
+    path = root / "timing" / chapter
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text("\n".join([f"# Timing of {chapter} (varies per run)\n",
+                               "Generated by `python -m ancf.reports` with the chapter: CPU and "
+                               "wall times of the machine and run that generated it. Unlike the "
+                               f"chapter [{chapter}](../{chapter}) and `data/*.csv`, these "
+                               "change on every regeneration; they are not results.\n", *parts]))
+    return (f"\n\nTiming (varies per run): [timing/{chapter}](timing/{chapter}) (CPU times "
+            "and the machine; whole tables in `data/timing/`).\n")
 
 
 def _previous_statuses(root: Path) -> dict:
@@ -291,6 +376,9 @@ def main(argv=None) -> int:
     ap.add_argument("--quick", action="store_true",
                     help="reduced configuration (smaller grids and element counts, shorter "
                          "simulated times): a smoke run of every chapter, not the published data")
+    ap.add_argument("--jobs", type=int, choices=(1, 2), default=2,
+                    help="processes writing chapters (default 2: the speed-accuracy sweeps and "
+                         "the 3D belt in one, every other chapter in the other)")
     ap.add_argument("--chapter", choices=CHAPTERS,
                     help="write this chapter only; README.md keeps the acceptance rows it "
                          "has and takes this chapter's")
@@ -298,9 +386,11 @@ def main(argv=None) -> int:
     t0 = time.time()
     root = configure(args.out, args.quick).root
     root.mkdir(parents=True, exist_ok=True)
-    status = write_chapters(root, args.chapter)
     if args.chapter:
-        status = {**_previous_statuses(root), **status}
+        heartbeat(args.chapter.removesuffix(".md"))
+        status = {**_previous_statuses(root), **write_chapters(root, args.chapter)}
+    else:
+        status = write_all(root, args.quick, args.jobs)
     note = (" Reduced configuration (`--quick`): not the published data." if args.quick else "")
     idx = ["# ancf-bench reports\n", "Generated by `make reports` (`python -m ancf.reports`); do "
            "not edit by hand." + note + "\n", *_INDEX,

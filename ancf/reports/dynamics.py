@@ -20,7 +20,7 @@ import pandas as pd  # noqa: E402
 
 from ancf.scenes.analytic import DYNAMIC_REFERENCES  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure,  # noqa: E402
-                                 settings, write_csv)
+                                 settings, timing_note, write_csv)
 from ancf.scenes import pendulum, spinning_beam  # noqa: E402
 
 SCENES = {s.name: s for s in (pendulum.SCENE, spinning_beam.SCENE)}
@@ -137,7 +137,7 @@ def pendulum_energy(status: dict) -> list:
         o = run("pendulum", element=el, n_elements=n)
         rows.append({"element": el, "n": n, "max abs(E(t) - E(0)) [J]": o["results"]["energy_max_deviation_J"],
                      "thesis [J]": THESIS_ENERGY_DEVIATION if (el, n) == ("linear", 4) else None,
-                     "steps": o["results"]["steps"], "cpu [s]": o["cpu_time_s"]})
+                     "steps": o["results"]["steps"], "timing: cpu [s]": o["cpu_time_s"]})
     df = pd.DataFrame(rows)
     write_csv(df, "pendulum_energy_deviation")
     dev = r["energy_max_deviation_J"]
@@ -147,7 +147,7 @@ def pendulum_energy(status: dict) -> list:
             "(`ancf/core/energy.py`), sampled every 0.01 s (per element: "
             "`data/pendulum_energy_per_element.csv`).\n",
             "![energy components](figures/pendulum_energy.png)\n",
-            markdown_table(df, 3), "",
+            markdown_table(df, 3, "Energy balance"), "",
             f"Thesis: largest deviation 0.62e-4 J (4 elements); ours {dev:.2e} J at the default "
             "tolerance. The deviation is the time-integration error, not a property of the "
             "element: it follows the tolerance or step (see the trade-off below).\n"]
@@ -182,7 +182,7 @@ def rigid_limit(status: dict) -> list:
         dh = np.hypot(*(tips - np.array([refh["tip_x"], refh["tip_y"]]))).max()
         rows.append({"element": el, "converged": o["converged"], "vs slender rod / L [%]": 100 * d / L_PEND,
                      "vs rod with h²/12 inertia / L [%]": 100 * dh / L_PEND, "steps": o["results"]["steps"],
-                     "cpu [s]": o["cpu_time_s"]})
+                     "timing: cpu [s]": o["cpu_time_s"]})
     df = pd.DataFrame(rows)
     write_csv(df, "pendulum_rigid_limit")
     status["Pendulum E = 2.07e11 follows the rigid pendulum within 0.5 % of L"] = _pass(
@@ -191,7 +191,7 @@ def rigid_limit(status: dict) -> list:
             f"E = 2.07e11 Pa, 4 elements, {_caption(**RIGID_E)}; reference `ancf analytic "
             "rigid-pendulum` (θ'' = −(3g/2L) cos θ, DOP853 rtol 1e-12) and the same with the "
             "section's rotary inertia (`--set h=0.1`: I = m(L²/3 + h²/12)).\n",
-            markdown_table(df, 3), "",
+            markdown_table(df, 3, "Stiff limit"), "",
             "Almost all of the difference to the slender rod is the rotary inertia of the 0.1 m "
             "section, which the ANCF beam carries (its r_y rotates) and the rod formula omits.\n"]
 
@@ -210,8 +210,8 @@ def constraint_forms(status: dict) -> list:
         d = max(np.abs(np.subtract(a["results"][k], b["results"][k])).max() for k in keys)
         v = b["results"]["constraint_violation_m"]
         rows.append({"scene": scene, "integrator": label, "max tip difference [m]": d,
-                     "max abs C, multipliers [m]": v, "cpu elimination [s]": a["cpu_time_s"],
-                     "cpu multipliers [s]": b["cpu_time_s"]})
+                     "max abs C, multipliers [m]": v, "timing: cpu elimination [s]": a["cpu_time_s"],
+                     "timing: cpu multipliers [s]": b["cpu_time_s"]})
         ok &= a["converged"] and b["converged"] and d < 1e-6 and v < 1e-8
     df = pd.DataFrame(rows)
     write_csv(df, "constraint_forms")
@@ -223,7 +223,7 @@ def constraint_forms(status: dict) -> list:
             "integrators the drift is controlled by Baumgarte (α = β = 20 s⁻¹), the "
             "generalised-α scheme enforces C(q, t) = 0 at every step (index 3). The spinning "
             "beam's hub slope is a rheonomic constraint (c(t), c', c'' from Eq. 2.35).\n",
-            markdown_table(df, 3), ""]
+            markdown_table(df, 3, "Constraints: elimination vs multipliers"), ""]
 
 
 # ------------------------------------------------------------------ spinning beam
@@ -270,7 +270,7 @@ def spinning(status: dict) -> list:
                      "error vs Eq. 2.36 [%]": None if ext is None else 100 * (ext / an["axial_extension_m"] - 1),
                      "max abs lateral [m]": rr["max_abs_tip_lateral_m"],
                      "last 5 s: max abs lateral [m]": float(np.abs(np.array(rr["tip_lateral"])[tail]).max()),
-                     "steps": rr["steps"], "cpu [s]": o["cpu_time_s"]})
+                     "steps": rr["steps"], "timing: cpu [s]": o["cpu_time_s"]})
     df = pd.DataFrame(rows)
     write_csv(df, "spinning_extension")
     ext = r["axial_extension_m"]
@@ -288,7 +288,7 @@ def spinning(status: dict) -> list:
             "in the rotating hub frame.\n",
             "![Fig 2.10](figures/spinning_tip_dy.png)\n", "![Fig 2.11](figures/spinning_tip_dx.png)\n",
             "Steady axial extension = mean over the last 5 s of the centreline elongation:\n",
-            markdown_table(df, 5), "",
+            markdown_table(df, 5, "Spinning beam"), "",
             f"Ours (default): {1e6 * ext:.3f} µm, {100 * (ext / THESIS_EXTENSION - 1):+.3f} % from the "
             f"thesis's {1e6 * THESIS_EXTENSION:.3f} µm. Eq. 2.36 with the thesis data gives "
             f"{1e6 * ref['axial_extension_m']:.3f} µm; the printed {1e6 * THESIS_EXTENSION:.3f} µm follows "
@@ -334,21 +334,24 @@ def tradeoff() -> list:
         r = o["results"]
         rows.append({"integrator": integ, "setting": label, "converged": o["converged"],
                      "energy deviation [J]": r["energy_max_deviation_J"], "steps": r["steps"],
-                     "nfev": r["nfev"], "njev": r["njev"], "integration cpu [s]": r["integration_cpu_s"]})
+                     "nfev": r["nfev"], "njev": r["njev"], "timing: integration cpu [s]": r["integration_cpu_s"]})
     df = pd.DataFrame(rows)
     write_csv(df, "pendulum_energy_vs_cpu")
     fig, ax = plt.subplots(figsize=(6.5, 4))
     for integ, g in df.groupby("integrator", sort=False):
-        ax.loglog(g["integration cpu [s]"], g["energy deviation [J]"], "o-", label=integ)
+        ax.loglog(g["timing: integration cpu [s]"], g["energy deviation [J]"], "o-", label=integ)
     ax.axhline(THESIS_ENERGY_DEVIATION, color="k", ls=":", label="thesis 0.62e-4 J")
     ax.set(xlabel="integration CPU time [s]", ylabel="max |E(t) − E(0)| [J]",
            title="Pendulum, 4 linear elements, 1 s")
     ax.legend(), ax.grid(alpha=0.3, which="both")
-    save_figure(fig, "pendulum_energy_vs_cpu")
+    save_figure(fig, "pendulum_energy_vs_cpu", timing=True)
+    timing_note("Energy deviation vs CPU time",
+                "![energy vs cpu](../figures/timing/pendulum_energy_vs_cpu.png)\n")
     return ["## Energy deviation vs CPU time\n",
             "Pendulum, 4 linear elements, 1 s, as the tolerance (DOP853, Radau with the analytic "
             "Jacobian) or the step (generalised-α, ρ∞ = 1, Newton with the exact tangent) is varied.\n",
-            "![energy vs cpu](figures/pendulum_energy_vs_cpu.png)\n", markdown_table(df, 3), "",
+            "The integration CPU times and the figure of the energy deviation against them are "
+            "on the timing page.\n", markdown_table(df, 3, "Energy deviation vs CPU time"), "",
             "DOP853 is the cheapest route to a small energy error here: at E = 2.07e7 Pa the "
             "highest frequency (~1.8e3 rad/s, the through-thickness mode of r_y) does not limit "
             "an explicit step much. Generalised-α is second order, so its energy error falls "
@@ -377,17 +380,22 @@ def cpu_ratio(repeats: int = 5) -> list:
         for label in setups:
             lin = np.median([c for c, _ in times[(n, label, "linear")]])
             os_ = np.median([c for c, _ in times[(n, label, "omar-shabana")]])
-            rows.append({"n": n, "integrator": label, "linear [s]": lin, "Omar–Shabana [s]": os_,
-                         "ratio": lin / os_, "thesis ratio": THESIS_CPU[n],
+            rows.append({"n": n, "integrator": label, "timing: linear [s]": lin,
+                         "timing: Omar–Shabana [s]": os_, "timing: ratio": lin / os_,
+                         "thesis ratio": THESIS_CPU[n],
                          "steps linear / OS": f"{times[(n, label, 'linear')][0][1]} / "
                                               f"{times[(n, label, 'omar-shabana')][0][1]}"})
     df = pd.DataFrame(rows)
     write_csv(df, "pendulum_cpu_ratio")
-    lo, hi = df["ratio"].min(), df["ratio"].max()
-    return ["## CPU time, linear vs Omar–Shabana (thesis Table 2.5)\n",
+    lo, hi = df["timing: ratio"].min(), df["timing: ratio"].max()
+    title = "CPU time, linear vs Omar–Shabana (thesis Table 2.5)"
+    table = markdown_table(df, 3, title)
+    timing_note(title + ": machine", f"Median of {repeats} interleaved repeats in one run. "
+                f"Machine: {machine()}. Measured ratios {100 * lo:.0f}–{100 * hi:.0f} %.\n")
+    return [f"## {title}\n",
             f"Pendulum, 1 s, integration CPU time (process time), median of {repeats} interleaved "
-            f"repeats in one run. Machine: {machine()}.\n", markdown_table(df, 3), "",
-            f"Measured ratios {100 * lo:.0f}–{100 * hi:.0f} %; the thesis reports 65 % (4 elements) and "
+            "repeats in one run; the measured times and ratios (they vary per run and machine) "
+            "are on the timing page.\n", table, "", "The thesis reports 65 % (4 elements) and "
             "68 % (8 elements). With the fixed-step scheme both elements take the same steps and the "
             "ratio is the cost per step; with DOP853 the step counts also differ (last column). The "
             "generalised-α loop is compiled, so its ratio is the element arithmetic (8 vs 12 "
@@ -411,5 +419,5 @@ def dynamics_chapter() -> tuple[str, dict]:
     parts += spinning(status)
     parts += tradeoff()
     parts += cpu_ratio(1 if settings().quick else 5)
-    parts.append(f"\n_Chapter CPU time: {time.process_time() - t0:.0f} s._\n")
+    timing_note("Chapter", f"CPU time of the chapter: {time.process_time() - t0:.0f} s.\n")
     return "\n".join(parts), status

@@ -130,7 +130,9 @@ def extremes_chapter(workers=None) -> tuple[str, dict]:
                             "res_tension_tight_N", "res_tension_slack_N", "status",
                             "diagnosis", "error", "message", "cpu_time_s", "wall_time_s")
                 if c in df]
-        write_csv(df[keep], f"extremes_{axis.name.replace('-', '_')}")
+        write_csv(df[keep].rename(columns={"cpu_time_s": "timing: cpu_time_s",
+                                           "wall_time_s": "timing: wall_time_s"}),
+                  f"extremes_{axis.name.replace('-', '_')}")
         diag = df["diagnosis"].map(lambda d: d.split(" at ")[0]).value_counts().to_dict()
         silent = int(((df["status"] == "ok") & ~df["error"].astype(float).notna()
                       & df["reference"].notna()).sum()) if "reference" in df else 0

@@ -3,6 +3,13 @@
 Where they go and how much is computed is one :class:`Settings` per report run
 (:func:`configure`): ``root`` (default ``reports/``) and ``quick`` (the reduced
 configuration of ``python -m ancf.reports --quick``, see each chapter).
+
+Timing is kept apart from results, so that regenerating the reports on one machine
+changes nothing outside it: a column whose name starts with ``timing`` (:func:`is_timing`)
+is left out of the chapter's Markdown tables and of ``data/NAME.csv``; the whole table
+goes to ``data/timing/NAME.csv`` and, with every :func:`timing_note` and timing figure
+(``figures/timing/``), to the chapter's timing page ``timing/CHAPTER.md`` ("varies per
+run"), which :func:`take_timing` hands to the generator.
 """
 from __future__ import annotations
 
@@ -49,7 +56,39 @@ def fmt(v, digits=6) -> str:
     return str(v)
 
 
-def markdown_table(df: pd.DataFrame, digits: int = 6) -> str:
+def is_timing(column) -> bool:
+    """A timing column (CPU or wall time, machine): named ``timing...``."""
+    return str(column).lower().startswith("timing")
+
+
+_TIMING: list = []  # the timing page of the chapter being generated (Markdown parts)
+
+
+def timing_note(title: str, *parts: str) -> None:
+    """Add a section to the chapter's timing page (text that varies per run)."""
+    _TIMING.extend([f"## {title}\n", *parts, ""])
+
+
+def take_timing() -> list:
+    """The timing page parts gathered since the last call (and forget them)."""
+    parts = list(_TIMING)
+    _TIMING.clear()
+    return parts
+
+
+def markdown_table(df: pd.DataFrame, digits: int = 6, timing: str | None = None) -> str:
+    """The table without its timing columns; with any, the whole table goes to the
+    chapter's timing page under the heading ``timing`` (required then)."""
+    cols = [c for c in df.columns if is_timing(c)]
+    if cols:
+        if timing is None:
+            raise ValueError(f"timing columns {cols} need the timing page's heading")
+        timing_note(timing, _table(df, digits))
+        df = df.drop(columns=cols)
+    return _table(df, digits)
+
+
+def _table(df: pd.DataFrame, digits: int) -> str:
     head = "| " + " | ".join(map(str, df.columns)) + " |"
     sep = "|" + "|".join("---" for _ in df.columns) + "|"
     rows = ["| " + " | ".join(fmt(v, digits) for v in row) + " |" for row in df.itertuples(index=False)]
@@ -57,7 +96,15 @@ def markdown_table(df: pd.DataFrame, digits: int = 6) -> str:
 
 
 def write_csv(df: pd.DataFrame, name: str) -> Path:
+    """``data/NAME.csv`` without timing columns; with any, the whole table also goes to
+    ``data/timing/NAME.csv``."""
     path = settings().root / "data" / f"{name}.csv"
+    cols = [c for c in df.columns if is_timing(c)]
+    if cols:
+        full = path.parent / "timing" / path.name
+        full.parent.mkdir(parents=True, exist_ok=True)
+        df.to_csv(full, index=False)
+        df = df.drop(columns=cols)
     path.parent.mkdir(parents=True, exist_ok=True)
     df.to_csv(path, index=False)
     return path
@@ -76,8 +123,9 @@ def checks_section(checks, status: dict, stem: str, tied: str) -> list:
             markdown_table(df, 4), ""]
 
 
-def save_figure(fig, name: str) -> Path:
-    path = settings().root / "figures" / f"{name}.png"
+def save_figure(fig, name: str, timing: bool = False) -> Path:
+    """``figures/NAME.png``; ``figures/timing/NAME.png`` for a figure with a time axis."""
+    path = settings().root / "figures" / ("timing" if timing else "") / f"{name}.png"
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110, bbox_inches="tight")
     import matplotlib.pyplot as plt
@@ -87,6 +135,27 @@ def save_figure(fig, name: str) -> Path:
 
 def progress(msg: str) -> None:
     print(f"[{time.strftime('%H:%M:%S')}] {msg}", file=sys.stderr, flush=True)
+    if _BEAT:
+        try:
+            _BEAT[0].stdin.write(msg.replace("\n", " ").encode() + b"\n")
+            _BEAT[0].stdin.flush()
+        except OSError:  # the heartbeat is gone: progress goes on without it
+            _BEAT.clear()
+
+
+_BEAT: list = []  # this process's heartbeat (a subprocess.Popen), once started
+
+#: longest silence allowed on stderr while reports are generated (s)
+HEARTBEAT_S = 20.0
+
+
+def heartbeat(label: str, every: float = HEARTBEAT_S) -> None:
+    """Start this process's heartbeat (:mod:`ancf.reports.heartbeat`): after ``every`` s
+    without a progress line it prints what is running and for how long."""
+    import subprocess
+    if not _BEAT:
+        _BEAT.append(subprocess.Popen([sys.executable, "-m", "ancf.reports.heartbeat", label,
+                                       str(every)], stdin=subprocess.PIPE))
 
 
 @lru_cache(maxsize=None)

@@ -1,12 +1,12 @@
-"""Speed-accuracy chapter: error vs CPU time for every scene, Pareto fronts, and the
+"""Speed-accuracy chapter: error vs counted work for every scene, Pareto fronts, and the
 cheapest configuration reaching 10 %, 1 %, 0.1 % and 0.01 % error.
 
 Each scene of ``SCENES`` is swept over its report grid (``ancf.study.references``: element x
 quadrature x element count x solver tolerance, and x integrator for dynamic scenes)
 with :func:`ancf.study.sweep.run_sweep`; the rows go to ``reports/data/speed_accuracy_SCENE.csv``.
-Cost is the counted work of :mod:`ancf.study.cost` (the same on every machine), so the fronts and
-the cheapest configurations do not move with timing noise; the measured CPU times are shown
-next to it, with the per-machine calibration of work to seconds.
+Cost is the counted work of :mod:`ancf.study.cost` (the same on every repeat), so the fronts and
+the cheapest configurations do not move with timing noise; the measured CPU times and the
+per-machine calibration of work to seconds go to the chapter's timing page.
 """
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ import pandas as pd  # noqa: E402
 from ancf.study.cost import FEATURES, calibrate, with_work  # noqa: E402
 from ancf.study.references import cache_root, rescore, runner, spec, specs  # noqa: E402
 from ancf.reports.output import (fmt, markdown_table, progress, save_figure,  # noqa: E402
-                                 settings, write_csv)
+                                 settings, timing_note, write_csv)
 from ancf.study.sweep import run_sweep  # noqa: E402
 from ancf.study.selection import WORK_TIE, cheapest_first  # noqa: E402
 
@@ -90,13 +90,13 @@ def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error",
             rows.append({"error ≤": f"{100 * tol:g} %", "model": _model(r, dynamic),
                          "n_elements": int(r["n_elements"]), "solver": _solver(r, dynamic),
                          "error": float(r[err]), "work": float(r["work"]),
-                         "CPU ms": 1e3 * float(r["cpu_time_s"])})
+                         "timing: CPU ms": 1e3 * float(r["cpu_time_s"])})
         else:
             best = ok[err].min() if len(ok) else float("nan")
             rows.append({"error ≤": f"{100 * tol:g} %",
                          "model": f"not reached (best error {fmt(float(best), 2)})",
                          "n_elements": None, "solver": None, "error": None, "work": None,
-                         "CPU ms": None})
+                         "timing: CPU ms": None})
     return pd.DataFrame(rows)
 
 
@@ -176,11 +176,15 @@ _INTRO = (
     "(`ancf sweep SCENE` runs the same grid); error is against the scene's reference "
     "(`ancf/study/references.py`). Cost is the run's counted work (`ancf/study/cost.py`: iterations, "
     "kernel evaluations × elements × quadrature points, factorisations × size, steps, "
-    "weighted by a fixed model), which is the same on every machine and every repeat, so the "
-    "Pareto fronts and the cheapest configurations below do not move with timing noise. The "
-    "measured CPU time (process time on the machine that generated this report; identical "
-    "runs scatter by 10-30 %) is shown next to it but does not decide; the last section "
-    "calibrates work to seconds on this machine. The Pareto front connects the runs that no "
+    "weighted by a fixed model), which is the same on every repeat on one machine, so the "
+    "Pareto fronts and the cheapest configurations below do not move with timing noise. "
+    "Across machines (another CPU, BLAS or compiler) round-off can steer Newton: counted work "
+    "of the contact runs differs by up to about 10 % (belt2d: 10933 against 9896 Newton "
+    "iterations on two machines); the tie band below absorbs most of it. The "
+    "measured CPU times (process time on the machine that generated this report; identical "
+    "runs scatter by 10-30 %) do not decide; they are on the timing page "
+    "([timing/speed_accuracy.md](timing/speed_accuracy.md)) with the calibration of work to "
+    "seconds on that machine. The Pareto front connects the runs that no "
     "other run beats in both work and error. 'Cheapest' treats runs within "
     "{tie:g} % of the least work as equally cheap (the cost model's scatter) and takes the "
     "smallest model among them, then the smallest error, then the scene's default settings "
@@ -225,7 +229,8 @@ def scene_section(name: str, s, df: pd.DataFrame,
             ", ".join(f"{k} = {v:g}" for k, v in fixed.items()) + ")"
     if "self" in s.references and s.default_reference != "self" and not s.dynamic:
         df = df.assign(error_self=rescore(df, name, "self"))
-    write_csv(df[[c for c in _CSV_COLS if c in df]], f"speed_accuracy_{stem}")
+    write_csv(df[[c for c in _CSV_COLS if c in df]].rename(
+        columns={"cpu_time_s": "timing: cpu_time_s"}), f"speed_accuracy_{stem}")
     figure = _figure(df, name, s)
     defaults = _knob_defaults(name, s)
     table = cheapest_table(df, s.dynamic, defaults=defaults)
@@ -236,12 +241,13 @@ def scene_section(name: str, s, df: pd.DataFrame,
              f"{s.reference().doc}.\n",
              f"![pareto {name}](figures/{figure}.png)\n",
              f"Cheapest configuration per error level (against {s.default_reference}):\n",
-             markdown_table(table, 3), ""]
+             markdown_table(table, 3, f"`{name}`: cheapest configurations"), ""]
     extra = ""
     if "error_self" in df:
         parts += ["Against the converged self-reference (`--reference self`: discretisation "
                   "error only):\n",
-                  markdown_table(cheapest_table(df, s.dynamic, "error_self", defaults), 3), ""]
+                  markdown_table(cheapest_table(df, s.dynamic, "error_self", defaults), 3,
+                                 f"`{name}`: cheapest against the self-reference"), ""]
         extra = _self_note(df, s.reference().kind)
     parts += [f"Pareto front: {len(front)} of {len(df)} runs. " + _front_text(front, s.dynamic)
               + extra + "\n", f"Data: `data/speed_accuracy_{stem}.csv`.\n"]
@@ -267,14 +273,19 @@ def _calibration_section(frames: dict) -> list:
     table = calibration_table(frames)
     if not len(table):
         return []
-    write_csv(table, "speed_accuracy_calibration")
-    return ["## Calibration of work to seconds on this machine\n",
+    write_csv(table, "timing/speed_accuracy_calibration")
+    timing_note(
+            "Calibration of work to seconds on this machine",
             "Non-negative least squares of each scene's measured CPU times on its counted work "
             "(relative residuals): seconds ≈ Σ c_k × count_k over runs (set-up), calls, kernel "
             "points, factorised coordinates and the dense stability check's coordinates³; "
             "scatter = |predicted / measured − 1|. The last column is the machine's time per "
             "unit of the fixed-weight work that ranks the runs (median of seconds / work). "
-            "Data: `data/speed_accuracy_calibration.csv`.\n", markdown_table(table, 3), ""]
+            "Data: `../data/timing/speed_accuracy_calibration.csv`.\n", markdown_table(table, 3))
+    return ["## Calibration of work to seconds\n",
+            "Each scene's measured CPU times fitted on its counted work (seconds per counted "
+            "feature, the fit's scatter): on the timing page, since it varies per run and "
+            "machine.\n"]
 
 
 def speed_accuracy_chapter(workers=None) -> tuple[str, dict]:

@@ -99,13 +99,13 @@ def reissner_convergence(ns=(2, 4, 8, 16, 32, 64, 128, 256)):
                        if out["converged"] else np.nan)
                 errs.append(err)
                 rows.append({"model": name, "element": label, "n": n, "tip_x": r["tip_x"],
-                             "tip_y": r["tip_y"], "error_m": err, "cpu_time_s": out["cpu_time_s"]})
+                             "tip_y": r["tip_y"], "error_m": err, "timing: cpu_time_s": out["cpu_time_s"]})
             series[label] = errs
         b = [np.hypot(v[2][0] - ref["tip_x"], v[2][1] - ref["tip_y"]) for v in b188["rows"].values()]
         for n, e in zip(pub.N, b):
             rows.append({"model": name, "element": "BEAM188 (published)", "n": n,
                          "tip_x": b188["rows"][n][2][0], "tip_y": b188["rows"][n][2][1],
-                         "error_m": e, "cpu_time_s": None})
+                         "error_m": e, "timing: cpu_time_s": None})
         for label, errs in series.items():
             ax.loglog(ns, errs, "o-", label=label)
         fine = run("cantilever", n_elements=1024, **model)["results"]
@@ -115,7 +115,7 @@ def reissner_convergence(ns=(2, 4, 8, 16, 32, 64, 128, 256)):
             self_err.append(np.hypot(r["tip_x"] - fine["tip_x"], r["tip_y"] - fine["tip_y"]))
             rows.append({"model": name, "element": "linear (thesis) vs itself at n=1024", "n": n,
                          "tip_x": r["tip_x"], "tip_y": r["tip_y"], "error_m": self_err[-1],
-                         "cpu_time_s": None})
+                         "timing: cpu_time_s": None})
         ax.loglog(ns, self_err, "b:", marker=".", label="linear (thesis) vs itself, n = 1024")
         ax.loglog(pub.N, b, "k^--", label="ANSYS BEAM188 (published)")
         ax.set(title=f"{name}: |tip − Reissner|", xlabel="number of elements", ylabel="error [m]")

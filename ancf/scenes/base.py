@@ -8,7 +8,9 @@ and turns the outcome into the public JSON shape
 ``cpu_time_s`` is the process CPU time of the run without the compilation of numba
 kernels or their loading from numba's on-disk cache (a first call in a process), which
 is ``compile_cpu_s`` (:mod:`ancf.common.compile_time`): the same solve reports about the
-same ``cpu_time_s`` with an empty cache, a warm cache or in a warm process.
+same ``cpu_time_s`` with an empty cache, a warm cache or in a warm process.  Every run
+uses one BLAS thread (:func:`ancf.common.threads.blas_pinned`): its numbers do not
+depend on the machine's core count.
 
 A static scene that ``ancf modes`` serves (:mod:`ancf.scenes.modes`) also declares
 ``modal``: ``params -> ModalModel``, its model with a density, and ``modal_params``, the
@@ -24,6 +26,7 @@ from typing import Callable, NamedTuple
 from ancf.common.compile_time import compile_cpu
 from ancf.common.diagnostics import nonfinite, numerical_warnings
 from ancf.common.params import InputError, Param
+from ancf.common.threads import blas_pinned
 
 #: the density ``ancf modes`` adds to the scenes of steel beams and plates, whose static
 #: runs need no mass: steel, the material of their E = 2.07e11 (2.1e11) Pa
@@ -119,7 +122,7 @@ class Scene:
         """Validate, run and time; returns (public JSON dict, full result)."""
         params = self.resolve(overrides)
         t0 = time.process_time()
-        with numerical_warnings() as noted, compile_cpu() as compiled:
+        with blas_pinned(), numerical_warnings() as noted, compile_cpu() as compiled:
             res = self.run(params)
         cpu = max(time.process_time() - t0 - compiled.seconds, 0.0)
         res.warnings += noted + (self.warn(params, res) if self.warn else [])

@@ -51,6 +51,7 @@ from ancf.study.references import ReferenceFailed, runner, spec, stable_hash
 from ancf.common.threads import BLAS_ENV
 from ancf.common.params import InputError
 from ancf.common.paths import REPO
+from ancf.scenes.store import keep
 
 STATUSES = ("ok", "not-converged", "failed", "timeout", "invalid", "worker-died")
 RETRY = ("failed", "timeout", "worker-died")
@@ -187,6 +188,7 @@ def run_case(task: dict) -> dict:
         return failure_row(task, "failed", f"{type(exc).__name__}: {exc}{where}",
                            time.perf_counter() - t0)
     wall = time.perf_counter() - t0
+    keep(task["scene"], task["params"], out)
     res = out["results"] or {}
     row.update(converged=bool(out["converged"]), message=out["message"],
                cpu_time_s=float(out["cpu_time_s"]),

@@ -1,0 +1,46 @@
+"""Runs shared between processes of one report generation: the public output dict of a
+finished scene run, kept in the folder named by ``ANCF_RUN_STORE`` (unset: nothing kept).
+
+The report generator runs chapters in parallel processes and the speed-accuracy sweeps in
+worker processes; the 3D belt chapter needs the same Model 2 runs that the belt3d sweep
+already made (each about a minute).  A sweep worker keeps each converged run's output
+(:func:`keep`); a chapter asks for it (:func:`stored`) before running again.  The key is
+the scene and its resolved parameters, so overrides spelled differently meet; the store
+lives for one generation (the generator makes and removes the folder), so the sources
+cannot change under it.  Outputs are pickled whole: every number comes back bit for bit.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import pickle
+from pathlib import Path
+
+ENV = "ANCF_RUN_STORE"
+
+
+def _path(scene: str, overrides: dict) -> Path | None:
+    root = os.environ.get(ENV)
+    if not root:
+        return None
+    from ancf.scenes import SCENES
+    params = SCENES[scene].resolve(dict(overrides))
+    key = json.dumps({"scene": scene, "params": params}, sort_keys=True, default=repr)
+    return Path(root) / f"{hashlib.sha1(key.encode()).hexdigest()}.pkl"
+
+
+def keep(scene: str, overrides: dict, out: dict) -> None:
+    """Keep a converged run's public output dict (nothing when no store is set)."""
+    path = _path(scene, overrides)
+    if path is None or not out.get("converged"):
+        return
+    tmp = path.with_suffix(f".{os.getpid()}.tmp")
+    tmp.write_bytes(pickle.dumps(out))
+    tmp.replace(path)  # atomic: a reader sees the whole file or none
+
+
+def stored(scene: str, overrides: dict) -> dict | None:
+    """The kept output dict of this run, or None."""
+    path = _path(scene, overrides)
+    return pickle.loads(path.read_bytes()) if path is not None and path.exists() else None
