@@ -76,6 +76,16 @@ def checks_section(checks, status: dict, stem: str, tied: str) -> list:
             markdown_table(df, 4), ""]
 
 
+def count_axis(ax, counts) -> None:
+    """Label a logarithmic x axis of element counts plainly at ``counts`` ("2, 4, 8",
+    not "2×10⁰"), without minor labels."""
+    from matplotlib.ticker import FixedFormatter, FixedLocator, NullFormatter
+    values = sorted({int(v) for v in counts})
+    ax.xaxis.set_major_locator(FixedLocator(values))
+    ax.xaxis.set_major_formatter(FixedFormatter([str(v) for v in values]))
+    ax.xaxis.set_minor_formatter(NullFormatter())
+
+
 def save_figure(fig, name: str) -> Path:
     path = settings().root / "figures" / f"{name}.png"
     path.parent.mkdir(parents=True, exist_ok=True)
