@@ -163,7 +163,7 @@ def _sweep(args) -> int:
 
 
 def _recommend(args) -> int:
-    from ancf.study.recommend import public, recommend
+    from ancf.study.recommend import command_sets, public, recommend
     res = recommend(args.name, args.tol, fixed=_parse_sets(args.set), reference=args.reference,
                     data=args.data, workers=args.workers, scheduler=args.scheduler,
                     time_limit=args.time_limit, progress=not args.no_progress)
@@ -173,7 +173,7 @@ def _recommend(args) -> int:
         print(res["message"])
         if res["params"]:
             print("  ancf run " + args.name + " " + " ".join(
-                f"--set {k}={v}" for k, v in res["params"].items() if v is not None))
+                f"--set {k}={v}" for k, v in command_sets(args.name, res["params"]).items()))
     return res["exit_code"]
 
 

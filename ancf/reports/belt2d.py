@@ -20,6 +20,7 @@ from ancf.checks import belt2d as bc  # noqa: E402
 from ancf.checks import belt_element as ec  # noqa: E402
 from ancf.belts.post2d import sample  # noqa: E402
 from ancf.study.extremes import QUICK_SKIPPED  # noqa: E402
+from ancf.reports.animations import report_animation  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure,  # noqa: E402
                                  settings, write_csv)
 
@@ -480,5 +481,6 @@ def belt2d_chapter() -> tuple[str, dict]:
                     profiles, radius_ratio, run_stats):
         parts += section()
     parts += text
+    parts += report_animation("belt2d")
     parts.append(f"\n_Chapter CPU time: {time.process_time() - t0:.0f} s._\n")
     return "\n".join(parts), status
