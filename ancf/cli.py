@@ -193,6 +193,9 @@ def _command(args, params: dict) -> str:
     if args.name in FILE_SCENES:
         words.append(f"--file {params.pop('file')}")
         words += [f"--set {item}" for item in params.pop("set").split(SEP) if item]
+    elif command == "run":
+        from ancf.study.recommend import command_sets
+        params = command_sets(args.name, params)
     return " ".join(words + [f"--set {k}={v}" for k, v in params.items()
                              if v is not None and not (command == "modes" and k == "count")])
 

@@ -105,3 +105,21 @@ def test_help_lists_every_command_in_plain_words(capsys):
     for cmd in ("scenes", "run", "analytic", "sweep", "recommend"):
         assert f"\n    {cmd} " in text
     assert "run an analytic reference" in text and " a analytic" not in text
+
+
+def test_recommended_command_line_prints_no_derived_default():
+    """`ancf recommend` prints the run as `--set` values: the model knobs and the parameters
+    that differ from the scene's derived defaults, so F = -5e8 h^3 (-500000.0000000001 N at
+    h = 0.1) is not printed, and the printed line resolves to the very same parameters."""
+    from ancf.scenes import SCENES
+    from ancf.study.recommend import command_sets
+    sc = SCENES["cantilever"]
+    for given in ({"n_elements": "16"}, {"n_elements": "16", "h": "0.5"},
+                  {"n_elements": "16", "F": "-5e5"}):
+        p = sc.resolve(given)
+        sets = command_sets("cantilever", p)
+        assert ("F" in sets) == ("F" in given) and sets["n_elements"] == 16
+        assert sc.resolve({k: repr(v) if isinstance(v, float) else str(v)
+                           for k, v in sets.items()}) == p
+    assert "-500000.0000000001" not in " ".join(map(str, command_sets(
+        "cantilever", sc.resolve({})).values()))

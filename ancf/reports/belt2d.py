@@ -20,6 +20,7 @@ from ancf.checks import belt2d as bc  # noqa: E402
 from ancf.checks import belt_element as ec  # noqa: E402
 from ancf.belts.post2d import sample  # noqa: E402
 from ancf.study.extremes import QUICK_SKIPPED  # noqa: E402
+from ancf.reports.animations import report_animation  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure,  # noqa: E402
                                  settings, timing_note, write_csv)
 
@@ -481,5 +482,6 @@ def belt2d_chapter() -> tuple[str, dict]:
                     profiles, radius_ratio, run_stats):
         parts += section()
     parts += text
+    parts += report_animation("belt2d")
     timing_note("Chapter", f"CPU time of the chapter: {time.process_time() - t0:.0f} s.\n")
     return "\n".join(parts), status

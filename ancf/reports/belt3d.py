@@ -22,6 +22,7 @@ from ancf.study.extremes import QUICK_SKIPPED  # noqa: E402
 from ancf.core.quadrature import gauss01  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure, settings,  # noqa: E402
                                  write_csv)
+from ancf.reports.animations import report_animation  # noqa: E402
 from ancf.scenes import SCENES  # noqa: E402
 
 LABELS = {"green": "Green (Eq. 4.9)", "true": "true (Eq. 4.10)", "almansi": "Almansi (Eq. 4.11)",
@@ -256,6 +257,7 @@ def belt3d_chapter() -> tuple[str, dict]:
     text += ["## Distributions along the belt (Model 2, t = 1.2 s)\n"]
     text += _line_figures() + _force_figure()
     text += ["## Pulley speeds\n"] + _omega_figure()
+    text += report_animation("belt3d")
     text += _convergence_table()
     table, status = _checks_table(checks)
     return "\n".join(text + table), status

@@ -14,8 +14,8 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.checks import elements3d as ec  # noqa: E402
-from ancf.reports.output import (checks_section, markdown_table, progress,  # noqa: E402
-                                 save_figure, write_csv)
+from ancf.reports.output import (checks_section, count_axis, markdown_table,  # noqa: E402
+                                 progress, save_figure, write_csv)
 
 
 def _plate_figure(df: pd.DataFrame) -> str:
@@ -25,6 +25,7 @@ def _plate_figure(df: pd.DataFrame) -> str:
     ax.loglog(n, err[-1] * (n[-1] / n) ** 2, "k--", lw=0.8, label="slope −2")
     ax.set(xlabel="elements per side", ylabel="|w / w_Navier − 1|",
            title="Simply supported square plate, centre deflection")
+    count_axis(ax, n)
     ax.grid(alpha=0.3, which="both")
     ax.legend()
     save_figure(fig, "elements3d_plate_convergence")

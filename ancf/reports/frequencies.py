@@ -13,8 +13,8 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.checks import frequencies as fq  # noqa: E402
-from ancf.reports.output import (checks_section, markdown_table, progress,  # noqa: E402
-                                 save_figure, timing_note, write_csv)
+from ancf.reports.output import (checks_section, count_axis, markdown_table,  # noqa: E402
+                                 progress, save_figure, timing_note, write_csv)
 
 TIMING = "timing: CPU ms"
 
@@ -256,7 +256,8 @@ def _plate_figure(plate: pd.DataFrame, free: list) -> str:
                  label=f"elastic mode {k + 1}")
     b.set(title="free–free vs the Ritz series", xlabel="elements per side",
           ylabel="ratio / exact − 1")
-    for ax in (a, b):
+    for ax, counts in ((a, n), (b, nf)):
+        count_axis(ax, counts)
         ax.grid(alpha=0.3, which="both")
         ax.legend(fontsize=8)
     save_figure(fig, "frequencies_plates")

@@ -123,6 +123,16 @@ def checks_section(checks, status: dict, stem: str, tied: str) -> list:
             markdown_table(df, 4), ""]
 
 
+def count_axis(ax, counts) -> None:
+    """Label a logarithmic x axis of element counts plainly at ``counts`` ("2, 4, 8",
+    not "2×10⁰"), without minor labels."""
+    from matplotlib.ticker import FixedFormatter, FixedLocator, NullFormatter
+    values = sorted({int(v) for v in counts})
+    ax.xaxis.set_major_locator(FixedLocator(values))
+    ax.xaxis.set_major_formatter(FixedFormatter([str(v) for v in values]))
+    ax.xaxis.set_minor_formatter(NullFormatter())
+
+
 def save_figure(fig, name: str, timing: bool = False) -> Path:
     """``figures/NAME.png``; ``figures/timing/NAME.png`` for a figure with a time axis."""
     path = settings().root / "figures" / ("timing" if timing else "") / f"{name}.png"

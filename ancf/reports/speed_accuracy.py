@@ -100,8 +100,35 @@ def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error",
     return pd.DataFrame(rows)
 
 
+def _label_text(front: pd.DataFrame, dynamic: bool) -> tuple[list, str]:
+    """Short labels of the front's runs (the element count, and the time step where the
+    front's runs differ in it) and what they are."""
+    with_dt = dynamic and "dt" in front and front["dt"].nunique() > 1
+    labels = [f"{int(r['n_elements'])}" + (f", {r['dt']:g}" if with_dt else "")
+              for _, r in front.iterrows()]
+    return labels, "labels: n_elements" + (", dt [s]" if with_dt else "")
+
+
+def _label_front(ax, front: pd.DataFrame, y, dynamic: bool) -> None:
+    """Label the front's runs, leaving out a label too close to the last one written."""
+    if "n_elements" not in front:
+        return
+    labels, what = _label_text(front, dynamic)
+    last = None
+    for j, (x, yj, text) in enumerate(zip(front["work"].astype(float), y, labels)):
+        at = np.log10([x, yj])
+        if last is not None and abs(at[0] - last[0]) < 0.06 and abs(at[1] - last[1]) < 0.15:
+            continue
+        ax.annotate(text, (x, yj), fontsize=6.5, xytext=(5, 4), textcoords="offset points",
+                    zorder=6)
+        last = at
+    ax.text(0.99, 0.98, what, transform=ax.transAxes, fontsize=7, ha="right", va="top")
+
+
 def plot(df: pd.DataFrame, scene: str, dynamic: bool, ax, err: str = "error", title=None,
-         legend: bool = True):
+         legend: bool = True, ylabel: str = "error"):
+    """Error against counted work of every converged run, one marker per model, the Pareto
+    front (a step line through circled runs) with its runs labelled (:func:`_label_front`)."""
     ok = df[(df["status"] == "ok") & np.isfinite(df[err].astype(float))]
     groups = ok.groupby([_model(r, dynamic) for _, r in ok.iterrows()])
     markers = "osD^v<>phx*+"
@@ -110,11 +137,13 @@ def plot(df: pd.DataFrame, scene: str, dynamic: bool, ax, err: str = "error", ti
                   ms=4, alpha=0.7, label=label)
     front = pareto(ok, err=err)
     if len(front):
-        ax.step(front["work"], np.maximum(front[err].astype(float), FLOOR), "k-",
-                where="post", lw=1.2, label="Pareto front", zorder=5)
+        y = np.maximum(front[err].astype(float), FLOOR)
+        ax.step(front["work"], y, "k-", where="post", lw=1.2, marker="o", mfc="none", ms=7,
+                label="Pareto front" if len(front) > 1 else "Pareto front (one run)", zorder=5)
+        _label_front(ax, front, y, dynamic)
     for tol in TOLERANCES:
         ax.axhline(tol, color="0.8", lw=0.6, zorder=0)
-    ax.set(xlabel="work per run [units, ancf.study.cost]", ylabel="error", title=title or scene)
+    ax.set(xlabel="work per run [units, ancf.study.cost]", ylabel=ylabel, title=title or scene)
     ax.grid(True, which="both", alpha=0.25)
     if legend:  # outside the axes, so it never hides the front
         ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
@@ -207,13 +236,30 @@ def _figure(df: pd.DataFrame, name: str, s) -> str:
     ncols = 2 if "error_self" in df else 1
     fig, axes = plt.subplots(1, ncols, figsize=(6.2 * ncols + 2.6, 4.4), squeeze=False)
     plot(df, name, s.dynamic, axes[0][0], title=f"{name}: error vs {s.default_reference}",
-         legend=ncols == 1)
+         legend=ncols == 1, ylabel=s.reference().measure)
     if ncols == 2:
         plot(df, name, s.dynamic, axes[0][1], err="error_self",
-             title=f"{name}: error vs converged self-reference")
+             title=f"{name}: error vs converged self-reference",
+             ylabel=s.references["self"].measure)
     stem = f"pareto_{slug(name, s.quantity)}"
     save_figure(fig, stem)
     return stem
+
+
+def figures_from_data(scenes=None) -> list:
+    """Redraw the Pareto figures from the committed rows ``data/speed_accuracy_SCENE.csv``
+    (no sweep is run); returns the scenes drawn.  ``python -m
+    ancf.reports.speed_accuracy`` does it for every scene with a CSV.  A knob the CSV
+    leaves out (the plates' ``ng``) was not swept: it takes the scene's default."""
+    drawn = []
+    for name, s in specs().items():
+        path = settings().root / "data" / f"speed_accuracy_{slug(name, s.quantity)}.csv"
+        if (scenes is None or name in scenes) and path.exists():
+            df = pd.read_csv(path)
+            missing = {k: v for k, v in _knob_defaults(name, s).items() if k not in df}
+            _figure(df.assign(**missing), name, s)
+            drawn.append(name)
+    return drawn
 
 
 def scene_section(name: str, s, df: pd.DataFrame,
@@ -332,3 +378,7 @@ def _self_note(df: pd.DataFrame, kind: str) -> str:
                 "discretisation.")
     return (f" Both references give the same picture (best errors {best:.1e} and "
             f"{best_self:.1e}).")
+
+
+if __name__ == "__main__":
+    print("redrawn:", ", ".join(figures_from_data()))

@@ -221,10 +221,10 @@ def frames(scene: str, extra: dict, per_element: int = 8) -> list[Frame]:
     if not has_geometry(extra):
         raise InputError(f"{scene}: this result has no mesh (an analytic reference): "
                          "nothing to write")
-    if scene == "belt2d":
+    if "drive" in extra:  # belt2d, belt-drive (planar) and belt3d
+        if hasattr(extra["drive"], "axes"):
+            return _belt3d_frames(extra, max(per_element // 2, 1))
         return _belt2d_frames(extra, per_element)
-    if scene == "belt3d":
-        return _belt3d_frames(extra, max(per_element // 2, 1))
     if hasattr(extra["mesh"], "element_nodes"):
         return _plate_frames(extra)
     return _beam_frames(extra, per_element)

@@ -320,6 +320,22 @@ def _default_model(scene, base, s, ref, df, names, sc) -> dict:
     return out
 
 
+def command_sets(scene: str, params: dict) -> dict:
+    """The ``--set`` values a command line needs to run ``params``: the model knobs, and
+    every other parameter only where it differs from the default the scene derives from the
+    rest (so a default such as F = -5e8 h^3 = -500000.0000000001 N is not printed back as
+    a number, and the run uses the very same value)."""
+    from ancf.scenes import SCENES
+    sc, knobs = SCENES[scene], spec(scene).knobs
+    given = {k: v for k, v in params.items() if v is not None}
+    out = {}
+    for k, v in given.items():
+        rest = {j: w for j, w in given.items() if j != k}
+        if k in knobs or sc.resolve(rest).get(k) != v:
+            out[k] = v
+    return out
+
+
 def public(result: dict) -> dict:
     """The JSON printed by ``ancf recommend --json``."""
     keys = ("scene", "tol", "params", "error", "reference", "cpu_time_s", "found", "model",

@@ -86,7 +86,8 @@ class Reference:
     ``error(results, values, params) -> float`` (dimensionless); ``kind`` is
     ``analytic``, ``published`` (transcribed values of another code, for the published
     problem only) or ``self``; ``doc`` names the reference and defines the error.
-    ``fine`` (self-references): the knob values of the much finer model.
+    ``fine`` (self-references): the knob values of the much finer model.  ``measure``:
+    a short name of the error (the y-axis label of the Pareto plots).
     """
 
     name: str
@@ -95,6 +96,7 @@ class Reference:
     values: Callable[[dict], dict]
     error: Callable[[dict, dict, dict], float]
     fine: dict = field(default_factory=dict)
+    measure: str = "relative error"
 
 
 def _tip_error(res, ref, p):
@@ -169,7 +171,8 @@ def _traj_error(res, ref, p):
 
 
 def self_reference(scene: str, fine: dict, quantities: tuple, error, doc: str,
-                   check: dict | None = None, knobs: tuple = STATIC_KNOBS) -> Reference:
+                   check: dict | None = None, knobs: tuple = STATIC_KNOBS,
+                   measure: str = "relative error") -> Reference:
     """A converged self-reference: the scene run with the ``fine`` knobs (and the run's
     physical parameters), cached on disk.  ``check``: knobs of a coarser run whose
     difference to the fine one is stored as ``self_check`` (an estimate of the
@@ -178,7 +181,7 @@ def self_reference(scene: str, fine: dict, quantities: tuple, error, doc: str,
     def values(p):
         physical = {k: v for k, v in p.items() if k not in knobs}
         return computed_self_reference(scene, physical, fine, quantities, error, check)
-    return Reference("self", "self", doc, values, error, dict(fine))
+    return Reference("self", "self", doc, values, error, dict(fine), measure)
 
 
 def computed_self_reference(scene, p, fine, quantities, error, check=None) -> dict:
@@ -275,7 +278,7 @@ def _cantilever_spec() -> SceneSpec:
             "geometrically exact Reissner rod (`ancf analytic reissner`); error = |tip − tip_ref| / "
             "|tip_ref − (L, 0)|. At large strain it includes the constitutive gap between the ANCF "
             "St-Venant–Kirchhoff continuum and the Reissner rod (5e-4 in Model 1, 1.5e-2 in "
-            "Model 2; see static_beams.md)", _reissner, _tip_error),
+            "Model 2; see static_beams.md)", _reissner, _tip_error, measure="relative tip-position error"),
         "self": self_reference(
             "cantilever", {"element": "linear", "integration": "thesis", "n_elements": 1024,
                            "rtol": 1e-9, "load_steps": 10, "max_iterations": 25},
@@ -283,12 +286,12 @@ def _cantilever_spec() -> SceneSpec:
             "converged self-reference: linear element, thesis scheme, 1024 elements, Newton rtol "
             "1e-9 (cached); error = |tip − tip_ref| / |tip_ref − (L, 0)|; measures the "
             "discretisation error of the ANCF continuum only",
-            check={"n_elements": 512}),
+            check={"n_elements": 512}, measure="relative tip-position error"),
         "timoshenko": Reference(
             "timoshenko", "analytic",
             "linear Timoshenko cantilever F L³/(3EI) + F L/(k_s G A) (SymPy-derived); error = "
             "|tip_y − w| / |w|; valid for small deflections only", _timoshenko_cantilever,
-            _timoshenko_cantilever_error),
+            _timoshenko_cantilever_error, measure="relative tip-deflection error"),
     }
     return SceneSpec(
         "cantilever", STATIC_KNOBS, frozenset({"axial", "bending", "shear", "large-rotation"}),
@@ -303,13 +306,15 @@ def _simply_supported_spec() -> SceneSpec:
         "timoshenko": Reference(
             "timoshenko", "analytic",
             "Timoshenko beam, midspan load (`ancf analytic timoshenko`, SymPy-derived); error = "
-            "|w − w_ref| / |w_ref|", _timoshenko_ss, _rel("mid_deflection_m")),
+            "|w − w_ref| / |w_ref|", _timoshenko_ss, _rel("mid_deflection_m"),
+            measure="relative midspan-deflection error"),
         "self": self_reference(
             "simply-supported", {"element": "linear", "integration": "thesis", "n_elements": 1024,
                                  "rtol": 1e-8},
             ("mid_deflection_m",), _rel("mid_deflection_m"),
             "converged self-reference: linear element, thesis scheme, 1024 elements (cached); "
-            "error = |w − w_ref| / |w_ref|", check={"n_elements": 512}),
+            "error = |w − w_ref| / |w_ref|", check={"n_elements": 512},
+            measure="relative midspan-deflection error"),
     }
     ns = (2, 4, 8, 16, 32, 64, 128, 256)
     return SceneSpec(
@@ -325,12 +330,12 @@ def _axial_bar_spec() -> SceneSpec:
             "bar", "analytic",
             "uniaxial St-Venant–Kirchhoff bar (Green strain, the ANCF material law): "
             "F/A = E λ(λ² − 1)/2, elongation (λ − 1) L; error = |u − u_ref| / |u_ref|",
-            _bar_svk, _rel("elongation_m")),
+            _bar_svk, _rel("elongation_m"), measure="relative elongation error"),
         "linear-bar": Reference(
             "linear-bar", "analytic",
             "linear bar F L/(E A); error = |u − u_ref| / |u_ref| (differs from the "
             "St-Venant–Kirchhoff bar by 1.5 × strain, 3.6e-5 at the default load)",
-            _bar_linear, _rel("elongation_m")),
+            _bar_linear, _rel("elongation_m"), measure="relative elongation error"),
     }
     return SceneSpec(
         "axial-bar", STATIC_KNOBS, frozenset({"axial"}), refs, "bar",
@@ -377,12 +382,13 @@ def _pendulum_spec() -> SceneSpec:
             "pendulum", fine, ("times", "tip_x", "tip_y"), _traj_error,
             "converged self-reference: 32 linear elements, generalized-α, dt = 1e-3 s (computed "
             "once, about a minute, then cached); error = max_t |tip(t) − tip_ref(t)| / L",
-            check={"n_elements": 16}, knobs=DYNAMIC_KNOBS),
+            check={"n_elements": 16}, knobs=DYNAMIC_KNOBS, measure="tip-trajectory error max|Δtip| / L"),
         "rigid-pendulum": Reference(
             "rigid-pendulum", "analytic",
             "rigid pendulum (analytic.dynamics_refs); error = max_t |tip(t) − tip_ref(t)| / L; "
             "includes the flexibility of the beam (E = 2.07e7 Pa), so it is a floor, not a "
-            "discretisation error", _dynamic_ref("pendulum", "rigid-pendulum"), _traj_error),
+            "discretisation error", _dynamic_ref("pendulum", "rigid-pendulum"), _traj_error,
+            measure="tip-trajectory error max|Δtip| / L"),
     }
     return SceneSpec("pendulum", DYNAMIC_KNOBS,
                      frozenset({"axial", "bending", "large-rotation", "inertia"}), refs, "self",
@@ -407,7 +413,8 @@ def _spinning_spec() -> SceneSpec:
             "spinning-extension", "analytic",
             "steady axial extension of the spinning beam (thesis Eq. 2.36, "
             "analytic.dynamics_refs); error = |u − u_ref| / |u_ref| of the extension averaged "
-            "over the last mean_window seconds", _spinning_ref, _rel("axial_extension_m")),
+            "over the last mean_window seconds", _spinning_ref, _rel("axial_extension_m"),
+            measure="relative axial-extension error"),
     }
     grids = ({"element": ["linear"], "integration": ["thesis"], "n_elements": [2, 3, 4, 8],
               "integrator": ["generalized-alpha"], "dt": [1e-2, 5e-3, 2.5e-3]},
@@ -441,7 +448,7 @@ def _belt_free_static_spec() -> SceneSpec:
         "max |r − r̄|) / R over the centreline's distance r from its centroid (r̄ its mean). "
         "The mean radius levels off at 3.0e-6 R from 16 elements on (the ring's own axial "
         "strain under bending), the deviation from roundness falls with the element count",
-        _circle, _roundness_error)}
+        _circle, _roundness_error, measure="roundness error / R")}
     grid = ({"n_elements": [4, 6, 8, 10, 16, 20, 40, 80], "elastic_points": [3, 5],
              "rtol": [1e-8, 1e-4]},)
     return SceneSpec("belt-free-static", BELT_STATIC_KNOBS,
@@ -496,12 +503,14 @@ def _belt2d_spec() -> SceneSpec:
         f"error = max of the relative errors of the driven speed averaged over the last "
         f"{BELT_WINDOW:g} s and of the tight and slack span tensions averaged over the last "
         "0.1 s",
-        check={"n_elements": 80}, knobs=BELT_KNOBS),
+        check={"n_elements": 80}, knobs=BELT_KNOBS,
+        measure="relative error of driven speed, span tensions"),
             "no-slip": Reference(
                 "no-slip", "analytic",
                 "the inextensible belt without slip: ω_driven / ω_driver = R1/R2; error = "
                 "|omega_ratio_steady − R1/R2| / (R1/R2), the slip (creep and spin-up lag) "
-                "averaged over the last 0.1 s", _no_slip, _slip_error)}
+                "averaged over the last 0.1 s", _no_slip, _slip_error,
+                measure="slip |ω ratio / (R1/R2) − 1|")}
     grids = ({"n_elements": [10, 20, 40, 80], "gauss_points": [5, 7, 11],
               "integrator": ["generalized-alpha"], "dt": [1e-3, 5e-4, 2.5e-4]},
              {"n_elements": [20], "gauss_points": [7], "integrator": ["generalized-alpha"],
@@ -550,7 +559,7 @@ def _belt3d_spec() -> SceneSpec:
         "axial force (results.tensions.membrane) from T_tight, T_slack. It includes the model "
         "gap (Bechtel: no slip in the stick arcs, uniform span tension; the FE belt is a "
         "membrane with contact compliance): about 1-3 % for Model 2 at any mesh",
-        _bechtel, _bechtel_error)}
+        _bechtel, _bechtel_error, measure="relative span-tension error")}
     grids = ({"n_elements": [20, 30, 40], "contact_points": [25, 49, 81],
               "integrator": ["generalized-alpha"], "dt": [1e-4]},)
     return SceneSpec("belt3d", BELT3D_KNOBS, frozenset({"axial", "large-rotation", "inertia",
@@ -575,7 +584,8 @@ def _plate_square_spec() -> SceneSpec:
         "navier", "analytic",
         "Navier's double series of the simply supported Kirchhoff plate (`ancf analytic "
         "navier-plate`, truncation below 1e-10); error = |w − w_ref| / |w_ref| of the centre "
-        "deflection", _navier, _rel("center_deflection_m"))}
+        "deflection", _navier, _rel("center_deflection_m"),
+        measure="relative centre-deflection error")}
     grid = ({"n_elements": [2, 4, 8, 16, 32], "ng": [4]},)
     return SceneSpec("plate-square", PLATE_KNOBS, frozenset({"bending", "3D"}), refs, "navier",
                      report_grids=grid, recommend_grids=grid, provides=frozenset({"bending", "3D"}),
@@ -596,7 +606,7 @@ def _plate_strip_spec() -> SceneSpec:
         ("tip_x", "tip_y", "tip_z"), _strip_tip_error,
         "converged self-reference: 64 x 1 plate elements, Newton rtol 1e-9 (cached); error = "
         "|tip − tip_ref| / |tip_ref − (L, b/2, 0)|", check={"n_elements": 32},
-        knobs=PLATE_STRIP_KNOBS)}
+        knobs=PLATE_STRIP_KNOBS, measure="relative tip-position error")}
     grid = ({"n_elements": [1, 2, 4, 8, 16], "rtol": [1e-8]},)
     return SceneSpec("plate-strip", PLATE_STRIP_KNOBS,
                      frozenset({"bending", "large-rotation", "3D"}), refs, "self",
@@ -632,7 +642,7 @@ def _beam3d_spec() -> SceneSpec:
         "reissner", "analytic",
         "geometrically exact Reissner rod in the load plane (`ancf analytic reissner`; a square "
         "section or a load along a principal axis); error = |tip − tip_ref| / |tip_ref − (L, 0, "
-        "0)|", _reissner_3d, _tip3_error)}
+        "0)|", _reissner_3d, _tip3_error, measure="relative tip-position error")}
     grid = ({"element": ["linear3d"], "integration": ["thesis"], "n_elements": [1, 2, 4, 8, 16],
              "rtol": [1e-8]},
             {"element": ["belt3d"], "n_elements": [1, 2, 4, 8, 16], "rtol": [1e-8]})
@@ -696,23 +706,24 @@ _BEAM3D_GRIDS = (
     {"element": ["belt3d"], "n_elements": [2, 4, 8, 16, 32], "rtol": [1e-8]})
 
 
-def _self_3d(scene: str, quantities: tuple, error, what: str) -> Reference:
+def _self_3d(scene: str, quantities: tuple, error, what: str, measure: str) -> Reference:
     return self_reference(
         scene, {"element": "linear3d", "integration": "thesis", "n_elements": 256,
                 "rtol": 1e-10, "load_steps": 10, "max_iterations": 25},
         quantities, error, "converged self-reference: linear3d, thesis scheme, 256 elements, "
         f"Newton rtol 1e-10 (cached); error = {what}; measures the discretisation error only",
-        check={"n_elements": 128})
+        check={"n_elements": 128}, measure=measure)
 
 
 def _princeton_spec() -> SceneSpec:
     what = "|(y, z) − (y, z)_ref| / |(y, z)_ref| of the tip"
+    measure = "relative tip-displacement (y, z) error"
     refs = {"published": Reference(
         "published", "published",
         "ANSYS beam elements (Obrezkov et al. 2022, as Exudyn's TestModels/ANCFBeamTest.py "
         f"lists them; F2, F3 at 0-90° in steps of 15°); error = {what}", _princeton,
-        _yz_error), "self": _self_3d("princeton-beam", ("tip_x", "tip_y", "tip_z"), _yz_error,
-                                     what)}
+        _yz_error, measure=measure),
+        "self": _self_3d("princeton-beam", ("tip_x", "tip_y", "tip_z"), _yz_error, what, measure)}
     return SceneSpec("princeton-beam", STATIC_KNOBS,
                      frozenset({"bending", "large-rotation", "3D"}), refs, "published",
                      report_grids=_BEAM3D_GRIDS, recommend_grids=_BEAM3D_GRIDS,
@@ -722,12 +733,14 @@ def _princeton_spec() -> SceneSpec:
 
 def _bending_spec() -> SceneSpec:
     what = "largest relative error of the tip displacements u_x, u_y, u_z"
+    measure = "largest relative tip-displacement error"
     refs = {"published": Reference(
         "published", "published",
         "Nachbagauer et al. 2013, Table 4, ANSYS (40 elements), as Exudyn's "
         f"TestModels/ANCFBeamTest.py lists it; error = {what}", _general_bending,
-        _displacement_error), "self": _self_3d("beam3d-bending", ("tip_x", "tip_y", "tip_z"),
-                                               _displacement_error, what)}
+        _displacement_error, measure=measure),
+        "self": _self_3d("beam3d-bending", ("tip_x", "tip_y", "tip_z"), _displacement_error, what,
+                         measure)}
     return SceneSpec("beam3d-bending", STATIC_KNOBS, frozenset({"bending", "large-rotation",
                                                                  "3D"}),
                      refs, "published", report_grids=_BEAM3D_GRIDS,
@@ -931,7 +944,8 @@ def spec(scene: str, quantity: str = "results") -> SceneSpec:
         return max(abs(res[q] - ref[q]) / max(abs(ref[q]), 1e-300) for q in quantities)
     refs = {"self": self_reference(scene, fine, quantities, err,
                                    f"self-reference at {_knob_text(fine)}; error = max relative "
-                                   "difference of the scalar results", knobs=knobs)}
+                                   "difference of the scalar results", knobs=knobs,
+                                   measure="largest relative error of the results")}
     return SceneSpec(scene, knobs, frozenset(getattr(sc, "needs", ()) or ()), refs, "self",
                      report_grids=({"n_elements": [1, 2, 4, 8]},) if fine else ({},),
                      recommend_grids=({"n_elements": [1, 2, 4, 8]},) if fine else ({},))
