@@ -365,6 +365,8 @@ def test_thread_example_takes_exudyns_cable_law_on_the_laid_stiffness():
     assert dd.element_modulus(d.belt) == pytest.approx(0.95e7, rel=1e-14) == E_el
     s = drive_model.spec(d)
     assert s.E == E_el and s.axial == "engineering"
+    damping = drive_model.build(d).strain_damping
+    assert damping[0] == d.belt["damping_axial"] * (1.0 + d.belt["prestretch"]) == 0.95
     thesis = load(THESIS)
     assert (thesis.belt["axial_strain"], thesis.belt["strain_reference"]) == ("green",
                                                                                "stress-free")

@@ -75,7 +75,8 @@ def _as_ours(st: th.Stored, desc, shift: float = 0.3) -> dict:
                   [np.full_like(a, R), R * np.cos(arc2), np.full_like(a, -R)], -R * np.cos(arc1))
     at = lambda ss, yy: np.interp(sig, ss, yy, period=P)  # noqa: E731
     EA, law = th.stiffness(desc), desc.belt["axial_strain"]
-    tight, slack = (float(_nominal(f, EA, law)) for f in th.span_forces(st.s_force, st.axial_force, P))
+    tight, slack = (float(_nominal(f, EA, law))
+                    for f in th.span_forces(st.s_force, st.axial_force, P))
     w = np.where(st.t < 0.05, 0.0, np.minimum(12 * (st.t - 0.05) / 0.55, 12.0))
     pick = lambda v: np.asarray(v)[order].tolist()  # noqa: E731
     return {"times": st.t.tolist(),
@@ -86,7 +87,8 @@ def _as_ours(st: th.Stored, desc, shift: float = 0.3) -> dict:
             "spans": [{"from": "driver", "to": "driven", "tension_mean_N": slack},
                       {"from": "driven", "to": "driver", "tension_mean_N": tight}],
             "belt_s_m": pick(s), "belt_x_m": pick(x), "belt_y_m": pick(y),
-            "axial_force_N": pick(_nominal(st.axial_force, EA, law)), "speed_m_s": pick(at(st.s_speed, st.speed)),
+            "axial_force_N": pick(_nominal(st.axial_force, EA, law)),
+            "speed_m_s": pick(at(st.s_speed, st.speed)),
             "normal_force_N_m": pick(at(st.s_contact, st.normal)),
             "friction_force_N_m": pick(-at(st.s_contact, st.tangential))}
 

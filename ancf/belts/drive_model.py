@@ -13,7 +13,7 @@ belt's back (``side = -1``) is contact like any other.  The belt's strain-rate d
 (``damping_axial`` dEA, ``damping_bending`` dEI) acts on its axial and bending strain
 rates (:func:`ancf.elements.dufva2d.damping_forces`).  The element takes the file's
 ``axial_strain`` law and :func:`ancf.belts.drive_data.element_modulus` (the file's E, per
-stress-free or per laid length).
+stress-free or per laid length; the damping alike).
 """
 from __future__ import annotations
 
@@ -23,7 +23,8 @@ import numpy as np
 
 from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
 from ancf.belts.friction import ALL_PARAMS
-from ancf.belts.drive_data import DriveDescription, element_modulus, load_law, omega_law
+from ancf.belts.drive_data import (DriveDescription, element_modulus, laid_factor, load_law,
+                                   omega_law)
 
 FREE = ("driven", "idler", "tensioner")
 
@@ -76,6 +77,7 @@ def spec(d: DriveDescription) -> Belt2DSpec:
 
 
 def build(d: DriveDescription) -> BeltDrive:
-    """The drive's model."""
+    """The drive's model (the damping times :func:`ancf.belts.drive_data.laid_factor`)."""
     b = d.belt
-    return BeltDrive(spec(d), rig(d), d.gravity, (b["damping_axial"], b["damping_bending"]))
+    return BeltDrive(spec(d), rig(d), d.gravity,
+                     laid_factor(b) * np.array([b["damping_axial"], b["damping_bending"]]))

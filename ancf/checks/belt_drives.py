@@ -44,7 +44,8 @@ def steady_reference(desc: DriveDescription) -> dict:
         if p.law == "tensioner":
             pulleys[i]["preload"] *= _into(pulleys, i, p)
     b = desc.belt
-    return solve(pulleys, EA=element_modulus(b) * b["b"] * b["h"], rhoA=b["rho"] * b["b"] * b["h"], L0=b["length"],
+    return solve(pulleys, EA=element_modulus(b) * b["b"] * b["h"], rhoA=b["rho"] * b["b"] * b["h"],
+                 L0=b["length"],
                  mu=desc.friction["mu"])
 
 

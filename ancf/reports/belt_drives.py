@@ -147,10 +147,10 @@ def _thread_figures(cur: th.Curves, st: th.Stored) -> list:
     ax[0].legend()
     times = save_figure(fig, "belt_drives_thread_time")
     return ["Along the belt and in the span forces, ours is the belt's real force "
-            "(`ancf.checks.thread.true_force`: the element's N = E A α1 ε_l of Eq. 3.17 itself "
-            "under the file's engineering strain ε_l = |r_x| − 1, N |r_x| under the Green strain "
-            "ε_l = (|r_x|² − 1)/2: the force that balances the pulleys' moments, as the "
-            "torque-balance row shows); our contact forces are per unit "
+            "(`ancf.checks.thread.true_force`: the element's N = E A α1 ε_l of Eq. 3.17 "
+            "itself under the file's engineering strain ε_l = |r_x| − 1, N |r_x| under the "
+            "Green strain ε_l = (|r_x|² − 1)/2: the force that balances the pulleys' moments, "
+            "as the torque-balance row shows); our contact forces are per unit "
             "stress-free length.  THREAD's are Exudyn's cable force EA (|r′| − 1 − ε_ref) and its "
             "contact pressure times the width, per unit laid length.\n",
             f"![THREAD along the belt](figures/{along.name})\n",
