@@ -352,3 +352,31 @@ def test_a_missing_file_or_a_directory_is_one_line(tmp_path):
     with pytest.raises(InputError, match=r"cannot be read \(Is a directory\); allowed: a "
                                          "readable TOML drive file"):
         load(tmp_path)
+
+
+def test_thread_example_takes_exudyns_cable_law_on_the_laid_stiffness():
+    """THREAD's file states Exudyn's law: the engineering strain, EA per laid length, so
+    the element gets E (1 + prestretch) = 0.95e7 Pa (EA 7600 N), computed from the file's
+    E and prestretch; the thesis's file keeps the Green law on its own E."""
+    from ancf.belts import drive_model
+    d = load(THREAD)
+    assert (d.belt["axial_strain"], d.belt["strain_reference"]) == ("engineering", "laid")
+    E_el = d.belt["E"] * (1.0 + d.belt["prestretch"])
+    assert dd.element_modulus(d.belt) == pytest.approx(0.95e7, rel=1e-14) == E_el
+    s = drive_model.spec(d)
+    assert s.E == E_el and s.axial == "engineering"
+    damping = drive_model.build(d).strain_damping
+    assert damping[0] == d.belt["damping_axial"] * (1.0 + d.belt["prestretch"]) == 0.95
+    thesis = load(THESIS)
+    assert (thesis.belt["axial_strain"], thesis.belt["strain_reference"]) == ("green",
+                                                                               "stress-free")
+    assert drive_model.spec(thesis).E == thesis.belt["E"]
+    assert drive_model.spec(thesis).axial == "green"
+    stress_free = load(THREAD, ["belt.strain_reference=stress-free"])
+    assert dd.element_modulus(stress_free.belt) == stress_free.belt["E"]
+
+
+@pytest.mark.parametrize("key", ["axial_strain", "strain_reference"])
+def test_axial_law_keys_refuse_unknown_values(key):
+    with pytest.raises(InputError, match=f"^belt.{key} = 'log' is out of range; allowed: one of"):
+        load(THREAD, [f"belt.{key}=log"])

@@ -61,6 +61,7 @@ class Belt2DSpec(DriveSpec):
     c_p: float                  # penalty damping per unit length, N s/m^2
     friction: tuple             # (law, its parameters): a row of ancf.belts.friction.ALL_PARAMS
     gauss_points: int           # contact Gauss points per element (5, 7, 11)
+    axial: str = field(default="green", kw_only=True)  # axial strain law (dufva2d.AXIAL_LAWS)
 
 
 @dataclass(frozen=True)
@@ -196,7 +197,8 @@ class BeltDrive(PulleyDrive):
         self.q0 = laid_belt(s.path, s.belt_length, s.n_elements).ravel()
         self.element = DufvaBelt2D(self.mesh.lengths, self.q0[self.mesh.dofmap],
                                    RectangularSection(s.b, s.h), E=s.E, nu=s.nu, rho=s.rho,
-                                   alpha1=s.alpha1, alpha2=s.alpha2, ks=s.ks, nx=s.nx)
+                                   alpha1=s.alpha1, alpha2=s.alpha2, ks=s.ks, nx=s.nx,
+                                   axial=s.axial)
         n = self.mesh.n_dofs
         self.pattern = ReducedPattern(n, [self.mesh.dofmap], sp.identity(n, format="csr"))
         self.vidx, self.midx = self.pattern.groups[0]

@@ -8,6 +8,14 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   ``EA`` N = E b h, one of them), the section ``h`` x ``b`` (m), ``rho`` (kg/m^3), ``nu``,
   ``ks``, Dufva's ``alpha1``, ``alpha2`` (Eqs 3.18-3.19), the reference length
   ``length`` L0 (m) or the ``prestretch`` L0 / P - 1 on the wrapped path P (one of them),
+  the element's ``axial_strain`` law (``green``: the thesis's Green strain, force
+  E A alpha1 (|r_x|^2 - 1)/2; ``engineering``: Exudyn's ANCFCable2D, force
+  E A alpha1 (|r_x| - 1), r_x the slope along the stress-free length;
+  :mod:`ancf.elements.dufva2d`), the ``strain_reference`` the file's E (or EA) and
+  damping are measured on (``stress-free``: per stress-free length, what the element
+  takes; ``laid``: per laid length on the path, Exudyn's convention with a reference
+  strain, so the element gets E (1 + prestretch) and the damping times (1 + prestretch),
+  :func:`laid_factor`),
   the axial and bending strain-rate damping ``damping_axial`` (dEA, N s) and
   ``damping_bending`` (dEI, N m^2 s) and ``contact_offset`` (m): the distance of the
   belt's running surfaces from its centreline, so the centreline's path runs at
@@ -130,6 +138,11 @@ BELT = _keys(
           lo=0, lo_open=True, hi=1e3),
     Param("prestretch", REQUIRED, float, "-", "L0 / P - 1 on the wrapped path P (or length)",
           lo=-0.5, hi=0.0),
+    Param("axial_strain", "green", str, doc="axial strain law of the element",
+          choices=("green", "engineering")),
+    Param("strain_reference", "stress-free", str, doc="the length E (or EA) is per: "
+          "'stress-free' or 'laid' (E and damping x (1 + prestretch) to the element)",
+          choices=("stress-free", "laid")),
     Param("damping_axial", 0.0, float, "N s", "axial strain-rate damping dEA", lo=0, hi=1e9),
     Param("damping_bending", 0.0, float, "N m^2 s", "bending strain-rate damping dEI", lo=0,
           hi=1e9),
@@ -237,6 +250,22 @@ class DriveDescription:
     run: dict
     gravity: tuple
     path: PulleyPath
+
+
+def laid_factor(belt: dict) -> float:
+    """The factor (-) from the file's section constants to the element's: 1, or
+    1 + prestretch when ``strain_reference`` is ``laid``.  Exudyn's cable on its laid
+    length s = x / (1 + prestretch) (x the stress-free length): the slope |r'| = (1 +
+    prestretch) |r_x|, so its force EA (|r'| - 1 - prestretch) is E A (1 + prestretch)
+    (|r_x| - 1); its energies and damping per ds, with its curvature and strain rates,
+    are those per dx times 1 + prestretch alike."""
+    return 1.0 + belt["prestretch"] if belt["strain_reference"] == "laid" else 1.0
+
+
+def element_modulus(belt: dict) -> float:
+    """Young's modulus the element gets (Pa) from a resolved belt table: E times
+    :func:`laid_factor`."""
+    return belt["E"] * laid_factor(belt)
 
 
 def omega_law(pulley: PulleySpec):

@@ -11,7 +11,9 @@ a free one without load, ``tensioner`` a free one without load on an arm whose a
 one more free coordinate (after the pulleys', :mod:`ancf.belts.arm2d`).  A pulley on the
 belt's back (``side = -1``) is contact like any other.  The belt's strain-rate damping
 (``damping_axial`` dEA, ``damping_bending`` dEI) acts on its axial and bending strain
-rates (:func:`ancf.elements.dufva2d.damping_forces`).
+rates (:func:`ancf.elements.dufva2d.damping_forces`).  The element takes the file's
+``axial_strain`` law and :func:`ancf.belts.drive_data.element_modulus` (the file's E, per
+stress-free or per laid length; the damping alike).
 """
 from __future__ import annotations
 
@@ -21,7 +23,8 @@ import numpy as np
 
 from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
 from ancf.belts.friction import ALL_PARAMS
-from ancf.belts.drive_data import DriveDescription, load_law, omega_law
+from ancf.belts.drive_data import (DriveDescription, element_modulus, laid_factor, load_law,
+                                   omega_law)
 
 FREE = ("driven", "idler", "tensioner")
 
@@ -67,12 +70,14 @@ def spec(d: DriveDescription) -> Belt2DSpec:
     """The belt and its contact (the friction law named in the file, with its parameters)."""
     b, c, f = d.belt, d.contact, d.friction
     law = (f["law"], *(f[q.name] for q in ALL_PARAMS[f["law"]]))
-    return Belt2DSpec(d.path, b["length"], b["n_elements"], b["E"], b["nu"], b["rho"], b["b"],
-                      b["h"], b["ks"], b["alpha1"], b["alpha2"], b["elastic_points"], c["k_p"],
-                      c["c_p"], law, c["gauss_points"])
+    return Belt2DSpec(d.path, b["length"], b["n_elements"], element_modulus(b), b["nu"],
+                      b["rho"], b["b"], b["h"], b["ks"], b["alpha1"], b["alpha2"],
+                      b["elastic_points"], c["k_p"], c["c_p"], law, c["gauss_points"],
+                      axial=b["axial_strain"])
 
 
 def build(d: DriveDescription) -> BeltDrive:
-    """The drive's model."""
+    """The drive's model (the damping times :func:`ancf.belts.drive_data.laid_factor`)."""
     b = d.belt
-    return BeltDrive(spec(d), rig(d), d.gravity, (b["damping_axial"], b["damping_bending"]))
+    return BeltDrive(spec(d), rig(d), d.gravity,
+                     laid_factor(b) * np.array([b["damping_axial"], b["damping_bending"]]))

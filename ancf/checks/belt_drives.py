@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf.belts.drive_data import DriveDescription
+from ancf.belts.drive_data import DriveDescription, element_modulus
 from ancf.checks.belt2d import Check
 from analytic.belt_steady import path_length, solve
 
@@ -24,7 +24,8 @@ SERPENTINE_NAMES = ("Serpentine: pulley speeds within 2 % of the steady referenc
 
 def steady_reference(desc: DriveDescription) -> dict:
     """:func:`analytic.belt_steady.solve` on the drive's layout, its final laws (the
-    prescribed speeds' and load torques' end values) and its belt."""
+    prescribed speeds' and load torques' end values) and its belt (the element's EA,
+    :func:`ancf.belts.drive_data.element_modulus`)."""
     pulleys = []
     for p in desc.pulleys:
         q = {"name": p.name, "centre": p.centre, "radius": p.radius, "side": p.side,
@@ -43,7 +44,8 @@ def steady_reference(desc: DriveDescription) -> dict:
         if p.law == "tensioner":
             pulleys[i]["preload"] *= _into(pulleys, i, p)
     b = desc.belt
-    return solve(pulleys, EA=b["EA"], rhoA=b["rho"] * b["b"] * b["h"], L0=b["length"],
+    return solve(pulleys, EA=element_modulus(b) * b["b"] * b["h"], rhoA=b["rho"] * b["b"] * b["h"],
+                 L0=b["length"],
                  mu=desc.friction["mu"])
 
 

@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ancf.belts.drive_data import DriveDescription, load_law
+from ancf.belts.drive_data import DriveDescription, element_modulus, load_law
 from ancf.checks.belt2d import Check
 from ancf.checks.belt_drives import steady_reference
 from ancf.common.paths import REPO
@@ -125,19 +125,27 @@ def aligned(results: dict, L0: float, length: float) -> np.ndarray:
     return np.mod(sense * (s - top), L0) * length / L0
 
 
-def true_force(N, EA_alpha1: float):
-    """The belt's force (N) from our axial force N = E A alpha1 eps_l (Eq. 3.17, eps_l the
-    Green strain (|r_x|^2 - 1)/2): the energy's derivative by the stretch |r_x| =
-    sqrt(1 + 2 N / (E A alpha1)) is N |r_x|, the force that balances the pulleys' moments
-    and that Exudyn's cable reports (EA (|r'| - 1 - eps_ref))."""
+def true_force(N, EA_alpha1: float, law: str = "green"):
+    """The belt's force (N) from our axial force N = E A alpha1 eps_l (Eq. 3.17) of the
+    axial strain ``law``: with the Green strain eps_l = (|r_x|^2 - 1)/2 the energy's
+    derivative by the stretch |r_x| = sqrt(1 + 2 N / (E A alpha1)) is N |r_x|, the force
+    that balances the pulleys' moments and that Exudyn's cable reports
+    (EA (|r'| - 1 - eps_ref)); with the engineering strain |r_x| - 1 it is N itself."""
     N = np.asarray(N, dtype=float)
+    if law == "engineering":
+        return N
     return N * np.sqrt(1.0 + 2.0 * N / EA_alpha1)
 
 
 def stiffness(desc: DriveDescription) -> float:
-    """E A alpha1 of the drive's belt, N."""
+    """E A alpha1 of the drive's belt element (E of ``element_modulus``), N."""
     b = desc.belt
-    return b["E"] * b["b"] * b["h"] * b["alpha1"]
+    return element_modulus(b) * b["b"] * b["h"] * b["alpha1"]
+
+
+def real_force(N, desc: DriveDescription):
+    """:func:`true_force` of our axial forces N (N) under the drive's belt."""
+    return true_force(N, stiffness(desc), desc.belt["axial_strain"])
 
 
 def _periodic(sigma, y, at, length: float) -> np.ndarray:
@@ -168,7 +176,7 @@ def curves(results: dict, desc: DriveDescription, stored: Stored) -> Curves:
     p = {q["name"]: q for q in results["pulleys"]}
     dr, dn = _driver(desc), _driven(desc)
     pick = lambda key: np.asarray(results[key])[order]  # noqa: E731
-    return Curves(sigma[order], true_force(pick("axial_force_N"), stiffness(desc)),
+    return Curves(sigma[order], real_force(pick("axial_force_N"), desc),
                   pick("speed_m_s"),
                   pick("normal_force_N_m"), -pick("friction_force_N_m"),
                   np.asarray(results["times"]), np.asarray(p[dn.name]["omega"]),
@@ -195,7 +203,7 @@ def compare(results: dict, desc: DriveDescription, stored: Stored) -> list[Check
     over our ``run.steady_window``."""
     ref, cur = scalars(stored), curves(results, desc, stored)
     dr, dn = _driver(desc), _driven(desc)
-    spans = {(q["from"], q["to"]): float(true_force(q["tension_mean_N"], stiffness(desc)))
+    spans = {(q["from"], q["to"]): float(real_force(q["tension_mean_N"], desc))
              for q in results["spans"]}
     tight = next(v for (a, b), v in spans.items() if b == dr.name)
     slack = next(v for (a, b), v in spans.items() if a == dr.name)

@@ -133,9 +133,13 @@ class BeltElement(CompiledElement):
         return consistent_mass(self.shapes, self.section, self.lengths, self.rho, self.dim)
 
     def axial_force(self, e, xi) -> np.ndarray:
-        """Normal force N = E A alpha1 eps_l (Eq. 3.17), N, at local coordinates ``xi``
-        in [0, 1] of every element: (nel, len(xi))."""
+        """Normal force N = E A alpha1 eps_l (Eq. 3.17, eps_l of :meth:`axial_strain`),
+        N, at local coordinates ``xi`` in [0, 1] of every element: (nel, len(xi))."""
         B = self._on_axis(self.shapes["x"], np.atleast_1d(np.asarray(xi, dtype=float)))
         a = np.einsum("eqk,ekd->eqd", B, self._coords(e))
-        eps_l = 0.5 * (np.einsum("eqd,eqd->eq", a, a) - 1.0)
-        return self.E_mod * self.section.area * self.alpha1 * eps_l
+        return self.E_mod * self.section.area * self.alpha1 * self.axial_strain(a)
+
+    def axial_strain(self, a) -> np.ndarray:
+        """The axial strain of the centre line's slopes a (..., dim): Green's
+        eps_l = (a.a - 1)/2."""
+        return 0.5 * (np.einsum("...d,...d->...", a, a) - 1.0)

@@ -18,6 +18,16 @@ Strain energy (J): Eq. 3.18 (axial part scaled by ``alpha1``, bending parts by
 (``A = b h``, ``int y^2 dA = b h^3/12``, ``int y^4 dA = b h^5/80``; odd powers
 vanish), the axis is integrated by ``nx`` Gauss points.
 
+Axial strain law (``axial``): ``green`` (the thesis's, above: the axial energy density
+``1/2 E A alpha1 eps_G^2`` with the Green strain ``eps_G = (|a|^2 - 1)/2``, the force
+``N = E A alpha1 eps_G`` of Eq. 3.17) or ``engineering`` (Exudyn's ANCFCable2D:
+``1/2 E A alpha1 (|a| - 1)^2``, the force ``N = E A alpha1 (|a| - 1)``, the real force
+in the belt).  The engineering term is added to the generated density by the kernels
+from the generated axial strain ``eps = |a| - 1`` (its gradient and Hessian, shared with
+the damping): ``w_e = k6/2 eps^2``, ``dw_e = k6 eps deps``, ``d2w_e = k6 (deps deps^T +
+eps d2eps)`` with ``k6 = E A alpha1`` and ``k0 = 0``; for ``green`` ``k6 = 0`` and the
+term is skipped.
+
 The reference is a straight, unstrained element of length l (thesis: "initially
 the beam is coincident with the global coordinate system and not curved"): the
 energy is zero iff |a| = 1, the centre line does not turn, sin γ = 0 and
@@ -43,14 +53,17 @@ int (dEA deps/de deps/de^T + dEI dkappa/de dkappa/de^T) dx.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit
 
 from ancf.elements import _dufva_generated as gen
 from ancf.elements import _generated as shape_gen
-from ancf.elements.compiled_element import BeltElement, add_point_tangent
+from ancf.elements.compiled_element import BeltElement, add_point_tangent, check
 
 _NODE = 6  # coordinates per node: r, r_x, r_y
+AXIAL_LAWS = ("green", "engineering")  # the axial strain laws (module docstring)
 
 
 @njit(cache=True)
@@ -88,7 +101,25 @@ def energy(E, data):
             s = (1.0 - z) * sI + z * sJ
             ey = (1.0 - z) * yI + z * yJ
             out[e] += wq[e, q] * gen.density(a0, a1, c0, c1, s, (sJ - sI) / lengths[e], ey, k)
+            if k[6] != 0.0:
+                out[e] += wq[e, q] * 0.5 * k[6] * (math.sqrt(a0 * a0 + a1 * a1) - 1.0) ** 2
     return out
+
+
+@njit(cache=True)
+def _add_engineering(k6, a0, a1, c0, c1, s, sx, want_K, gw, H, ge, He):
+    """Add the engineering axial density's gradient k6 eps deps to gw (7,) and, if
+    want_K, its Hessian k6 (deps deps^T + eps d2eps) to H (7, 7); ge, He: work arrays."""
+    if want_K:
+        gen.axial_strain_hess(a0, a1, c0, c1, s, sx, 0.0, ge, He)
+    else:
+        gen.axial_strain_grad(a0, a1, c0, c1, s, sx, 0.0, ge)
+    eps = math.sqrt(a0 * a0 + a1 * a1) - 1.0
+    for i in range(2):
+        gw[i] += k6 * eps * ge[i]
+        if want_K:
+            for j in range(2):
+                H[i, j] += k6 * (ge[i] * ge[j] + eps * He[i, j])
 
 
 @njit(cache=True)
@@ -141,6 +172,7 @@ def gradient_tangent(E, data, want_K, g, K):
     hI, hJ, H = np.empty((4, 4)), np.empty((4, 4)), np.empty((7, 7))
     Jv, HJ = np.empty((7, nd)), np.empty((7, nd))
     Ke = np.empty((nd, nd))
+    ge, He = np.empty(7), np.zeros((7, 7))
     for e in range(nel):
         sI = _nodal_shear_sine(E, e, 0, want_K, gI, hI)
         sJ = _nodal_shear_sine(E, e, 1, want_K, gJ, hJ)
@@ -157,6 +189,8 @@ def gradient_tangent(E, data, want_K, g, K):
                 gen.density_hess(a0, a1, c0, c1, s, sx, ey, k, gw, H)
             else:
                 gen.density_grad(a0, a1, c0, c1, s, sx, ey, k, gw)
+            if k[6] != 0.0:
+                _add_engineering(k[6], a0, a1, c0, c1, s, sx, want_K, gw, H, ge, He)
             _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
             for b in range(nd):
                 acc = 0.0
@@ -260,7 +294,8 @@ def damping_forces(E, V, data, d, want_J, g, K, C):
 
 
 class DufvaBelt2D(BeltElement):
-    """Planar belt elements (arguments: :class:`BeltElement`; e0 (nel, 12))."""
+    """Planar belt elements (arguments: :class:`BeltElement`; e0 (nel, 12); ``axial`` the
+    axial strain law, one of :data:`AXIAL_LAWS`, module docstring)."""
 
     family = "cubic2d"
     slots = ("r", "r_x", "r_y")
@@ -269,9 +304,22 @@ class DufvaBelt2D(BeltElement):
     kernel_energy = staticmethod(energy)
     kernel_gradient_tangent = staticmethod(gradient_tangent)
 
-    @staticmethod
-    def density_coefficients(section, E, G, alpha1, alpha2, ks) -> np.ndarray:
-        """The density's coefficients (N, N m^2, N m^4, N, N m^2, N)."""
+    def __init__(self, lengths, e0, section, E, nu, rho=0.0, alpha1=1.0, alpha2=1.0,
+                 ks=5.0 / 6.0, nx=5, axial="green"):
+        check("axial", axial, lambda v: v in AXIAL_LAWS, f"one of {', '.join(AXIAL_LAWS)}")
+        self.axial = axial
+        super().__init__(lengths, e0, section, E, nu, rho, alpha1, alpha2, ks, nx)
+
+    def density_coefficients(self, section, E, G, alpha1, alpha2, ks) -> np.ndarray:
+        """The density's coefficients (N, N m^2, N m^4, N, N m^2, N) and the engineering
+        axial stiffness k6 (N): (k0, k6) = (E A alpha1/8, 0) (green) or (0, E A alpha1)."""
         A, I2, I4 = section.area, section.second_moment, section.b * section.h**5 / 80.0
-        return np.array([E * alpha1 * A / 8, E * alpha2 * I2 / 2, E * alpha2 * I4 / 8,
-                         ks * G * alpha2 * A / 2, ks * G * alpha2 * I2 / 2, E * A / 2])
+        EA1 = E * alpha1 * A
+        k0, k6 = (EA1 / 8, 0.0) if self.axial == "green" else (0.0, EA1)
+        return np.array([k0, E * alpha2 * I2 / 2, E * alpha2 * I4 / 8,
+                         ks * G * alpha2 * A / 2, ks * G * alpha2 * I2 / 2, E * A / 2, k6])
+
+    def axial_strain(self, a) -> np.ndarray:
+        """The law's axial strain of the slopes a (..., 2): (|a|^2 - 1)/2 or |a| - 1."""
+        P = np.einsum("...d,...d->...", a, a)
+        return 0.5 * (P - 1.0) if self.axial == "green" else np.sqrt(P) - 1.0

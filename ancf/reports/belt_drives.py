@@ -95,7 +95,8 @@ def _stored_vs_string() -> list:
     eps = desc.belt["prestretch"]
     rows = []
     for label, EA in (("file's EA", desc.belt["EA"]), ("EA (1 + ε_ref)", desc.belt["EA"] * (1 + eps))):
-        ref = bd.steady_reference(load(THREAD_FILE, [*THREAD_SET, f"belt.EA={EA!r}"]))
+        ref = bd.steady_reference(load(THREAD_FILE, [*THREAD_SET, f"belt.EA={EA!r}",
+                                                     "belt.strain_reference=stress-free"]))
         T = {(s["from"], s["to"]): s["tension_N"] for s in ref["spans"]}
         rows.append({"string": label, "EA N": EA, "tight N": T[("driven", "driver")],
                      "slack N": T[("driver", "driven")],
@@ -106,11 +107,15 @@ def _stored_vs_string() -> list:
             f"the laid (path) length, so its belt is pre-tensioned to −EA ε_ref = {-EA * eps:.1f} N "
             f"on the path; the string of the steady reference is EA (l / L0 − 1) with L0 the "
             f"stress-free length, {EA * (P / L0 - 1):.1f} N for the same EA, and agrees with "
-            f"Exudyn's law when given EA (1 + ε_ref) = {EA * (1 + eps):.1f} N.  Our element's "
-            f"axial energy is on the Green strain, so its belt force N |r_x| on the path is "
-            f"{float(th.true_force(EA * ((P / L0) ** 2 - 1) / 2, th.stiffness(desc))):.1f} N: "
-            "no EA makes it Exudyn's law at these 2–9 % strains.  The string against the stored "
-            f"forces ({st['tight_N']:.1f} / {st['slack_N']:.1f} N):\n",
+            f"Exudyn's law when given EA (1 + ε_ref) = {EA * (1 + eps):.1f} N.  The thesis's "
+            f"Green-strain element would pull N |r_x| = "
+            f"{float(th.true_force(EA * ((P / L0) ** 2 - 1) / 2, EA)):.1f} N on the path with "
+            "the file's EA, and no EA makes it Exudyn's law at these 2–9 % strains; the file "
+            "therefore states Exudyn's law (`belt.axial_strain = \"engineering\"`, "
+            "`belt.strain_reference = \"laid\"`: the element's force "
+            f"{th.stiffness(desc):.1f} N × (|r_x| − 1), "
+            f"{float(th.stiffness(desc) * (P / L0 - 1)):.1f} N on the path).  The string "
+            f"against the stored forces ({st['tight_N']:.1f} / {st['slack_N']:.1f} N):\n",
             markdown_table(pd.DataFrame(rows), 5), ""]
 
 
@@ -141,10 +146,11 @@ def _thread_figures(cur: th.Curves, st: th.Stored) -> list:
         a.grid(alpha=0.3)
     ax[0].legend()
     times = save_figure(fig, "belt_drives_thread_time")
-    return ["Along the belt and in the span forces, ours is the belt's force N |r_x| "
-            "(`ancf.checks.thread.true_force`: the element's N = E A α1 ε_l of Eq. 3.17 is taken "
-            "on the Green strain ε_l = (|r_x|² − 1)/2, and N |r_x| is the force that balances the "
-            "pulleys' moments, as the torque-balance row shows); our contact forces are per unit "
+    return ["Along the belt and in the span forces, ours is the belt's real force "
+            "(`ancf.checks.thread.true_force`: the element's N = E A α1 ε_l of Eq. 3.17 "
+            "itself under the file's engineering strain ε_l = |r_x| − 1, N |r_x| under the "
+            "Green strain ε_l = (|r_x|² − 1)/2: the force that balances the pulleys' moments, "
+            "as the torque-balance row shows); our contact forces are per unit "
             "stress-free length.  THREAD's are Exudyn's cable force EA (|r′| − 1 − ε_ref) and its "
             "contact pressure times the width, per unit laid length.\n",
             f"![THREAD along the belt](figures/{along.name})\n",
