@@ -188,7 +188,8 @@ def run_case(task: dict) -> dict:
         return failure_row(task, "failed", f"{type(exc).__name__}: {exc}{where}",
                            time.perf_counter() - t0)
     wall = time.perf_counter() - t0
-    keep(task["scene"], task["params"], out)
+    if quantity == "results":  # the run store holds scene runs, keyed by their parameters
+        keep(task["scene"], task["params"], out)
     res = out["results"] or {}
     row.update(converged=bool(out["converged"]), message=out["message"],
                cpu_time_s=float(out["cpu_time_s"]),
