@@ -157,6 +157,21 @@ def _thread_figures(cur: th.Curves, st: th.Stored) -> list:
             f"![THREAD in time](figures/{times.name})\n"]
 
 
+def _omega_from_creep(res: dict, desc, sc: dict) -> str:
+    """The driven speed the stored span forces imply by belt creep (equal radii):
+    ω_driver (1 + T_s / EA) / (1 + T_t / EA), with the element's and with the file's EA."""
+    w1 = next(p["omega_mean"] for p in res["pulleys"] if p["name"] == "driver")
+    w2 = next(p["omega_mean"] for p in res["pulleys"] if p["name"] == "driven")
+    creep = {EA: w1 * (1 + sc["slack_N"] / EA) / (1 + sc["tight_N"] / EA)
+             for EA in (th.stiffness(desc), desc.belt["EA"])}
+    (ea, w_el), (ea_file, w_file) = creep.items()
+    return (f"The driven speed by creep from the stored span forces, ω₂ = ω₁ (1 + T_s / EA) / "
+            f"(1 + T_t / EA) with ω₁ = {w1:.4f} rad/s: {w_el:.4f} rad/s with the element's "
+            f"EA = {ea:.0f} N, {w_file:.4f} rad/s with EA = {ea_file:.0f} N; ours "
+            f"{w2:.4f} rad/s, stored {sc['omega_mean']:.4f} rad/s.  The stored ω lies above what "
+            "its own span forces imply under its law; ours follows from them.\n")
+
+
 def thread_section() -> tuple[list, list]:
     """(markdown, checks) of the THREAD comparison."""
     st = th.read()
@@ -182,6 +197,7 @@ def thread_section() -> tuple[list, list]:
     if not out["converged"]:
         return parts + [f"Our run stopped: {out['message']}\n"], []
     checks = th.compare(out["results"], desc, st)
+    parts += [_omega_from_creep(out["results"], desc, sc)]
     parts += [f"Our run: {out['results']['steps']} steps, CPU {out['cpu_time_s']:.1f} s "
               "(timing).  Warnings: " + ("; ".join(out["warnings"]) or "none") + "\n",
               *_thread_figures(th.curves(out["results"], desc, st), st)]
