@@ -6,7 +6,7 @@ runs with references built from the scene's own parameters.  Neither sees a para
 altered on its way from the scene into the compiled drive record, or a prescribed motion
 of the wrong sense.  Here the records of the belt2d and belt3d scenes at their defaults
 are held against Table 3.1 and Table 4.1 as printed (Kerkkänen 2006,
-/work/shared/papers/000_*.txt l. 907-925 and l. 1071-1089), written down below, not
+the papers folder beside the project, shared/papers/000_*.txt l. 907-925 and l. 1071-1089), written down below, not
 read from the package; the laws the march evaluates against Eqs 3.29, 4.46 and 4.47
 written out; the laid belt against the two-pulley path written out (a stadium); and a
 short Model 2 run against I dw/dt = M_friction - T_a with the table's I.  Each runs in
