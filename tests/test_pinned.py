@@ -3,7 +3,7 @@
 Every other check compares the code with a reference the same code computes from the same
 constants: a constant changed consistently in a scene and its reference (g = 9.81 m/s^2,
 steel's 7850 kg/m^3, ...) leaves them green.  Here each published constant is written
-down as the paper prints it (thesis = Kerkkänen 2006, /work/shared/papers/000_*.txt, line
+down as the paper prints it (thesis = Kerkkänen 2006, shared/papers/000_*.txt beside the project, line
 numbers of that file), and each analytic reference at its defaults is held against a
 second method written out in the test: the rigid pendulum's fall time by the complete
 elliptic integral, beam and plate frequencies by their closed forms, Navier's plate by
