@@ -269,3 +269,41 @@ def test_sweep_workers_end_when_the_cli_is_killed(tmp_path):
         if p.poll() is None:
             p.kill()
             p.wait()
+
+
+def test_the_time_limit_leaves_out_compilation():
+    """A run's clock stops while its worker compiles or loads numba kernels (an empty cache
+    on a loaded machine took 205 s for two 120 s-limited belt runs whose solves take seconds),
+    and the worker says when it compiles."""
+    import io
+    import numba
+    from ancf.study import sweep
+
+    r = object.__new__(sweep._Runner)
+    r.send = lambda task: None
+    r.task, r.t0, r.compiling_since = {"key": "k"}, 100.0, None
+    clock = iter([101.0, 106.0])  # compiling from 101 s to 106 s
+    real = sweep.time.monotonic
+    sweep.time.monotonic = lambda: next(clock)
+    try:
+        r.note({"compiling": True})
+        assert r.deadline(1.0) == 101.0 + sweep.COMPILE_LIMIT  # no time limit while compiling
+        r.note({"compiling": False})
+    finally:
+        sweep.time.monotonic = real
+    assert r.deadline(1.0) == 106.0  # 100 s + 1 s + the 5 s of compiling
+
+    out = io.StringIO()
+    listener = sweep._announce_compiles(out)
+
+    @numba.njit
+    def fresh(x):
+        return x + 1
+
+    try:
+        fresh(1)
+        fresh(2)  # compiled once: one span
+    finally:
+        numba.core.event.unregister("numba:compiler_lock", listener)
+    assert [json.loads(line) for line in out.getvalue().splitlines()] == [
+        {"compiling": True}, {"compiling": False}]

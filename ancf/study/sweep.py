@@ -20,7 +20,10 @@ combination in worker processes, one row per run, into a Parquet or CSV file:
   keys already there (``retry_failed`` reruns failed / timed-out ones) and the journal is
   folded into FILE at the end, also after Ctrl-C;
 * each run happens in a separate worker process, killed when it exceeds ``time_limit``
-  (the row says ``time limit exceeded (X s)``); an exception or a crash of the worker
+  (the row says ``time limit exceeded (X s)``); the clock stops while the worker compiles
+  or loads numba kernels (it says so on its line protocol), so an empty kernel cache or a
+  loaded machine's slow compilation does not decide a row, and a single compilation longer
+  than ``COMPILE_LIMIT`` is a timeout too; an exception or a crash of the worker
   becomes a failed row with its message; the other runs go on;
 * ``scheduler=ADDRESS`` runs the same tasks on a Dask cluster (dask.distributed); each
   Dask worker thread drives one such worker process, so time limits, isolation and
@@ -55,6 +58,7 @@ from ancf.scenes.store import keep
 
 STATUSES = ("ok", "not-converged", "failed", "timeout", "invalid", "worker-died")
 RETRY = ("failed", "timeout", "worker-died")
+COMPILE_LIMIT = 1800.0  # s of wall time one compilation (or cache load) of a kernel may take
 _ENV = {**BLAS_ENV, "PYTHONWARNINGS": "ignore"}
 
 
@@ -271,6 +275,7 @@ def _worker_main() -> int:
     sys.stdout = sys.stderr
     from ancf.scenes import SCENES  # warm the imports and the compiled kernels (a
     SCENES["axial-bar"].execute({"n_elements": 1})  # one-element solve) before saying ready
+    _announce_compiles(out)
     out.write(json.dumps({"ready": os.getpid()}) + "\n")
     out.flush()
     for line in sys.stdin:
@@ -280,6 +285,35 @@ def _worker_main() -> int:
         out.write(json.dumps(row) + "\n")
         out.flush()
     return 0
+
+
+def _announce_compiles(out):
+    """Write ``{"compiling": true}`` / ``{"compiling": false}`` lines to the driver around
+    every outermost span of numba's compiler lock (compilations and cache loads: see
+    :mod:`ancf.common.compile_time`), so that its time limit leaves them out.  Returns the
+    registered listener."""
+    from numba.core import event
+
+    def say(flag: bool) -> None:
+        out.write(json.dumps({"compiling": flag}) + "\n")
+        out.flush()
+
+    class _Announce(event.Listener):
+        depth = 0
+
+        def on_start(self, ev):
+            self.depth += 1
+            if self.depth == 1:
+                say(True)
+
+        def on_end(self, ev):
+            self.depth -= 1
+            if self.depth == 0:
+                say(False)
+
+    listener = _Announce()
+    event.register("numba:compiler_lock", listener)
+    return listener
 
 
 # ---------------------------------------------------------------------------------------
@@ -303,12 +337,37 @@ class _Runner:
         self.buf = b""
         self.task = None
         self.t0 = 0.0
+        self.compiling_since = None  # monotonic time the current compilation began
         self.ready = False
 
     def send(self, task: dict) -> None:
-        self.task, self.t0 = task, time.monotonic()
+        self.task, self.t0, self.compiling_since = task, time.monotonic(), None
         self.proc.stdin.write((json.dumps(task) + "\n").encode())
         self.proc.stdin.flush()
+
+    def note(self, msg: dict) -> None:
+        """Stop the run's clock while the worker compiles (``msg`` from its protocol)."""
+        now = time.monotonic()
+        if msg["compiling"]:
+            self.compiling_since = now
+        elif self.compiling_since is not None:
+            self.t0 += now - self.compiling_since
+            self.compiling_since = None
+
+    def deadline(self, time_limit: float) -> float:
+        """When the current run times out (monotonic s): ``time_limit`` s of running, or
+        ``COMPILE_LIMIT`` s into one compilation."""
+        if self.compiling_since is not None:
+            return self.compiling_since + COMPILE_LIMIT
+        return self.t0 + time_limit
+
+    def timeout_row(self, time_limit: float) -> dict:
+        now = time.monotonic()
+        if self.compiling_since is not None:
+            return failure_row(self.task, "timeout", "time limit exceeded (one compilation "
+                               f"over {COMPILE_LIMIT:g} s)", now - self.t0)
+        return failure_row(self.task, "timeout", f"time limit exceeded ({time_limit:g} s)",
+                           now - self.t0)
 
     def feed(self):
         """New complete messages, or None at end of file (the worker died)."""
@@ -386,13 +445,13 @@ class _Runner:
         sel.register(self.fd, selectors.EVENT_READ)
         try:
             while True:
-                left = self.t0 + time_limit - time.monotonic()
+                left = self.deadline(time_limit) - time.monotonic()
                 if left <= 0 or not sel.select(left):
-                    if time.monotonic() - self.t0 < time_limit:
+                    if time.monotonic() < self.deadline(time_limit):
                         continue
+                    row = self.timeout_row(time_limit)
                     self.kill()
-                    return failure_row(task, "timeout", f"time limit exceeded ({time_limit:g} s)",
-                                       time.monotonic() - self.t0)
+                    return row
                 msgs = self.feed()
                 if msgs is None:
                     return self.died_row(task)
@@ -400,6 +459,8 @@ class _Runner:
                     if "key" in m:
                         self.task = None
                         return m
+                    if "compiling" in m:
+                        self.note(m)
         finally:
             sel.close()
 
@@ -428,7 +489,7 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
                 if r.ready and r.task is None and pending:
                     r.send(pending.popleft())
             busy = [r for r in runners if r.task is not None]
-            wait = min([r.t0 + time_limit - time.monotonic() for r in busy] + [1.0])
+            wait = min([r.deadline(time_limit) - time.monotonic() for r in busy] + [1.0])
             for key, _ in sel.select(max(wait, 0.005)):
                 r = key.data
                 msgs = r.feed()
@@ -449,13 +510,14 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
                     elif "key" in m:
                         r.task = None
                         yield m
+                    elif "compiling" in m:
+                        r.note(m)
             now = time.monotonic()
-            for r in [r for r in runners if r.task is not None and now - r.t0 > time_limit]:
-                task = r.task
+            for r in [r for r in runners if r.task is not None and now > r.deadline(time_limit)]:
+                row = r.timeout_row(time_limit)
                 retire(r, kill=True)
                 spawn()
-                yield failure_row(task, "timeout", f"time limit exceeded ({time_limit:g} s)",
-                                  now - r.t0)
+                yield row
     finally:
         for r in list(runners):
             r.kill() if r.task is not None else r.close()
