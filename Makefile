@@ -3,6 +3,7 @@ PYTHON ?= $(shell command -v python3.11 || command -v python3)
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
+PEERS  := $(VENV)/.peers
 
 .PHONY: setup reports test bench clean
 
@@ -14,13 +15,18 @@ $(STAMP): pyproject.toml
 	$(PY) -m pip install --quiet -e ".[test]"
 	touch $(STAMP)
 
-reports: $(STAMP)
+# the reports and benchmarks set Exudyn beside us (the `peers` extra): every clone's reports hold the same rows
+$(PEERS): $(STAMP)
+	$(PY) -m pip install --quiet -e ".[peers]"
+	touch $(PEERS)
+
+reports: $(PEERS)
 	$(PY) -m ancf.reports
 
 test: $(STAMP)
 	$(PY) -m pytest
 
-bench: $(STAMP)
+bench: $(PEERS)
 	OPENBLAS_NUM_THREADS=1 $(PY) -m pytest benchmarks --benchmark-enable --benchmark-only --benchmark-json=reports/benchmarks/benchmark.json
 	$(PY) -m benchmarks.summarize
 	OPENBLAS_NUM_THREADS=1 $(PY) -m benchmarks.core_profile
