@@ -131,8 +131,7 @@ RESULTS = {
                                           "and pulley oscillations), N"),
         "tension_slack_mean_N": _nullable("slack span: the same, N"),
         "penetration_max_m": _nullable("largest penetration of the belt's centreline sample "
-                                       "points (the plate belt: its mid surface's contact "
-                                       "points) into a pulley at t_end, m"),
+                                       "points into a pulley at t_end, m"),
         "contact_dofs": field(INT, "belt coordinates of the elements touching a pulley at t_end",
                               nullable=True),
         "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle", nullable=True),
