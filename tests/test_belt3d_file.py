@@ -79,14 +79,20 @@ def test_thesis_4_1_file_runs_belt3d_exactly():
         assert a[key] == b[key], key
 
 
-def test_three_pulley_plate_belt_runs_sane():
+#: the idler inside the loop (the example's), or on the belt's back pressing the lower
+#: span up by 25 mm from outside (a 42 deg wrap)
+IDLERS = {"inner": [], "back": ["pulleys.idler.side=-1", "pulleys.idler.centre=[0.0785, -0.05]"]}
+
+
+@pytest.mark.parametrize("idler", IDLERS)
+def test_three_pulley_plate_belt_runs_sane(idler):
     """Driver, idler on the lower span and driven pulley, the laws ramped within the first
     10 ms: converged, no warning, valid JSON, every span in tension, every pulley turning
-    with the belt (counter-clockwise, the idler too: the belt's inner side runs on it), the
+    with the belt (counter-clockwise; an idler on the belt's back clockwise), the
     penetration below 5 % of the pre-stretch per wrap, the belt not walking along the axes."""
     sets = ["pulleys.driver.t0=0", "pulleys.driver.t1=0.01", "pulleys.driven.t0=0",
             "pulleys.driven.t1=0.01", "pulleys.driver.omega_final=20",
-            "pulleys.driven.load_torque=0.05"]
+            "pulleys.driven.load_torque=0.05", *IDLERS[idler]]
     out, res = SCENES["belt-drive"].execute({"file": str(THREE3D), "run.t_end": SHORT,
                                              "run.steady_window": "0.005",
                                              "set": "; ".join(sets)})
@@ -96,7 +102,7 @@ def test_three_pulley_plate_belt_runs_sane():
     r, desc = out["results"], res.extra["description"]
     assert [p["name"] for p in r["pulleys"]] == ["driver", "idler", "driven"]
     assert all(s["tension_N"] > 0 and s["tension_mean_N"] > 0 for s in r["spans"])
-    assert all(p["omega"][-1] > 0 for p in r["pulleys"])
+    assert all(p["omega"][-1] * q.side > 0 for p, q in zip(r["pulleys"], desc.pulleys))
     pre = -desc.belt["prestretch"] * desc.path.length / (2 * np.pi)
     assert 0 < r["penetration_max_m"] < 0.05 * pre
     drive, q = res.extra["drive"], res.extra["result"].q
