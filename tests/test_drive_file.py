@@ -223,7 +223,11 @@ IDLER = {"name": "idler", "centre": [0.0, 0.3], "radius": 0.03, "side": -1, "law
          "inertia": 1e-4, "damping": 0.0}
 
 BAD = [  # (overrides, or an edit of the thesis file's data; the one line it gives)
-    (["belt.Ee=1"], "belt.Ee: unknown key; allowed: element, n_elements, E, EA, nu,"),
+    (["belt.Ee=1"], r"belt.Ee: unknown key \(element 'dufva2d'\); allowed: element, "
+     "n_elements, E, EA, nu,"),
+    (["belt.bending=on"], r"belt.bending: unknown key \(element 'dufva2d'\); allowed:"),
+    (["belt.element=belt3d"], "belt.element = 'belt3d' is out of range; allowed: one of "
+     "dufva2d, plate36"),
     (["beltt.E=1"], "beltt: unknown key; allowed: gravity, belt, pulleys, friction, contact, run"),
     (_without(("pulleys", 1, "inertia")), r"pulleys.1.inertia: missing \(law 'driven': inertia, "
      r"damping, load, load_torque, t0, t1\); allowed: a number in \(0, 1000\] kg m\^2"),
@@ -309,6 +313,54 @@ BAD = [  # (overrides, or an edit of the thesis file's data; the one line it giv
                                                    for i, (_, m) in enumerate(BAD)])
 def test_bad_input_is_one_line_naming_the_key(bad, message):
     data = read(THESIS)
+    with pytest.raises(InputError, match=message) as exc:
+        if callable(bad):
+            bad(data)
+            describe(data)
+        else:
+            describe(override(data, bad))
+    assert "\n" not in str(exc.value) and "allowed:" in str(exc.value)
+
+
+PLATE = EXAMPLES / "three_pulleys_3d.toml"
+BAD_PLATE = [  # (overrides, or an edit of the 3D example's data; the one line it gives)
+    (["belt.bending=sometimes"], "belt.bending = 'sometimes' is out of range; allowed: one "
+     "of on, off"),
+    (["belt.elastic_points=1"], r"belt.elastic_points = 1 is out of range; allowed: an "
+     r"integer in \[2, 8\]"),
+    (["belt.h=0.2"], r"belt.h = 0.2 is out of range; allowed: a number in \(0, 0.1\]"),
+    (["belt.b=0"], r"belt.b = 0.0 is out of range; allowed: a number in \(0, 1\]"),
+    (["belt.nu=0.5"], r"belt.nu = 0.5 is out of range; allowed: a number in \[0, 0.5\)"),
+    (["belt.n_elements=201"], r"belt.n_elements = 201 is out of range; allowed: an integer "
+     r"in \[4, 200\]"),
+    (["belt.alpha1=1"], r"belt.alpha1: unknown key \(element 'plate36'\); allowed: element, "
+     "n_elements, E, EA, nu, h, b, rho, bending, elastic_points, length, prestretch, "
+     "contact_offset"),
+    (["belt.damping_axial=1"], r"belt.damping_axial: unknown key \(element 'plate36'\)"),
+    (["contact.gauss_points=7"], "contact.gauss_points = 7 is out of range; allowed: one of "
+     "25, 49, 81"),
+    (["contact.k_p=0"], r"contact.k_p = 0.0 is out of range; allowed: a number in "
+     r"\(0, 1e\+13\]"),
+    (["contact.c_p=-1"], r"contact.c_p = -1.0 is out of range; allowed: a number in "
+     r"\[0, 1e\+09\]"),
+    (_without(("contact", "k_p")), r"contact.k_p: missing \(element 'plate36'\); allowed: a "
+     r"number in \(0, 1e\+13\] N/m\^3"),
+    (_without(("friction", "nu_s")), r"friction.nu_s: missing \(law 'creep-rate'\); allowed: "
+     r"a number in \(0, 1e\+09\] kg/\(m\^2 s\)"),
+    (["pulleys.idler.law=tensioner"], r"pulleys.1.law = 'tensioner' is out of range for "
+     r"belt.element = 'plate36'; allowed: one of prescribed, driven, idler, fixed \(a "
+     r"tensioner's arm is the 2D belt's\)"),
+    (["friction.law=bristle"], r"friction.law = 'bristle' is out of range for belt.element = "
+     r"'plate36'; allowed: one of creep-rate, coulomb \(a law with a state per contact point "
+     r"is carried by the 2D belt only\)"),
+]
+
+
+@pytest.mark.parametrize("bad, message", BAD_PLATE,
+                         ids=[m.split(" ")[0].rstrip(":") + f"-{i}"
+                              for i, (_, m) in enumerate(BAD_PLATE)])
+def test_bad_plate_belt_input_is_one_line_naming_the_key(bad, message):
+    data = read(PLATE)
     with pytest.raises(InputError, match=message) as exc:
         if callable(bad):
             bad(data)

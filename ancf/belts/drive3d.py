@@ -1,12 +1,16 @@
 """The 3D belt drive as a model (thesis sections 4.5-4.6): a closed belt of thin
-``plate36`` elements on two pulleys, distributed penalty contact with creep-rate
-friction over each element's mid surface (:mod:`ancf.belts.contact3d`), a driver with
-prescribed angular velocity (Eq. 3.29) that may be moved to pre-tension the belt
-(Eq. 4.46), and a driven pulley whose rotation is a generalised coordinate loaded by
-the opposing torque (Eq. 4.47).
+``plate36`` elements on its pulleys, distributed penalty contact with friction over
+each element's mid surface (:mod:`ancf.belts.contact3d`).  The thesis drive (a
+:class:`Belt3DSpec`): two pulleys, a driver with prescribed angular velocity (Eq. 3.29)
+that may be moved to pre-tension the belt (Eq. 4.46), and a driven pulley whose
+rotation is a generalised coordinate loaded by the opposing torque (Eq. 4.47).  Any
+other layout (a :class:`Plate3DSpec` on a :class:`ancf.belts.path.PulleyPath` of N
+pulleys, the pulleys a :class:`ancf.belts.drive2d.Rig`, as a drive file gives them:
+:mod:`ancf.belts.drive_model`): each pulley turned by its law or free (its angle a
+coordinate with inertia, damping and a load torque), the belt under in-plane gravity.
 
-Geometry: the belt path of :class:`ancf.belts.path.TwoPulleyPath` in the x-y plane,
-pulley axes along +z, the belt's width along z from 0 to ``width``.  One element
+Geometry: the belt path (:class:`ancf.belts.path.TwoPulleyPath` or ``PulleyPath``) in
+the x-y plane, pulley axes along +z, the belt's width along z from 0 to ``width``.  One element
 across the width: element i has the nodes A = (i, 0), B = (i + 1, 0), C = (i + 1, 1),
 D = (i, 1) (position along the belt, edge), node (i, j) numbered 2 i + j and node n
 taken as node 0, so the loop is closed without constraint equations.  Element x runs
@@ -15,27 +19,28 @@ equal spacing P/n, ``r_x`` = t P / L0 (the stretch of the flat reference of leng
 L0 / n, so a belt shorter than the path starts pre-tensioned), ``r_y`` = e_z.
 
 Coordinates: the belt's nodal coordinates in the numbering of a
-:class:`ancf.core.pattern.ReducedPattern` (band), then the driven pulley's angle.  The
-mass matrix is constant: band storage ``Mb`` for the belt, ``inertia`` for the pulley;
-the pulleys are :func:`ancf.belts.drive2d.thesis_rig`'s.
-Pulley 0 is the driver (left), pulley 1 the driven one; the driver moves by u(t)
-along ``shift`` = -e_x (away from the driven pulley: it tightens the belt).
+:class:`ancf.core.pattern.ReducedPattern` (band), then the free pulleys' angles.  The
+mass matrix is constant: band storage ``Mb`` for the belt, ``inertia`` for the pulleys.
+The thesis drive's pulleys are :func:`ancf.belts.drive2d.thesis_rig`'s: pulley 0 the
+driver (left), pulley 1 the driven one; the driver moves by u(t) along ``shift`` = -e_x
+(away from the driven pulley: it tightens the belt).  The march's pulley laws are one
+row per pulley followed by u and its rate (zero but for the thesis drive's u0).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
 
 from ancf.belts import friction
-from ancf.belts.drive2d import DriveSpec, PulleyDrive, thesis_rig
-from ancf.belts.path import TwoPulleyPath, laid_belt
+from ancf.belts.drive2d import DriveSpec, PulleyDrive, Rig, thesis_rig
+from ancf.belts.path import laid_belt
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
 from ancf.belts.forces import Drive3D
 from ancf.elements.plate36 import Plate36
 from ancf.core.pattern import ReducedPattern, scatter
-from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS, driver_shift, law
+from ancf.belts.pulleys import SPEED_LAWS, T0, TORQUE_LAWS, driver_shift, law
 
 PER_NODE = 9  # r, r_x, r_y, 3 components each
 SHIFT = np.array([-1.0, 0.0, 0.0])  # direction the driver is moved in (Eq. 4.46)
@@ -43,8 +48,8 @@ AXIS = np.array([0.0, 0.0, 1.0])    # pulley axes
 
 
 @dataclass(frozen=True)
-class Belt3DSpec(DriveSpec):
-    """Everything that defines a 3D belt drive (SI units; see the belt3d scene)."""
+class Plate3DSpec(DriveSpec):
+    """The plate belt and its contact (SI units; see the belt3d scene)."""
 
     width: float                # belt width w, m
     h: float                    # thickness, m
@@ -53,6 +58,13 @@ class Belt3DSpec(DriveSpec):
     c_p: float                  # penalty damping per unit area, N s/m^3
     friction: tuple             # (law, its parameters): a row of ancf.belts.friction.PARAMS
     contact_points: int         # surface rule per element (25, 49, 81)
+    ng: int = field(default=4, kw_only=True)  # Gauss points per direction, elastic forces
+
+
+@dataclass(frozen=True)
+class Belt3DSpec(Plate3DSpec):
+    """Everything that defines the thesis's 3D belt drive (SI units; see the belt3d scene)."""
+
     inertia: float              # driven pulley moment of inertia, kg m^2
     omega_final: float          # driver's final angular velocity, rad/s (Eq. 3.29)
     t0: float                   # start of the ramps, s
@@ -60,7 +72,6 @@ class Belt3DSpec(DriveSpec):
     Ta_max: float               # final opposing torque, N m (Eq. 4.47)
     Ta_t1: float                # end of the torque ramp, s (Eq. 4.47: 1.0)
     u0: float                   # driver displacement, m (Eq. 4.46; 0: none)
-    ng: int = 4                 # Gauss points per direction of the elastic forces
     driver_law: str = "ramp"    # the driver's speed law (ancf.belts.pulleys.SPEED_LAWS)
     torque_law: str = "cosine-ramp"  # the load torque law (TORQUE_LAWS)
 
@@ -72,7 +83,7 @@ def ring_dofmap(n: int) -> np.ndarray:
     return (nodes[:, :, None] * PER_NODE + np.arange(PER_NODE)).reshape(n, -1)
 
 
-def laid_plate_belt(path: TwoPulleyPath, L0: float, n: int, width: float) -> np.ndarray:
+def laid_plate_belt(path, L0: float, n: int, width: float) -> np.ndarray:
     """Global coordinates (2 n * 9,) of the belt laid on the path (module docstring)."""
     q2 = laid_belt(path, L0, n)  # (n, 3, 2): r, r_x, r_y of the planar belt
     q = np.zeros((n, 2, 3, 3))
@@ -84,12 +95,14 @@ def laid_plate_belt(path: TwoPulleyPath, L0: float, n: int, width: float) -> np.
 
 
 class Belt3DDrive(PulleyDrive):
-    """The assembled model of a :class:`Belt3DSpec`."""
+    """The assembled model of a :class:`Belt3DSpec` (the thesis drive), or of a
+    :class:`Plate3DSpec` on any path with the pulleys of ``rig`` (centres (np, 3) in the
+    x-y plane) and the belt's weight under the in-plane ``gravity`` (m/s^2)."""
 
     contact_state = staticmethod(contact_state3d)
     contact_forces = staticmethod(contact_forces3d)
 
-    def __init__(self, spec: Belt3DSpec):
+    def __init__(self, spec: Plate3DSpec, rig: Rig | None = None, gravity=(0.0, 0.0)):
         self.spec = s = spec
         n = s.n_elements
         self.dofmap = ring_dofmap(n)
@@ -104,16 +117,31 @@ class Belt3DDrive(PulleyDrive):
         self.Mb = self.pattern.zeros_matrix()
         scatter(np.zeros((n, 36)), self.element.mass(), self.vidx, self.midx,
                 np.zeros(self.pattern.n), self.Mb, True)
+        self.weight = self.pattern.restrict(self._weight(gravity))
         self.S0, self.w = contact_points3d(self.lengths, np.full(n, s.width), s.contact_points)
-        self.axes = np.array([AXIS, AXIS])
         if s.friction[0] in friction.STATE_LAWS:
             raise ValueError(f"friction law {s.friction[0]!r}: its state per contact point is "
                              "carried by the 2D drive only; allowed in 3D: "
                              + ", ".join(friction.LAWS))
         self.prm = friction.contact_vector(s.k_p, s.c_p, *s.friction)
-        self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
-        self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
-        self.rig = thesis_rig(s, self.omega_driver, self.torque, dim=3)
+        self.shift = (0.0, T0)  # the driver's displacement u0, m, reached at t0, s
+        if rig is None:
+            self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
+            self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
+            rig = thesis_rig(s, self.omega_driver, self.torque, dim=3)
+            self.shift = (s.u0, s.t0)
+        self.rig = rig
+        self.axes = np.tile(AXIS, (rig.radii.size, 1))
+
+    def _weight(self, gravity) -> np.ndarray:
+        """The belt's weight as global generalised forces, N: the consistent mass times
+        the uniform field (g at every node's r, 0 at its slopes; as the 2D drive's)."""
+        G = np.zeros((self.n_dofs // PER_NODE, 3, 3))
+        G[:, 0, :2] = gravity
+        out = np.zeros(self.n_dofs)
+        np.add.at(out, self.dofmap, np.einsum("eab,eb->ea", self.element.mass(),
+                                              G.ravel()[self.dofmap]))
+        return out
 
     def omega_driver(self, t):
         return self.speed_law(t, self.spec.omega_final, self.spec.t0, self.spec.t1)
@@ -122,16 +150,16 @@ class Belt3DDrive(PulleyDrive):
         return self.torque_law(t, self.spec.Ta_max, self.spec.t0, self.spec.Ta_t1)
 
     def laws(self, t) -> np.ndarray:
-        """Pulley laws (4, len(t)): driver omega (rad/s), T_a (N m), driver shift u (m)
-        and its rate (m/s)."""
+        """Pulley laws (np + 2, len(t)): one per pulley (a driver's omega, rad/s, a free
+        pulley's T_a, N m), then the driver's shift u (m) and its rate (m/s)."""
         t = np.atleast_1d(np.asarray(t, dtype=float))
-        u, du = driver_shift(t, self.spec.u0, self.spec.t0)
+        u, du = driver_shift(t, *self.shift)
         return np.vstack([super().laws(t), u, du])
 
     def pulley_centres(self, t: float) -> np.ndarray:
-        """Pulley centres (2, 3) at time t, m (the driver moved by Eq. 4.46)."""
+        """Pulley centres (np, 3) at time t, m (the driver moved by Eq. 4.46)."""
         c = self.centres.copy()
-        c[0] += float(driver_shift(t, self.spec.u0, self.spec.t0)[0]) * SHIFT
+        c[0] += float(driver_shift(t, *self.shift)[0]) * SHIFT
         return c
 
     def element_coords(self, q) -> np.ndarray:
@@ -145,14 +173,15 @@ class Belt3DDrive(PulleyDrive):
         return [along, 2]
 
     def pulleys_at_rest(self) -> tuple:
-        """The pulley arguments of the contact kernels, pulleys at rest: centres (2, 3) m,
-        axes (2, 3), radii (2,) m, omegas (2,) rad/s, centre velocities (2, 3) m/s."""
-        return self.centres, self.axes, self.radii, np.zeros(2), np.zeros((2, 3))
+        """The pulley arguments of the contact kernels, pulleys at rest: centres (np, 3) m,
+        axes (np, 3), radii (np,) m, omegas (np,) rad/s, centre velocities (np, 3) m/s."""
+        npul = self.radii.size
+        return self.centres, self.axes, self.radii, np.zeros(npul), np.zeros((npul, 3))
 
     def kernel(self) -> Drive3D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""
         r = self.rig
         return Drive3D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
                        r.centres, r.radii, self.prm, r.free, r.inertia, r.damping,
-                       np.zeros(self.n), r.arms, None, np.zeros(1), self.axes,
+                       self.weight, r.arms, None, np.zeros(1), self.axes,
                        SHIFT.copy())

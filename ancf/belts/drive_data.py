@@ -4,12 +4,13 @@ their units, defaults and ranges, and the validated description it becomes.
 A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these tables
 (the key lists below are the declarations; every key has its unit and range there):
 
-* ``[belt]``: the element (``dufva2d``), ``n_elements``, the material (``E`` Pa or
-  ``EA`` N = E b h, one of them), the section ``h`` x ``b`` (m), ``rho`` (kg/m^3), ``nu``,
-  ``ks``, Dufva's ``alpha1``, ``alpha2`` (Eqs 3.18-3.19), the reference length
-  ``length`` L0 (m) or the ``prestretch`` L0 / P - 1 on the wrapped path P (one of them),
-  the element's ``axial_strain`` law (``green``: the thesis's Green strain, force
-  E A alpha1 (|r_x|^2 - 1)/2; ``engineering``: Exudyn's ANCFCable2D, force
+* ``[belt]``: the element (``dufva2d``, the planar belt of chapter 3; ``plate36``, the
+  thin plate belt of chapter 4, :data:`PLATE_BELT`: its own keys below), ``n_elements``,
+  the material (``E`` Pa or ``EA`` N = E b h, one of them), the section ``h`` x ``b``
+  (m), ``rho`` (kg/m^3), ``nu``, ``ks``, Dufva's ``alpha1``, ``alpha2`` (Eqs 3.18-3.19),
+  the reference length ``length`` L0 (m) or the ``prestretch`` L0 / P - 1 on the wrapped
+  path P (one of them), the element's ``axial_strain`` law (``green``: the thesis's Green
+  strain, force E A alpha1 (|r_x|^2 - 1)/2; ``engineering``: Exudyn's ANCFCable2D, force
   E A alpha1 (|r_x| - 1), r_x the slope along the stress-free length;
   :mod:`ancf.elements.dufva2d`), the ``strain_reference`` the file's E (or EA) and
   damping are measured on (``stress-free``: per stress-free length, what the element
@@ -20,6 +21,15 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   ``damping_bending`` (dEI, N m^2 s) and ``contact_offset`` (m): the distance of the
   belt's running surfaces from its centreline, so the centreline's path runs at
   radius + offset round every pulley.
+  The ``plate36`` belt (:class:`ancf.belts.drive3d.Belt3DDrive`: one plate across the
+  width, pulley axes along z) takes ``n_elements``, ``E`` or ``EA``, ``nu`` (plane
+  stress), ``h`` its thickness, ``b`` its width w (along the pulley axes), ``rho``,
+  ``bending`` (``on``: Eq. 4.17's bending energy; ``off``: a membrane),
+  ``elastic_points`` (n x n Gauss points per plate), ``length`` or ``prestretch`` and
+  ``contact_offset``; its ``[contact]`` is per unit area (``k_p`` N/m^3, ``c_p``
+  N s/m^3, ``gauss_points`` 25, 49 or 81 over each plate's mid surface), its friction
+  parameters too (``nu_s`` kg/(m^2 s)); it refuses a tensioner (the arm's row is the
+  2D belt's) and a friction law with a state.
 * ``[[pulleys]]``, in the belt's counter-clockwise running order (:mod:`ancf.belts.path`):
   ``name``, ``centre`` [x, y] (m), ``radius`` (m), ``side`` (+1 the belt's inner side on
   it, -1 its back) and a ``law`` with the law's own keys (:data:`LAW_KEYS`):
@@ -54,6 +64,7 @@ import numpy as np
 
 from ancf.belts import friction
 from ancf.belts.contact2d import SUPPORTED_POINTS
+from ancf.belts.contact3d import SUPPORTED_RULES
 from ancf.belts.path import PulleyPath
 from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS
 from ancf.common.inputs import MAX_STEPS
@@ -118,7 +129,7 @@ def _keys(*keys) -> dict:
 TOP = _keys(Vector("gravity", (0.0, 0.0), "m/s^2", "gravity vector"))
 
 BELT = _keys(
-    Param("element", "dufva2d", str, doc="belt element", choices=("dufva2d",)),
+    Param("element", "dufva2d", str, doc="belt element", choices=("dufva2d", "plate36")),
     Param("n_elements", REQUIRED, int, doc="belt elements", lo=4, hi=2000),
     Param("E", REQUIRED, float, "Pa", "Young's modulus (or EA)", lo=0, lo_open=True, hi=1e12),
     Param("EA", REQUIRED, float, "N", "axial stiffness E b h (or E)", lo=0, lo_open=True, hi=1e10),
@@ -149,6 +160,25 @@ BELT = _keys(
     Param("contact_offset", 0.0, float, "m", "running surfaces' distance from the centreline",
           lo=0, hi=0.05),
 )
+#: the plate36 belt's keys (thesis chapter 4; the belt3d scene's, as a drive file names them)
+PLATE_BELT = _keys(
+    BELT["element"],
+    Param("n_elements", REQUIRED, int, doc="plates along the belt (one across its width)", lo=4,
+          hi=200),
+    BELT["E"], BELT["EA"],
+    Param("nu", 0.3, float, "-", "Poisson's ratio (plane stress)", lo=0, hi=0.5, hi_open=True),
+    Param("h", REQUIRED, float, "m", "plate thickness", lo=0, lo_open=True, hi=0.1),
+    Param("b", REQUIRED, float, "m", "belt width w (along the pulley axes)", lo=0, lo_open=True,
+          hi=1.0),
+    BELT["rho"],
+    Param("bending", "on", str, doc="the plate's bending energy (Eq. 4.17; 'off': a membrane)",
+          choices=("on", "off")),
+    Param("elastic_points", 4, int, doc="Gauss points per direction of the elastic forces "
+          "(n x n per plate)", lo=2, hi=8),
+    BELT["length"], BELT["prestretch"], BELT["contact_offset"],
+)
+#: each element's belt keys
+BELT_KEYS = {"dufva2d": BELT, "plate36": PLATE_BELT}
 #: pairs of belt keys of which exactly one is given
 ONE_OF = (("E", "EA"), ("length", "prestretch"))
 
@@ -183,6 +213,8 @@ LAW_PARAMS = _keys(
           "centre (counter-clockwise positive)", lo=-1e5, hi=1e5),
     Param("arm_damping", REQUIRED, float, "N m s", "the arm's rotational damping", lo=0, hi=1e6),
 )
+#: the pulley laws each element's drive carries (a tensioner's arm: the 2D belt's only)
+ELEMENT_LAWS = {"dufva2d": LAWS, "plate36": ("prescribed", "driven", "idler", "fixed")}
 #: the keys of each pulley law (beyond PULLEY's); "speed" and "load" add SUB_KEYS
 LAW_KEYS = {"prescribed": ("speed",), "driven": ("inertia", "damping", "load"),
             "idler": ("inertia", "damping"),
@@ -203,6 +235,14 @@ def sub_keys(law_key: str, name: str) -> tuple:
 #: each friction law's parameters (ancf.belts.friction.ALL_PARAMS), all required
 FRICTION_KEYS = {law: _keys(*(replace(q, default=REQUIRED) for q in params))
                  for law, params in friction.ALL_PARAMS.items()}
+#: a unit per unit length of belt (2D) -> per unit area (the plate belt)
+PER_AREA = {"kg/(m s)": "kg/(m^2 s)", "N/m^2": "N/m^3", "N s/m^2": "N s/m^3"}
+#: each element's friction laws and their parameters (the plate belt: laws without a state,
+#: per unit area)
+ELEMENT_FRICTION = {
+    "dufva2d": FRICTION_KEYS,
+    "plate36": {law: {k: replace(q, unit=PER_AREA.get(q.unit, q.unit)) for k, q in keys.items()}
+                for law, keys in FRICTION_KEYS.items() if law in friction.PARAMS}}
 
 CONTACT = _keys(
     Param("k_p", REQUIRED, float, "N/m^2", "penalty stiffness per unit length", lo=0,
@@ -210,6 +250,15 @@ CONTACT = _keys(
     Param("c_p", 0.0, float, "N s/m^2", "penalty damping per unit length", lo=0, hi=1e8),
     Param("gauss_points", 7, int, doc="contact Gauss points per element", choices=SUPPORTED_POINTS),
 )
+
+#: each element's contact keys (the plate belt's per unit area of its mid surface)
+CONTACT_KEYS = {"dufva2d": CONTACT, "plate36": _keys(
+    Param("k_p", REQUIRED, float, "N/m^3", "penalty stiffness per unit area", lo=0,
+          lo_open=True, hi=1e13),
+    Param("c_p", 0.0, float, "N s/m^3", "penalty damping per unit area", lo=0, hi=1e9),
+    Param("gauss_points", 81, int, doc="contact points per plate (n x n Gauss rule over its "
+          "mid surface)", choices=SUPPORTED_RULES),
+)}
 
 RUN = _keys(
     Param("t_end", REQUIRED, float, "s", "simulated time", lo=0, lo_open=True, hi=100),

@@ -11,7 +11,8 @@ an :class:`InputError` of one line naming the file key and its allowed range: a 
 that does not exist or is no TOML (with the line tomllib gives), an unknown key, a
 missing one, a value out of range, an unknown law or one missing a parameter, and a
 layout the belt cannot be laid on (overlapping pulleys, a pulley it cannot wrap, a belt
-shorter than half its path or longer than the path).
+shorter than half its path or longer than the path), and a pulley law or friction law the
+belt's element does not carry (``plate36``: no tensioner, no law with a state).
 """
 from __future__ import annotations
 
@@ -132,9 +133,23 @@ def _one_of(values: dict, prefix: str, keys: dict) -> None:
             raise InputError(f"{prefix}{a}, {prefix}{b}: both given; allowed: exactly one")
 
 
-def _belt(data: dict) -> dict:
-    belt = _values(_table(data, "belt"), "belt.", dd.BELT, optional=sum(dd.ONE_OF, ()))
-    _one_of(belt, "belt.", dd.BELT)
+def _element(data: dict) -> str:
+    """The belt's element, which decides the keys of [belt], [contact] and [friction]."""
+    key = dd.BELT["element"]
+    table = _table(data, "belt")
+    return replace(key, name="belt.element").parse(table.get("element", key.default))
+
+
+def _refuse(key: str, value, element: str, allowed, why: str) -> InputError:
+    return InputError(f"{key} = {value!r} is out of range for belt.element = {element!r}; "
+                      f"allowed: one of {', '.join(allowed)} ({why})")
+
+
+def _belt(data: dict, element: str) -> dict:
+    keys = dd.BELT_KEYS[element]
+    belt = _values(_table(data, "belt"), "belt.", keys, optional=sum(dd.ONE_OF, ()),
+                   why=f" (element {element!r})")
+    _one_of(belt, "belt.", keys)
     area = belt["b"] * belt["h"]
     if belt["E"] is None:
         belt["E"] = belt["EA"] / area
@@ -159,11 +174,14 @@ def _law_keys(table: dict, prefix: str) -> tuple:
     return name, keys, f" (law {name!r}: {', '.join(names[len(dd.PULLEY):])})"
 
 
-def _pulley_spec(i: int, table) -> dd.PulleySpec:
+def _pulley_spec(i: int, table, element: str) -> dd.PulleySpec:
     prefix = f"pulleys.{i}."
     if not isinstance(table, dict):
         raise InputError(f"pulleys.{i}: {table!r} is not a table; allowed: a table [[pulleys]]")
     law, keys, why = _law_keys(table, prefix)
+    if law not in dd.ELEMENT_LAWS[element]:
+        raise _refuse(prefix + "law", law, element, dd.ELEMENT_LAWS[element],
+                      "a tensioner's arm is the 2D belt's")
     v = _values(table, prefix, keys, why=why)
     if "t1" in v and not v["t1"] > v["t0"]:
         raise InputError(f"{prefix}t1 = {v['t1']!r} is out of range; allowed: a number > "
@@ -177,12 +195,12 @@ def _pulley_spec(i: int, table) -> dd.PulleySpec:
     return dd.PulleySpec(v["name"], v["centre"], v["radius"], v["side"], law, params)
 
 
-def _pulleys(data: dict) -> tuple:
+def _pulleys(data: dict, element: str) -> tuple:
     tables = data.get("pulleys")
     count = f"{len(tables)} given" if isinstance(tables, list) else "missing or not an array"
     if not isinstance(tables, list) or len(tables) < 2:
         raise InputError(f"pulleys: {count}; allowed: an array of at least 2 tables [[pulleys]]")
-    pulleys = tuple(_pulley_spec(i, t) for i, t in enumerate(tables))
+    pulleys = tuple(_pulley_spec(i, t, element) for i, t in enumerate(tables))
     for i, p in enumerate(pulleys):
         first = next(j for j, q in enumerate(pulleys) if q.name == p.name)
         if first != i:
@@ -214,13 +232,17 @@ def _length(belt: dict, P: float) -> None:
     belt["prestretch"] = belt["length"] / P - 1.0
 
 
-def _friction(data: dict) -> dict:
+def _friction(data: dict, element: str) -> dict:
     table = _table(data, "friction")
     law = Param("law", dd.REQUIRED, str, doc="friction law", choices=tuple(FRICTION_LAWS))
     if "law" not in table:
         raise _missing(law, "friction.")
     name = replace(law, name="friction.law").parse(table["law"])
-    keys = {"law": law, **dd.FRICTION_KEYS[name]}
+    laws = dd.ELEMENT_FRICTION[element]
+    if name not in laws:
+        raise _refuse("friction.law", name, element, laws, "a law with a state per contact "
+                      "point is carried by the 2D belt only")
+    keys = {"law": law, **laws[name]}
     return _values(table, "friction.", keys, why=f" (law {name!r})")
 
 
@@ -246,9 +268,12 @@ def describe(data: dict) -> dd.DriveDescription:
         if key not in TOP_KEYS:
             raise InputError(f"{key}: unknown key; allowed: {', '.join(TOP_KEYS)}")
     gravity = _values({k: data[k] for k in dd.TOP if k in data}, "", dd.TOP)["gravity"]
-    belt = _belt(data)
-    pulleys = _pulleys(data)
+    element = _element(data)
+    belt = _belt(data, element)
+    pulleys = _pulleys(data, element)
     path = _path(pulleys, belt["contact_offset"])
     _length(belt, path.length)
-    return dd.DriveDescription(belt, pulleys, _friction(data), _values(_table(data, "contact"),
-                               "contact.", dd.CONTACT), _run(data), tuple(gravity), path)
+    contact = _values(_table(data, "contact"), "contact.", dd.CONTACT_KEYS[element],
+                      why=f" (element {element!r})")
+    return dd.DriveDescription(belt, pulleys, _friction(data, element), contact, _run(data),
+                               tuple(gravity), path)

@@ -1,5 +1,6 @@
-"""The 2D belt model of a drive file: a :class:`ancf.belts.drive_data.DriveDescription`
-as a :class:`ancf.belts.drive2d.BeltDrive` on any number of pulleys.
+"""The belt model of a drive file: a :class:`ancf.belts.drive_data.DriveDescription` as a
+:class:`ancf.belts.drive2d.BeltDrive` (``belt.element = "dufva2d"``) or a
+:class:`ancf.belts.drive3d.Belt3DDrive` (``"plate36"``) on any number of pulleys.
 
 The belt (Dufva elements) is laid on the description's wrapped path (the centreline's,
 at radius + ``belt.contact_offset``, on either side of the belt: the section's faces are
@@ -14,6 +15,11 @@ belt's back (``side = -1``) is contact like any other.  The belt's strain-rate d
 rates (:func:`ancf.elements.dufva2d.damping_forces`).  The element takes the file's
 ``axial_strain`` law and :func:`ancf.belts.drive_data.element_modulus` (the file's E, per
 stress-free or per laid length; the damping alike).
+
+The plate belt (``plate36``, :class:`ancf.belts.drive3d.Plate3DSpec`) is laid on the same
+path in the x-y plane, its width along the pulley axes (+z), with the same pulley rows
+(centres at z = 0; no tensioner, the file refuses it); its friction and contact are per
+unit area, its weight that of the in-plane gravity.
 """
 from __future__ import annotations
 
@@ -22,6 +28,7 @@ import math
 import numpy as np
 
 from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
+from ancf.belts.drive3d import Belt3DDrive, Plate3DSpec
 from ancf.belts.friction import ALL_PARAMS
 from ancf.belts.drive_data import (DriveDescription, element_modulus, laid_factor, load_law,
                                    omega_law)
@@ -47,16 +54,18 @@ def _arms(d: DriveDescription, free) -> np.ndarray:
     return np.array(rows, dtype=float).reshape(-1, 8)
 
 
-def rig(d: DriveDescription) -> Rig:
-    """The pulleys of the description as the march sees them."""
+def rig(d: DriveDescription, dim: int = 2) -> Rig:
+    """The pulleys of the description as the march sees them, centres in the x-y plane of
+    ``dim`` dimensions."""
     offset = d.belt["contact_offset"]
     free = np.cumsum([p.law in FREE for p in d.pulleys]) - 1
     free = np.array([j if p.law in FREE else -1 for p, j in zip(d.pulleys, free)])
     laws = {"prescribed": omega_law, "driven": load_law}
     chosen = [p for p in d.pulleys if p.law in FREE]
     arms = [p for p in d.pulleys if p.law == "tensioner"]
-    return Rig(tuple(p.name for p in d.pulleys),
-               np.array([p.centre for p in d.pulleys], dtype=float),
+    centres = np.zeros((len(d.pulleys), dim))
+    centres[:, :2] = [p.centre for p in d.pulleys]
+    return Rig(tuple(p.name for p in d.pulleys), centres,
                np.array([p.radius + offset for p in d.pulleys]), free,
                np.array([p.params["inertia"] for p in chosen]
                         + [p.params["arm_inertia"] for p in arms], dtype=float),
@@ -66,18 +75,35 @@ def rig(d: DriveDescription) -> Rig:
                _arms(d, free))
 
 
+def _friction(d: DriveDescription) -> tuple:
+    """The friction law named in the file, with its parameters."""
+    f = d.friction
+    return (f["law"], *(f[q.name] for q in ALL_PARAMS[f["law"]]))
+
+
+def spec3d(d: DriveDescription) -> Plate3DSpec:
+    """The plate belt and its contact."""
+    b, c = d.belt, d.contact
+    return Plate3DSpec(d.path, b["length"], b["n_elements"], b["E"], b["nu"], b["rho"], b["b"],
+                       b["h"], b["bending"] == "on", c["k_p"], c["c_p"], _friction(d),
+                       c["gauss_points"], ng=b["elastic_points"])
+
+
 def spec(d: DriveDescription) -> Belt2DSpec:
     """The belt and its contact (the friction law named in the file, with its parameters)."""
-    b, c, f = d.belt, d.contact, d.friction
-    law = (f["law"], *(f[q.name] for q in ALL_PARAMS[f["law"]]))
+    b, c = d.belt, d.contact
+    law = _friction(d)
     return Belt2DSpec(d.path, b["length"], b["n_elements"], element_modulus(b), b["nu"],
                       b["rho"], b["b"], b["h"], b["ks"], b["alpha1"], b["alpha2"],
                       b["elastic_points"], c["k_p"], c["c_p"], law, c["gauss_points"],
                       axial=b["axial_strain"])
 
 
-def build(d: DriveDescription) -> BeltDrive:
-    """The drive's model (the damping times :func:`ancf.belts.drive_data.laid_factor`)."""
+def build(d: DriveDescription) -> BeltDrive | Belt3DDrive:
+    """The drive's model (2D: the damping times
+    :func:`ancf.belts.drive_data.laid_factor`)."""
     b = d.belt
+    if b["element"] == "plate36":
+        return Belt3DDrive(spec3d(d), rig(d, dim=3), d.gravity)
     return BeltDrive(spec(d), rig(d), d.gravity,
                      laid_factor(b) * np.array([b["damping_axial"], b["damping_bending"]]))

@@ -25,8 +25,8 @@ column and corner entries with its pulley's coordinate.  It returns the number o
 
 ``laws`` are the pulley laws at the evaluation time, one row per pulley: a pulley
 turned by its law (``free[p] = -1``) its angular velocity (rad/s), a free one its load
-torque T_a (N m); in 3D followed by the driver's displacement u (m) and its rate (m/s)
-along the drive's ``shift`` direction (Eq. 4.46).
+torque T_a (N m); in 3D followed by pulley 0's displacement u (m) and its rate (m/s)
+along the drive's ``shift`` direction (the thesis driver's, Eq. 4.46; else 0).
 """
 from __future__ import annotations
 
@@ -72,7 +72,7 @@ class Drive3D(NamedTuple):
     element: tuple       # the plate36 elements' kernel data (Plate36.kernel_data)
     S0: np.ndarray
     w: np.ndarray        # (nel, ng), m^2
-    centres: np.ndarray  # (2, 3), m
+    centres: np.ndarray  # (np, 3), m
     radii: np.ndarray
     prm: np.ndarray
     free: np.ndarray
@@ -82,8 +82,8 @@ class Drive3D(NamedTuple):
     arms: np.ndarray     # (0, 8): no tensioner arms in 3D
     z: None              # no friction law with a state in 3D
     h: np.ndarray        # (1,)
-    axes: np.ndarray     # pulley axes (2, 3)
-    shift: np.ndarray    # direction the driver is moved in (3,)
+    axes: np.ndarray     # pulley axes (np, 3)
+    shift: np.ndarray    # direction pulley 0 (the thesis's driver) is moved in (3,)
 
 
 def drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
@@ -123,11 +123,13 @@ def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
 
 @implements(drive_forces, Drive3D)
 def _forces3d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
-    """The driver's centre is moved by laws[2] along ``shift`` (at the rate laws[3])."""
+    """Pulley 0's centre is moved by laws[np] along ``shift`` (at the rate laws[np + 1]),
+    np pulleys."""
     plate36.gradient_tangent(E, drive.element, want_J, g, K)
     o, odot = drive.centres.copy(), np.zeros_like(drive.centres)
-    o[0] += laws[2] * drive.shift
-    odot[0] = laws[3] * drive.shift
+    npul = drive.radii.shape[0]
+    o[0] += laws[npul] * drive.shift
+    odot[0] = laws[npul + 1] * drive.shift
     return contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas, odot,
                             drive.prm, want_J, *c)
 

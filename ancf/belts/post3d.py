@@ -24,6 +24,7 @@ from ancf.belts.drive3d import SHIFT
 from ancf.belts.post2d import _span_coords, spans
 from ancf.belts.strains import DEFAULT_POINTS, measures
 from ancf.belts.contact3d import contact_forces3d, contact_state3d
+from ancf.core.quadrature import gauss01
 from ancf.elements._generated import plate36_S, plate36_x, plate36_y
 
 MEASURES = ("green", "true", "almansi")
@@ -74,36 +75,51 @@ def line_sample(drive, x, v, y: float = 0.0, npts: int = DEFAULT_POINTS) -> dict
     return {key: a.reshape(-1, *a.shape[2:]) for key, a in out.items()}
 
 
+def _middle_third(drive, r, span) -> np.ndarray:
+    """The points r (m, 3) in the middle third of ``span`` ((start, end) in the x-y
+    plane, m) within R/2 of its line, R the smallest pulley radius (bool)."""
+    R = float(drive.radii.min())
+    lam, off = _span_coords(r[:, :2], span)
+    return (lam > 1 / 3) & (lam < 2 / 3) & (np.abs(off) < R / 2)
+
+
 def span_means(drive, smp: dict) -> dict:
     """{"tight"/"slack": {quantity: mean over the span's middle third}}."""
-    R = float(drive.radii.min())
     out = {}
     for name, span in spans(drive.spec.path).items():
-        lam, off = _span_coords(smp["r"][:, :2], span)
-        sel = (lam > 1 / 3) & (lam < 2 / 3) & (np.abs(off) < R / 2)
+        sel = _middle_third(drive, smp["r"], span)
         out[name] = {key: float(np.mean(a[sel])) if sel.any() else float("nan")
                      for key, a in smp.items() if key not in ("r", "s")}
     return out
 
 
+def span_tension(drive, smp: dict, span) -> float:
+    """The mean membrane axial force N_m (N) of a :func:`line_sample` over the middle
+    third of ``span`` ((start, end), m; NaN if no point lies there)."""
+    sel = _middle_third(drive, smp["r"], span)
+    return float(np.mean(smp["tension_membrane_N"][sel])) if sel.any() else float("nan")
+
+
 def _contact_args(drive, x, v, t: float) -> tuple:
     """Arguments of the 3D contact kernels at state (x, v), time t."""
     E, V = drive.element_coords(drive.belt(x)), drive.element_coords(drive.belt(v))
+    npul = drive.radii.size
     law = drive.laws(np.array([t]))[:, 0]
-    odot = np.zeros((2, 3))
-    odot[0] = law[3] * SHIFT
-    return E, V, drive.pulley_centres(t), np.array([law[0], float(v[-1])]), odot
+    odot = np.zeros((npul, 3))
+    odot[0] = law[npul + 1] * SHIFT
+    return E, V, drive.pulley_centres(t), drive.omegas(t, v), odot
 
 
 def pulley_moments(drive, x, v, t: float) -> np.ndarray:
-    """Moments (2,) of the contact forces about the pulley axes at state (x, v), N m
-    (the driven pulley's is the integral of the friction of Eq. 4.45 times the lever)."""
+    """Moments (np,) of the contact forces about the pulley axes at state (x, v), N m
+    (a driven pulley's is the integral of the friction of Eq. 4.45 times the lever)."""
     E, V, o, om, odot = _contact_args(drive, x, v, t)
-    nel, T = E.shape[0], np.zeros(2)
+    nel, npul = E.shape[0], drive.radii.size
+    T = np.zeros(npul)
     contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, om, odot, drive.prm,
                      False, np.zeros((nel, 36)), np.zeros((0, 36, 36)), np.zeros((0, 36, 36)),
-                     np.zeros((0, 2, 36)), T, np.zeros((2, 0, 36)), np.zeros((2, 0, 36)),
-                     np.zeros(2))
+                     np.zeros((0, npul, 36)), T, np.zeros((npul, 0, 36)),
+                     np.zeros((npul, 0, 36)), np.zeros(npul))
     return T
 
 
@@ -111,6 +127,30 @@ def contact_sample(drive, x, v, t: float) -> tuple:
     """:func:`ancf.belts.contact3d.contact_state3d` at state (x, v): r, d, F_n, f_t, v_s, branch."""
     E, V, o, om, odot = _contact_args(drive, x, v, t)
     return contact_state3d(E, V, drive.S0, o, drive.axes, drive.radii, om, odot, drive.prm)
+
+
+def width_contact(drive, x, v, t: float, npts: int = DEFAULT_POINTS) -> tuple:
+    """(normal, friction) (nel * npts,) N/m: the pulleys' force on the belt per unit
+    length at the points of a :func:`line_sample` along the belt (xi = (j + 1/2) / npts
+    of each element), the contact state of :func:`ancf.belts.contact3d.contact_state3d`
+    at the contact rule's n Gauss points across the width integrated over it and summed
+    over the pulleys: the normal force F_n and the friction along each pulley's
+    counter-clockwise tangent p x n (0 off contact)."""
+    s, L = drive.spec, drive.lengths
+    E, V, o, om, odot = _contact_args(drive, x, v, t)
+    yg, wg = gauss01(int(round(np.sqrt(s.contact_points))))
+    xi = (np.arange(npts) + 0.5) / npts
+    X = np.repeat(xi[None, :] * L[:, None], yg.size, axis=1)
+    Y = np.broadcast_to(np.tile(yg * s.width, npts), X.shape)
+    S = np.ascontiguousarray(plate36_S(X, Y, np.broadcast_to(L[:, None], X.shape),
+                                       np.full_like(X, s.width)))
+    r, _, Fn, ft = contact_state3d(E, V, S, o, drive.axes, drive.radii, om, odot, drive.prm)[:4]
+    a = r[:, :, None, :] - o[None, None]
+    a -= np.einsum("eqpc,pc->eqp", a, drive.axes)[..., None] * drive.axes
+    tang = np.cross(drive.axes, a / np.linalg.norm(a, axis=-1, keepdims=True))
+    per_width = np.stack([Fn, np.einsum("eqpc,eqpc->eqp", ft, tang)]).sum(axis=-1)
+    out = np.einsum("keij,j->kei", per_width.reshape(2, L.size, npts, yg.size), wg * s.width)
+    return out[0].ravel(), out[1].ravel()
 
 
 def end_state(drive, x, v, t: float, measure: str) -> dict:

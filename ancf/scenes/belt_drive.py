@@ -1,10 +1,12 @@
 """A belt drive of any layout from a drive file (``ancf run belt-drive --file drive.toml``).
 
 The file (:mod:`ancf.belts.drive_file`; keys, units and ranges in
-:mod:`ancf.belts.drive_data`) becomes the 2D belt model on N pulleys
-(:mod:`ancf.belts.drive_model`), settled on its pulleys (``run.start = "settled"``) and
-marched by the compiled generalised-alpha scheme, as ``belt2d``: the thesis drive's file
-(``examples/thesis_table_3_1.toml``) gives ``belt2d``'s numbers.  ``--set
+:mod:`ancf.belts.drive_data`) becomes the belt model on N pulleys
+(:mod:`ancf.belts.drive_model`: the 2D Dufva belt, ``belt.element = "dufva2d"``, or the
+3D plate belt, ``"plate36"``), settled on its pulleys (``run.start = "settled"``) and
+marched by the compiled generalised-alpha scheme, as ``belt2d`` and ``belt3d``: the
+thesis drives' files (``examples/thesis_table_3_1.toml``, ``thesis_table_4_1.toml``)
+give ``belt2d``'s and ``belt3d``'s numbers.  ``--set
 section.key=value`` overrides a key of the file (``friction.mu=1.0``,
 ``pulleys.driven.inertia=0.5``).
 
@@ -15,7 +17,9 @@ driver the first prescribed pulley); per span (pulley k to k + 1) the mean axial
 over its middle third at t_end and averaged over the samples of the steady window; the
 axial force, the speed, the position and the contact forces (normal and friction per unit
 length, summed over the pulleys) along the belt at t_end; per tensioner its arm's angle; the run
-statistics.
+statistics.  The plate belt's axial force is the membrane's own (:mod:`ancf.belts.post3d`),
+along the belt's edge z = 0 as ``belt3d`` samples it, with the contact forces per unit
+length integrated across the width there.
 """
 from __future__ import annotations
 
@@ -26,6 +30,7 @@ import numpy as np
 from ancf.belts.arm2d import BETA0, COORD, PULLEY
 from ancf.belts.contact2d import contact_forces_moving
 from ancf.belts.drive_file import load
+from ancf.belts import post3d
 from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, simulate
 from ancf.belts.post2d import sample, span_tension
@@ -74,25 +79,65 @@ def pulley_moments(drive, x, v, t: float, state=None) -> np.ndarray:
     return T
 
 
-def _spans(desc, drive, res, window) -> list:
-    """Per span: from, to, tension at t_end and its mean over the window's samples, N."""
-    path, R = desc.path, float(drive.radii.min())
+def _spans(desc, window, last, coarse, tension) -> list:
+    """Per span: from, to, tension at t_end and its mean over the window's samples, N;
+    ``last`` the belt sampled at t_end, ``coarse(i)`` at sample i (4 points per element),
+    ``tension(sampled, span)`` a span's tension from a sampled belt."""
+    path = desc.path
     ends = [path(np.array([a, b]))[0] for _, a, b in path.pieces()[1::2]]
     names = [q.name for q in desc.pulleys]
-    last = sample(drive, res.q[-1], res.v[-1], float(res.t[-1]))
-    means = np.array([[span_tension(sample(drive, res.q[i], res.v[i], float(res.t[i]), npts=4),
-                                    e, R) for e in ends] for i in window])
+    means = np.array([[tension(smp, e) for e in ends] for smp in map(coarse, window)])
     N = len(names)
     return [{"from": names[k], "to": names[(k + 1) % N],
              "tension_mean_N": float(np.mean(means[:, k])),
-             "tension_N": span_tension(last, e, R)} for k, e in enumerate(ends)], last
+             "tension_N": tension(last, e)} for k, e in enumerate(ends)]
+
+
+def _end2d(desc, drive, res, window) -> dict:
+    """The spans and the belt at t_end (:mod:`ancf.belts.post2d`, 8 points per element)."""
+    R = float(drive.radii.min())
+    last = sample(drive, res.q[-1], res.v[-1], float(res.t[-1]))
+    spans = _spans(desc, window, last,
+                   lambda i: sample(drive, res.q[i], res.v[i], float(res.t[i]), npts=4),
+                   lambda smp, span: span_tension(smp, span, R))
+    return dict(spans=spans, belt_s_m=last.s.tolist(),
+                axial_force_N=last.N.tolist(), speed_m_s=last.speed.tolist(),
+                penetration_max_m=float(max(last.d.max(), 0.0)),
+                belt_x_m=last.r[:, 0].tolist(), belt_y_m=last.r[:, 1].tolist(),
+                normal_force_N_m=last.Fn.sum(axis=1).tolist(),
+                friction_force_N_m=last.Ft.sum(axis=1).tolist())
+
+
+def _end3d(desc, drive, res, window) -> dict:
+    """The spans and the belt's edge z = 0 at t_end (:mod:`ancf.belts.post3d`, 20 points
+    per element; the membrane's axial force)."""
+    x, v, t = res.q[-1], res.v[-1], float(res.t[-1])
+    last = post3d.line_sample(drive, x, v)
+    spans = _spans(desc, window, last,
+                   lambda i: post3d.line_sample(drive, res.q[i], res.v[i], npts=4),
+                   lambda smp, span: post3d.span_tension(drive, smp, span))
+    normal, friction = post3d.width_contact(drive, x, v, t)
+    return dict(spans=spans, belt_s_m=last["s"].tolist(),
+                axial_force_N=last["tension_membrane_N"].tolist(),
+                speed_m_s=last["speed"].tolist(),
+                penetration_max_m=float(max(post3d.contact_sample(drive, x, v, t)[1].max(), 0.0)),
+                belt_x_m=last["r"][:, 0].tolist(), belt_y_m=last["r"][:, 1].tolist(),
+                normal_force_N_m=normal.tolist(), friction_force_N_m=friction.tolist())
+
+
+def _moments(desc, drive, res) -> np.ndarray:
+    """The belt's moment on every pulley at every sample (samples, np), N m."""
+    if desc.belt["element"] == "plate36":
+        return np.array([post3d.pulley_moments(drive, x, v, float(t))
+                         for x, v, t in zip(res.q, res.v, res.t)])
+    states = res.extra.get("friction_state", [None] * res.t.size)
+    return np.array([pulley_moments(drive, x, v, float(t), z)
+                     for x, v, t, z in zip(res.q, res.v, res.t, states)])
 
 
 def _pulleys(desc, drive, res, window) -> list:
     W = np.array([drive.omegas(float(t), v) for t, v in zip(res.t, res.v)])
-    states = res.extra.get("friction_state", [None] * res.t.size)
-    T = np.array([pulley_moments(drive, x, v, float(t), z)
-                  for x, v, t, z in zip(res.q, res.v, res.t, states)])
+    T = _moments(desc, drive, res)
     mean = W[window].mean(axis=0)
     d = next(i for i, q in enumerate(desc.pulleys) if q.law == "prescribed")
     rim = np.abs(mean) * drive.radii
@@ -116,12 +161,8 @@ def _results(desc, drive, res) -> dict:
     window = np.flatnonzero(res.t >= res.t[-1] - desc.run["steady_window"] - 1e-12)
     out = {"times": res.t.tolist(), "pulleys": _pulleys(desc, drive, res, window),
            "arms": _arms(drive, res, window)}
-    spans, last = _spans(desc, drive, res, window)
-    out.update(spans=spans, belt_s_m=last.s.tolist(), axial_force_N=last.N.tolist(),
-               speed_m_s=last.speed.tolist(), penetration_max_m=float(max(last.d.max(), 0.0)),
-               belt_x_m=last.r[:, 0].tolist(), belt_y_m=last.r[:, 1].tolist(),
-               normal_force_N_m=last.Fn.sum(axis=1).tolist(),
-               friction_force_N_m=last.Ft.sum(axis=1).tolist())
+    end = _end3d if desc.belt["element"] == "plate36" else _end2d
+    out.update(end(desc, drive, res, window))
     return out
 
 
@@ -256,9 +297,9 @@ def _into(pulleys, i, q, path_length) -> float:
 SCENE = FileScene(
     "belt-drive",
     "A belt drive of any layout from a drive file (--file drive.toml; --set section.key=value): "
-    "Dufva belt on N pulleys, penalty contact with friction by name (creep-rate, coulomb, "
-    "bristle), prescribed, driven, "
-    "idler, tensioner and fixed pulleys, on the belt's inner side or its back.",
+    "Dufva belt (2D) or thin plate belt (3D) on N pulleys, penalty contact with friction by "
+    "name (creep-rate, coulomb, bristle), prescribed, driven, "
+    "idler, tensioner (2D) and fixed pulleys, on the belt's inner side or its back.",
     (Param("file", DEFAULT_FILE, str, doc="the TOML drive file (ancf run belt-drive --file)"),
      Param("set", "", str, doc=f"the drive file's overrides applied, '{SEP}'-separated "
            "(--set section.key=value), the model parameters below apart"),

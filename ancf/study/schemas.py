@@ -194,13 +194,15 @@ RESULTS = {
                                          "over the samples of run.steady_window, N"),
             "tension_N": field(NUM, "the same at t_end, N")}),
         "belt_s_m": field("array", "belt arc coordinate (reference length from node 0) of "
-                          "the points along the belt, m", nullable=True, items=NUM),
+                          "the points along the belt (the plate belt: along its edge z = 0), "
+                          "m", nullable=True, items=NUM),
         "axial_force_N": field("array", "axial force at those points at t_end, N",
                                nullable=True, items=NUM),
         "speed_m_s": field("array", "belt speed at those points at t_end, m/s", nullable=True,
                            items=NUM),
         "penetration_max_m": _nullable("largest penetration of the belt's centreline sample "
-                                       "points into a pulley at t_end, m"),
+                                       "points (the plate belt: its mid surface's contact "
+                                       "points) into a pulley at t_end, m"),
         "belt_x_m": field("array", "x of those points at t_end, m", nullable=True, items=NUM),
         "belt_y_m": field("array", "y of those points at t_end, m", nullable=True, items=NUM),
         "normal_force_N_m": field("array", "the pulleys' normal force on the belt per unit "
