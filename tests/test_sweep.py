@@ -271,28 +271,35 @@ def test_sweep_workers_end_when_the_cli_is_killed(tmp_path):
             p.wait()
 
 
-def test_the_time_limit_leaves_out_compilation():
-    """A run's clock stops while its worker compiles or loads numba kernels (an empty cache
-    on a loaded machine took 205 s for two 120 s-limited belt runs whose solves take seconds),
-    and the worker says when it compiles."""
+def test_the_time_limit_counts_cpu_without_compilation(monkeypatch):
+    """A run's clock is its worker's CPU time, and it stops while the worker compiles or
+    loads numba kernels: an empty kernel cache on a loaded machine took 205 s for two
+    120 s-limited belt runs whose solves take seconds, and at a load of 10 the 40-plate
+    belt3d runs (120 s CPU) took over their 300 s wall.  The worker says when it compiles."""
     import io
     import numba
     from ancf.study import sweep
 
-    r = object.__new__(sweep._Runner)
-    r.send = lambda task: None
-    r.task, r.t0, r.compiling_since = {"key": "k"}, 100.0, None
-    clock = iter([101.0, 106.0])  # compiling from 101 s to 106 s
-    real = sweep.time.monotonic
-    sweep.time.monotonic = lambda: next(clock)
-    try:
-        r.note({"compiling": True})
-        assert r.deadline(1.0) == 101.0 + sweep.COMPILE_LIMIT  # no time limit while compiling
-        r.note({"compiling": False})
-    finally:
-        sweep.time.monotonic = real
-    assert r.deadline(1.0) == 106.0  # 100 s + 1 s + the 5 s of compiling
+    wall, cpu = [100.0], [7.0]
+    monkeypatch.setattr(sweep.time, "monotonic", lambda: wall[0])
+    monkeypatch.setattr(sweep, "process_cpu", lambda pid: cpu[0])
+    clock = sweep._RunClock(pid=0)
+    wall[0], cpu[0] = 101.0, 7.5
+    clock.note(True)                           # compiling from here ...
+    wall[0], cpu[0] = 150.0, 40.0
+    assert clock.expired(1.0) is None          # ... no time limit while compiling
+    clock.note(False)                          # ... to here: 49 s wall, 32.5 s CPU
+    assert clock.cpu() == 0.5 and clock.wall() == 1.0
+    wall[0] = 155.0                            # a loaded machine: 6 s wall, 0.5 s CPU
+    assert clock.expired(1.0) is None and clock.wait(1.0) == 0.5
+    cpu[0] = 40.6
+    assert clock.expired(1.0) == "1 s"
+    cpu[0], wall[0] = 40.0, 160.1              # 11 s wall without CPU: a hang
+    assert clock.expired(1.0) == "1 s; 10 times that in wall time"
+    monkeypatch.undo()
 
+    import os
+    assert sweep.process_cpu(os.getpid()) > 0  # this platform's /proc is read
     out = io.StringIO()
     listener = sweep._announce_compiles(out)
 

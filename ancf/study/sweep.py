@@ -20,10 +20,11 @@ combination in worker processes, one row per run, into a Parquet or CSV file:
   keys already there (``retry_failed`` reruns failed / timed-out ones) and the journal is
   folded into FILE at the end, also after Ctrl-C;
 * each run happens in a separate worker process, killed when it exceeds ``time_limit``
-  (the row says ``time limit exceeded (X s)``); the clock stops while the worker compiles
-  or loads numba kernels (it says so on its line protocol), so an empty kernel cache or a
-  loaded machine's slow compilation does not decide a row, and a single compilation longer
-  than ``COMPILE_LIMIT`` is a timeout too; an exception or a crash of the worker
+  CPU seconds (the row says ``time limit exceeded (X s)``); the clock stops while the
+  worker compiles or loads numba kernels (it says so on its line protocol), so neither an
+  empty kernel cache nor a loaded machine decides a row.  A run that takes ``HANG_FACTOR``
+  times its limit in wall time (a hang), or a single compilation over ``COMPILE_LIMIT``
+  seconds, is a timeout too; an exception or a crash of the worker
   becomes a failed row with its message; the other runs go on;
 * ``scheduler=ADDRESS`` runs the same tasks on a Dask cluster (dask.distributed); each
   Dask worker thread drives one such worker process, so time limits, isolation and
@@ -59,6 +60,7 @@ from ancf.scenes.store import keep
 STATUSES = ("ok", "not-converged", "failed", "timeout", "invalid", "worker-died")
 RETRY = ("failed", "timeout", "worker-died")
 COMPILE_LIMIT = 1800.0  # s of wall time one compilation (or cache load) of a kernel may take
+HANG_FACTOR = 10.0      # wall time beyond this many times the (CPU) time limit: a hang
 _ENV = {**BLAS_ENV, "PYTHONWARNINGS": "ignore"}
 
 
@@ -320,6 +322,71 @@ def _announce_compiles(out):
 # worker processes
 # ---------------------------------------------------------------------------------------
 
+_TICKS = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+
+
+def process_cpu(pid: int) -> float | None:
+    """CPU seconds (user + system) the live process ``pid`` has used; None where /proc
+    cannot tell."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            fields = f.read().rsplit(b")", 1)[1].split()
+    except (OSError, IndexError):
+        return None
+    return (int(fields[11]) + int(fields[12])) / _TICKS  # utime, stime: fields 14, 15
+
+
+class _RunClock:
+    """What a worker's current run has taken: CPU seconds of the worker process (wall
+    seconds where /proc is missing) and wall seconds, both without the spans in which it
+    compiled or loaded kernels (:func:`_announce_compiles`)."""
+
+    def __init__(self, pid: int):
+        self.pid = pid
+        self.wall0, self.cpu0 = self._now()
+        self.compiling = None  # (wall, cpu) when the current compilation began
+
+    def _now(self) -> tuple[float, float]:
+        wall = time.monotonic()
+        cpu = process_cpu(self.pid)
+        return wall, wall if cpu is None else cpu
+
+    def note(self, compiling: bool) -> None:
+        """The worker began (True) or ended (False) a compilation: stop or restart."""
+        now = self._now()
+        if compiling:
+            self.compiling = now
+        elif self.compiling is not None:
+            self.wall0 += now[0] - self.compiling[0]
+            self.cpu0 += now[1] - self.compiling[1]
+            self.compiling = None
+
+    def wall(self) -> float:
+        return (self.compiling or self._now())[0] - self.wall0
+
+    def cpu(self) -> float:
+        return (self.compiling or self._now())[1] - self.cpu0
+
+    def expired(self, time_limit: float) -> str | None:
+        """Why the run is over its limits (the row's words), or None."""
+        if self.compiling is not None:
+            if time.monotonic() - self.compiling[0] > COMPILE_LIMIT:
+                return f"one compilation over {COMPILE_LIMIT:g} s"
+            return None
+        if self.cpu() > time_limit:
+            return f"{time_limit:g} s"
+        if self.wall() > HANG_FACTOR * time_limit:
+            return f"{time_limit:g} s; {HANG_FACTOR:g} times that in wall time"
+        return None
+
+    def wait(self, time_limit: float) -> float:
+        """Wall seconds before the run can expire at the earliest (a process uses at most
+        one CPU second per second)."""
+        if self.compiling is not None:
+            return max(COMPILE_LIMIT - (time.monotonic() - self.compiling[0]), 0.0)
+        return max(min(time_limit - self.cpu(), HANG_FACTOR * time_limit - self.wall()), 0.0)
+
+
 class _Runner:
     """One worker process (``python -m ancf.study.sweep --worker``) and its line protocol."""
 
@@ -336,38 +403,17 @@ class _Runner:
         os.set_blocking(self.fd, False)
         self.buf = b""
         self.task = None
-        self.t0 = 0.0
-        self.compiling_since = None  # monotonic time the current compilation began
+        self.clock = None  # the current run's _RunClock
         self.ready = False
 
     def send(self, task: dict) -> None:
-        self.task, self.t0, self.compiling_since = task, time.monotonic(), None
+        self.task, self.clock = task, _RunClock(self.proc.pid)
         self.proc.stdin.write((json.dumps(task) + "\n").encode())
         self.proc.stdin.flush()
 
-    def note(self, msg: dict) -> None:
-        """Stop the run's clock while the worker compiles (``msg`` from its protocol)."""
-        now = time.monotonic()
-        if msg["compiling"]:
-            self.compiling_since = now
-        elif self.compiling_since is not None:
-            self.t0 += now - self.compiling_since
-            self.compiling_since = None
-
-    def deadline(self, time_limit: float) -> float:
-        """When the current run times out (monotonic s): ``time_limit`` s of running, or
-        ``COMPILE_LIMIT`` s into one compilation."""
-        if self.compiling_since is not None:
-            return self.compiling_since + COMPILE_LIMIT
-        return self.t0 + time_limit
-
-    def timeout_row(self, time_limit: float) -> dict:
-        now = time.monotonic()
-        if self.compiling_since is not None:
-            return failure_row(self.task, "timeout", "time limit exceeded (one compilation "
-                               f"over {COMPILE_LIMIT:g} s)", now - self.t0)
-        return failure_row(self.task, "timeout", f"time limit exceeded ({time_limit:g} s)",
-                           now - self.t0)
+    def timeout_row(self, reason: str) -> dict:
+        return failure_row(self.task, "timeout", f"time limit exceeded ({reason})",
+                           self.clock.wall())
 
     def feed(self):
         """New complete messages, or None at end of file (the worker died)."""
@@ -421,7 +467,7 @@ class _Runner:
         code = self.proc.wait()
         how = f"killed by signal {-code}" if code < 0 else f"exit code {code}"
         return failure_row(task, "worker-died", f"worker process died ({how}){self.stderr_tail()}",
-                           time.monotonic() - self.t0)
+                           self.clock.wall())
 
     def wait_ready(self, timeout: float = 120.0) -> None:
         deadline = time.monotonic() + timeout
@@ -445,11 +491,11 @@ class _Runner:
         sel.register(self.fd, selectors.EVENT_READ)
         try:
             while True:
-                left = self.deadline(time_limit) - time.monotonic()
-                if left <= 0 or not sel.select(left):
-                    if time.monotonic() < self.deadline(time_limit):
+                if not sel.select(min(self.clock.wait(time_limit), 1.0)):
+                    reason = self.clock.expired(time_limit)
+                    if reason is None:
                         continue
-                    row = self.timeout_row(time_limit)
+                    row = self.timeout_row(reason)
                     self.kill()
                     return row
                 msgs = self.feed()
@@ -460,7 +506,7 @@ class _Runner:
                         self.task = None
                         return m
                     if "compiling" in m:
-                        self.note(m)
+                        self.clock.note(m["compiling"])
         finally:
             sel.close()
 
@@ -489,7 +535,7 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
                 if r.ready and r.task is None and pending:
                     r.send(pending.popleft())
             busy = [r for r in runners if r.task is not None]
-            wait = min([r.deadline(time_limit) - time.monotonic() for r in busy] + [1.0])
+            wait = min([r.clock.wait(time_limit) for r in busy] + [1.0])
             for key, _ in sel.select(max(wait, 0.005)):
                 r = key.data
                 msgs = r.feed()
@@ -510,11 +556,13 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
                     elif "key" in m:
                         r.task = None
                         yield m
-                    elif "compiling" in m:
-                        r.note(m)
-            now = time.monotonic()
-            for r in [r for r in runners if r.task is not None and now > r.deadline(time_limit)]:
-                row = r.timeout_row(time_limit)
+                    elif "compiling" in m and r.clock is not None:
+                        r.clock.note(m["compiling"])
+            for r in [r for r in runners if r.task is not None]:
+                reason = r.clock.expired(time_limit)
+                if reason is None:
+                    continue
+                row = r.timeout_row(reason)
                 retire(r, kill=True)
                 spawn()
                 yield row
