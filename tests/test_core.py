@@ -96,6 +96,21 @@ def test_pattern_scatter_equals_sparse_product(tie_loop):
         assert pat.kl < 0.5 * pat.n
 
 
+@pytest.mark.parametrize("tie_loop", [False, True])
+def test_selection_is_the_sparse_elimination(tie_loop):
+    """Elimination.selection() (no scipy) is build()'s T: the same matrix, the same g and
+    free list, and the same reduced pattern from either."""
+    p = SCENES["cantilever"].resolve({"n_elements": 24})
+    _, _, asm, elim = _cantilever_model(p, tie_loop)
+    (S, gs, fs), (T, g, free) = elim.selection(), elim.build()
+    assert S.shape == T.shape and (S.tocsr() != T).nnz == 0
+    assert gs.tolist() == g.tolist() and fs.tolist() == free.tolist()
+    a, b = (ReducedPattern(asm.n_dofs, [asm.groups[0].dofmap], X) for X in (S, T))
+    assert (a.n, a.kl, a.band) == (b.n, b.kl, b.band)
+    for x, y in zip((a.order, a.qsel, a.zsel, *a.groups[0]), (b.order, b.qsel, b.zsel, *b.groups[0])):
+        assert x.tolist() == y.tolist()
+
+
 @pytest.mark.parametrize("overrides", [
     {},                                                               # stable
     {"h": 0.5, "nu": 0.0, "integration": "report-selective", "n_elements": 32},  # unstable

@@ -179,7 +179,7 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
     """Equilibrium under the external load vector ``Qk`` (global, N) and the force terms
     ``forces`` (an ``ancf.core.forces.Forces``, or None), starting at ``q0``."""
     opt = options or NewtonOptions()
-    T, g, _ = elimination.build()
+    T, g, _ = elimination.selection()
     pattern = ReducedPattern(assembly.n_dofs, [grp.dofmap for grp in assembly.groups]
                              + ([] if forces is None else forces.dofmaps()), T)
     z = pattern.restrict(q0)
