@@ -5,7 +5,7 @@ prescribed rheonomic coordinates (q_i = f(t), e.g. a driven hub slope) are
 eliminated; z are the independent coordinates.  :meth:`Elimination.build` gives
 the static ``(T, g, free)`` (prescribed coordinates at t = 0), :meth:`Elimination.selection`
 the same with ``T`` as a :class:`Selection` (no scipy: the static solver's numbering needs
-no more, and ``ancf run`` of a static scene then loads no scipy);
+no more, and ``ancf run`` of a static scene then loads no scipy.sparse);
 :meth:`Elimination.rheonomic` gives ``T`` with the time functions ``g(t)``,
 ``g'(t)``, ``g''(t)`` for the equations of motion.  The same constraint set can
 be handed to the Lagrange-multiplier form (``ancf.core.multipliers``) as
