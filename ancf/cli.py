@@ -306,6 +306,16 @@ def main(argv=None) -> int:
     return code
 
 
+def _ready_numba() -> None:
+    """Numba readies its compiler on the first kernel call of a process, a cache load too:
+    it imports its implementations (and, for its BLAS, scipy.linalg) and fills its typing
+    tables, 0.2 s CPU of objects that live as long as the process.  Done here, while the
+    collector is held, they are frozen with the modules instead of walked by its passes."""
+    if "numba" in sys.modules:
+        from numba.core.registry import cpu_target
+        cpu_target.target_context.refresh()
+
+
 def _dispatch(args) -> int:
     try:
         if args.cmd == "run":  # this scene's modules only: no sympy, pandas, dask or matplotlib
@@ -314,6 +324,7 @@ def _dispatch(args) -> int:
                 raise InputError(f"run: unknown name {args.name!r}; allowed: {', '.join(MODULES)}")
             sc = scene(args.name)
             if getattr(args, "hold_gc", False):
+                _ready_numba()
                 gc.freeze()
                 gc.enable()
             return _run({args.name: sc}, "run", args)

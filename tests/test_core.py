@@ -17,6 +17,7 @@ import pytest
 import scipy.linalg as sla
 
 from ancf.core.constraints import Elimination
+from ancf.core.forces import Forces, Gravity
 from ancf.core.pattern import ReducedPattern
 from ancf.scenes import SCENES
 from ancf.scenes import beam_static as bs
@@ -24,6 +25,7 @@ from ancf.scenes import pendulum, spinning_beam
 from ancf.scenes import beam_dynamic as bd
 from ancf.solvers import banded
 from ancf.solvers.generalized_alpha import AlphaOptions, integrate_generalized_alpha
+from ancf.solvers.static import NewtonOptions, solve_static, stability_at
 
 
 def _band_of(A, kl):
@@ -94,6 +96,39 @@ def test_pattern_scatter_equals_sparse_product(tie_loop):
     np.testing.assert_allclose(pat.as_csr(K).toarray(), Kref, rtol=1e-12, atol=1e-3)
     if tie_loop:  # renumbering kept the band narrow although the tie couples node 12 and 24
         assert pat.kl < 0.5 * pat.n
+
+
+@pytest.mark.parametrize("tie_loop", [False, True])
+def test_selection_is_the_sparse_elimination(tie_loop):
+    """Elimination.selection() (no scipy) is build()'s T: the same matrix, the same g and
+    free list, and the same reduced pattern from either."""
+    p = SCENES["cantilever"].resolve({"n_elements": 24})
+    _, _, asm, elim = _cantilever_model(p, tie_loop)
+    (S, gs, fs), (T, g, free) = elim.selection(), elim.build()
+    assert S.shape == T.shape and (S.tocsr() != T).nnz == 0
+    assert gs.tolist() == g.tolist() and fs.tolist() == free.tolist()
+    a, b = (ReducedPattern(asm.n_dofs, [asm.groups[0].dofmap], X) for X in (S, T))
+    assert (a.n, a.kl, a.band) == (b.n, b.kl, b.band)
+    for x, y in zip((a.order, a.qsel, a.zsel, *a.groups[0]), (b.order, b.qsel, b.zsel, *b.groups[0])):
+        assert x.tolist() == y.tolist()
+
+
+@pytest.mark.parametrize("tie_loop", [False, True])
+def test_solve_keeps_the_tangent_it_converged_on(tie_loop):
+    """A compiled band solve hands its last tangent on (StaticResult.tangent): the very
+    numbers the pattern assembles at the solution, so the stability check skips that
+    assembly; with force terms (the Python iterations) there is none to hand on."""
+    p = SCENES["cantilever"].resolve({"n_elements": 24})
+    mesh, q0, asm, elim = _cantilever_model(p, tie_loop)
+    Qk = np.zeros(mesh.n_dofs)
+    Qk[mesh.dof(mesh.n_nodes - 1, "r", 1)] = p["F"]
+    res = solve_static(asm, elim, Qk, q0, NewtonOptions(n_steps=10))
+    assert res.converged and res.pattern.compiled(asm) is not None
+    np.testing.assert_array_equal(res.tangent, res.pattern.assemble(asm, res.q)[1])
+    assert stability_at(asm, res.pattern, res.q, tangent=res.tangent) == stability_at(
+        asm, res.pattern, res.q)
+    forces = Forces(asm.n_dofs, [Gravity(asm)])  # zero: a static model has no mass
+    assert solve_static(asm, elim, Qk, q0, NewtonOptions(n_steps=10), forces=forces).tangent is None
 
 
 @pytest.mark.parametrize("overrides", [
@@ -184,8 +219,6 @@ def test_gravity_in_statics_matches_timoshenko_uniform_load():
     """A force term (gravity) in the static solver: a cantilever under its own weight
     against the closed-form Timoshenko tip deflection (small load: nonlinearity ~1e-7)."""
     from analytic.timoshenko_cantilever import tip_deflection
-    from ancf.core.forces import Forces, Gravity
-    from ancf.solvers.static import solve_static
 
     p = SCENES["cantilever"].resolve({"n_elements": 64, "nu": 0.0})
     p["rho"] = 7850.0

@@ -42,6 +42,17 @@ def test_help_loads_no_numerics(argv):
     assert _loaded_after(argv, ("numba", "numpy", "scipy", "ancf.scenes")) == []
 
 
+def test_static_run_loads_no_sparse_matrices():
+    """``ancf run cantilever`` numbers its band system from the elimination's selection
+    (:class:`ancf.core.constraints.Selection`): scipy.sparse is never loaded (numba loads
+    scipy.linalg itself, for its BLAS, on its first kernel), nor threadpoolctl (the BLAS
+    pool is pinned by the environment before numpy loads)."""
+    loaded = _loaded_after(["run", "cantilever", "--json"], ("scipy.sparse", "pandas",
+                                                             "matplotlib", "sympy", "dask",
+                                                             "threadpoolctl"))
+    assert loaded == []
+
+
 def test_run_loads_its_scene_only():
     """``ancf run cantilever`` imports the cantilever's modules: no other scene, no belt
     element or model, no analytic reference, and none of scipy's modules that load

@@ -1,8 +1,8 @@
-"""Assembly of element groups into global energy, forces, tangent and mass."""
+"""Assembly of element groups into global energy, forces, tangent and mass (the sparse
+matrices load scipy on first use: a solve on a reduced pattern needs none)."""
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sp
 
 
 class ElementGroup:
@@ -44,6 +44,7 @@ class Assembly:
             ge, Ke = g.element.gradient(q[g.dofmap], tangent=True)
             np.add.at(out, g.dofmap, ge)
             rows.append(g.rows), cols.append(g.cols), vals.append(Ke.ravel())
+        import scipy.sparse as sp
         K = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
                           shape=(self.n_dofs, self.n_dofs))
         return out, K
@@ -53,5 +54,6 @@ class Assembly:
         rows, cols, vals = [], [], []
         for g in self.groups:
             rows.append(g.rows), cols.append(g.cols), vals.append(g.element.mass().ravel())
+        import scipy.sparse as sp
         return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
                              shape=(self.n_dofs, self.n_dofs))

@@ -3,7 +3,9 @@
 Fixed coordinates (clamp, pin, roller), ties (q_i = q_j, e.g. a closed loop) and
 prescribed rheonomic coordinates (q_i = f(t), e.g. a driven hub slope) are
 eliminated; z are the independent coordinates.  :meth:`Elimination.build` gives
-the static ``(T, g, free)`` (prescribed coordinates at t = 0);
+the static ``(T, g, free)`` (prescribed coordinates at t = 0), :meth:`Elimination.selection`
+the same with ``T`` as a :class:`Selection` (no scipy: the static solver's numbering needs
+no more, and ``ancf run`` of a static scene then loads no scipy.sparse);
 :meth:`Elimination.rheonomic` gives ``T`` with the time functions ``g(t)``,
 ``g'(t)``, ``g''(t)`` for the equations of motion.  The same constraint set can
 be handed to the Lagrange-multiplier form (``ancf.core.multipliers``) as
@@ -12,13 +14,28 @@ be handed to the Lagrange-multiplier form (``ancf.core.multipliers``) as
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable
+from typing import TYPE_CHECKING, Callable, NamedTuple
 
 import numpy as np
-import scipy.sparse as sp
+
+if TYPE_CHECKING:
+    import scipy.sparse as sp
 
 #: motion(t) -> (value, velocity, acceleration), each an array of len(dofs)
 Motion = Callable[[float], tuple]
+
+
+class Selection(NamedTuple):
+    """The 0/1 selection matrix ``T`` (shape (n_dofs, n_free)) of an elimination as the
+    column of each global coordinate (-1: none, a fixed or prescribed coordinate)."""
+
+    column: np.ndarray
+    shape: tuple
+
+    def tocsr(self) -> "sp.csr_matrix":
+        import scipy.sparse as sp
+        rows = np.flatnonzero(self.column >= 0)
+        return sp.csr_matrix((np.ones(rows.size), (rows, self.column[rows])), shape=self.shape)
 
 
 class Elimination:
@@ -60,6 +77,11 @@ class Elimination:
     def build(self):
         """(T, g, free): q = T @ z + g with T sparse (n_dofs, n_free); prescribed
         coordinates take their value at t = 0."""
+        T, g, free = self.selection()
+        return T.tocsr(), g, free
+
+    def selection(self):
+        """(T, g, free) of :meth:`build` with T as a :class:`Selection`."""
         T, g0, free, follow = self._structure()
         g = g0.copy()
         for dofs, motion in self.motions:
@@ -69,12 +91,13 @@ class Elimination:
         return T, g, free
 
     def _structure(self):
-        """T, constant part of g, free list, and {slave: prescribed master}."""
+        """T (a :class:`Selection`), constant part of g, free list, and {slave: prescribed
+        master}."""
         prescribed = set(self._prescribed())
         dependent = set(self.fixed) | set(self.ties) | prescribed
         free = np.array([i for i in range(self.n_dofs) if i not in dependent], dtype=int)
-        col = {d: k for k, d in enumerate(free)}
-        rows, cols = list(free), list(range(free.size))
+        column = np.full(self.n_dofs, -1, dtype=np.int64)
+        column[free] = np.arange(free.size)
         follow = {}
         for s, m in self.ties.items():
             m = self._master(m)
@@ -84,8 +107,8 @@ class Elimination:
             if m in prescribed:
                 follow[s] = m
                 continue
-            rows.append(s), cols.append(col[m])
-        T = sp.csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(self.n_dofs, free.size))
+            column[s] = column[m]
+        T = Selection(column, (self.n_dofs, free.size))
         g = np.zeros(self.n_dofs)
         for d, v in self.fixed.items():
             g[d] = v
@@ -94,7 +117,7 @@ class Elimination:
     def rheonomic(self) -> "Rheonomic":
         """The time-dependent elimination q = T z + g(t) (see :class:`Rheonomic`)."""
         T, g0, _, follow = self._structure()
-        return Rheonomic(T, g0, list(self.motions), follow)
+        return Rheonomic(T.tocsr(), g0, list(self.motions), follow)
 
     def rows(self):
         """The same constraints as rows ``B q = c(t)``: (B sparse (m, n_dofs), c) with
@@ -116,6 +139,7 @@ class Elimination:
             for d in dofs:
                 r.append(k), cidx.append(int(d)), val.append(1.0)
                 k += 1
+        import scipy.sparse as sp
         B = sp.csr_matrix((val, (r, cidx)), shape=(k, self.n_dofs))
         c_static = np.zeros(k)
         c_static[:len(fixed)] = [self.fixed[d] for d in fixed]

@@ -9,14 +9,20 @@ closed loop), picks the storage from the pattern (band rows of width 3 kl + 1,
 see :mod:`ancf.solvers.banded`, or CSR) and keeps, per element group, the target
 index of every element vector and matrix entry (-1: eliminated).  The scatter then
 writes straight into the solver's storage: no COO, no CSR rebuild, no ``T^T K T``.
+scipy loads only where a CSR matrix is made: ``T`` given as a
+:class:`~ancf.core.constraints.Selection` and band storage need none.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import scipy.sparse as sp
-from numba import njit
 
 from ancf.common.leaf import leaf
+from ancf.core.constraints import Selection
+
+if TYPE_CHECKING:
+    import scipy.sparse as sp
 
 
 #: band storage is used while it holds at most this many times the nonzeros
@@ -55,6 +61,9 @@ def assemble_group(group, z, gq, want_K, grad, K):
 
 def _selection_columns(T, n_dofs: int) -> np.ndarray:
     """Column of each global coordinate in T (a 0/1 selection), -1 where none."""
+    if isinstance(T, Selection):
+        return T.column
+    import scipy.sparse as sp
     T = sp.csr_matrix(T)
     counts = np.diff(T.indptr)
     if counts.max(initial=0) > 1 or not np.all(T.data == 1.0):
@@ -98,6 +107,7 @@ class ReducedPattern:
         natural = np.arange(self.n)
         if self.n == 0 or _bandwidth(r, c, natural) * 3 < 64:
             return natural
+        import scipy.sparse as sp
         from scipy.sparse.csgraph import reverse_cuthill_mckee  # loads scipy.linalg: ~0.1 s
         g = sp.csr_matrix((np.ones(r.size), (r, c)), shape=(self.n, self.n))
         perm = reverse_cuthill_mckee(g, symmetric_mode=True)
@@ -108,6 +118,7 @@ class ReducedPattern:
     def _csr_pattern(self, ro, co):
         self._keys = np.unique(ro * self.n + co)  # row-major order = CSR data order
         rows, cols = self._keys // self.n, self._keys % self.n
+        import scipy.sparse as sp
         return sp.csr_matrix((np.ones(self._keys.size), (rows, cols)), shape=(self.n, self.n))
 
     def _targets(self, zc):
@@ -140,6 +151,7 @@ class ReducedPattern:
 
     def as_csr(self, data) -> sp.csr_matrix:
         """The stored matrix as CSR in the reduced (possibly reordered) numbering."""
+        import scipy.sparse as sp
         if not self.band:
             A = self._csr
             return sp.csr_matrix((data, A.indices, A.indptr), shape=A.shape)
@@ -177,6 +189,7 @@ class ReducedPattern:
     def add_global(self, mat, A, scale=1.0) -> None:
         """mat += scale T^T A T for a global sparse matrix A whose couplings lie in the
         pattern (declared through a force term's ``dofmap``)."""
+        import scipy.sparse as sp
         A = sp.coo_matrix(A)
         r, c = self.z_of[A.row], self.z_of[A.col]
         ok = (r >= 0) & (c >= 0)

@@ -96,7 +96,7 @@ def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn,
     results.update(results_fn(res.q) if converged else dict.fromkeys(results_fn(q0)))
     if converged:
         neg, zero, lowest = ((None, None, None) if p["stability_check"] == "off"
-                             else stability_at(assembly, res.pattern, res.q, forces))
+                             else stability_at(assembly, res.pattern, res.q, forces, res.tangent))
         results["negative_tangent_eigenvalues"] = neg
         results["zero_tangent_eigenvalues"] = zero
         results["lowest_tangent_eigenvalue_rel"] = lowest

@@ -31,6 +31,8 @@ class StaticResult:
     tangent_evaluations: int = 0
     factorizations: int = 0
     pattern: object = None  # the ReducedPattern the solve used
+    tangent: object = None  # the reduced tangent at q in the pattern's storage, where the
+                            # last iteration assembled it without force terms, else None
 
 
 @dataclass(frozen=True)
@@ -61,8 +63,9 @@ def _roundoff_floor(k_inf: float, z) -> float:
 def _newton_band(z, g, group, kl, lam, Qr, tol, xtol, max_iter, hist):
     """The iterations of :meth:`_Newton.run` in one compiled call, for a planar
     Green-strain group on band storage without force terms (tol = rtol |Qk|).
-    Returns (z, status, iterations, |r|, factorisations); status 0 converged, 1 residual
-    not finite, 2 singular tangent, 3 out of iterations; |r| per iteration in hist."""
+    Returns (z, status, iterations, |r|, factorisations, K); status 0 converged, 1 residual
+    not finite, 2 singular tangent, 3 out of iterations; |r| per iteration in hist; K the
+    tangent at the converged z (band storage), factored in place otherwise."""
     n = z.size
     grad, K = np.zeros(n), np.zeros((n, 3 * kl + 1))
     piv = np.empty(n, dtype=np.int64)
@@ -73,7 +76,7 @@ def _newton_band(z, g, group, kl, lam, Qr, tol, xtol, max_iter, hist):
         rn = np.sqrt(np.dot(r, r))
         hist[it - 1] = rn
         if not np.isfinite(rn):
-            return z, 1, it, rn, facts
+            return z, 1, it, rn, facts, K
         done = rn <= tol or (small and rn <= 1e3 * tol)
         if not done and it > 1 and rn > 0.25 * hist[it - 2]:  # stalled: at the round-off floor?
             k_inf = 0.0
@@ -82,16 +85,16 @@ def _newton_band(z, g, group, kl, lam, Qr, tol, xtol, max_iter, hist):
             zmax = np.max(np.abs(z)) if n else 0.0
             done = rn <= 10.0 * 2.220446049250313e-16 * (1.0 + zmax) * k_inf
         if done:
-            return z, 0, it, rn, facts
+            return z, 0, it, rn, facts, K
         facts += 1
         if banded.lu(K, kl, piv, True) != 0:
-            return z, 2, it, rn, facts
+            return z, 2, it, rn, facts, K
         banded.solve(K, kl, piv, r)
         if not np.all(np.isfinite(r)):
-            return z, 2, it, rn, facts
+            return z, 2, it, rn, facts, K
         z = z + r
         small = np.sqrt(np.dot(r, r)) <= xtol * (1.0 + np.sqrt(np.dot(z, z)))
-    return z, 3, max_iter, rn, facts
+    return z, 3, max_iter, rn, facts, K
 
 
 @njit(cache=True)
@@ -110,6 +113,7 @@ class _Newton:
         self.scale = max(np.linalg.norm(Qk_r + self._force(q0, 1.0, None)), 1.0)
         self.tangents = self.factorizations = 0
         self.compiled = pattern.compiled(assembly)
+        self.tangent = None  # the tangent at the last converged z (compiled iterations)
 
     def _assemble(self, z):
         """(T^T dU/dq, T^T K T in the pattern's storage) at z: one compiled call where
@@ -162,9 +166,10 @@ class _Newton:
     def _run_compiled(self, z, lam, history):
         opt = self.opt
         hist = np.zeros(opt.max_iter)
-        z, status, its, rn, facts = _newton_band(z, self.g, self.compiled, self.pattern.kl, lam,
-                                                 self.Qk_r, opt.rtol * self.scale, opt.xtol,
-                                                 opt.max_iter, hist)
+        z, status, its, rn, facts, K = _newton_band(z, self.g, self.compiled, self.pattern.kl,
+                                                    lam, self.Qk_r, opt.rtol * self.scale,
+                                                    opt.xtol, opt.max_iter, hist)
+        self.tangent = K if status == 0 else None
         history.extend(float(h) for h in hist[:its])
         self.tangents += its
         self.factorizations += facts
@@ -179,7 +184,7 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
     """Equilibrium under the external load vector ``Qk`` (global, N) and the force terms
     ``forces`` (an ``ancf.core.forces.Forces``, or None), starting at ``q0``."""
     opt = options or NewtonOptions()
-    T, g, _ = elimination.build()
+    T, g, _ = elimination.selection()
     pattern = ReducedPattern(assembly.n_dofs, [grp.dofmap for grp in assembly.groups]
                              + ([] if forces is None else forces.dofmaps()), T)
     z = pattern.restrict(q0)
@@ -187,7 +192,8 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
     lam, step = 0.0, 1.0 / opt.n_steps
     total, steps, histories, why = 0, 0, [], ""
     result = lambda ok, msg, lf: StaticResult(pattern.expand(z, g), ok, msg, lf, total, steps,  # noqa: E731
-                                              histories, newton.tangents, newton.factorizations, pattern)
+                                              histories, newton.tangents, newton.factorizations, pattern,
+                                              newton.tangent if ok else None)
     while lam < 1.0 - 1e-14:
         step = min(step, 1.0 - lam)
         hist = []
@@ -205,12 +211,14 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
     return result(True, "converged", 1.0)
 
 
-def stability_at(assembly, pattern, q, forces=None):
+def stability_at(assembly, pattern, q, forces=None, tangent=None):
     """(negative, zero, lowest/largest) eigenvalues of the reduced tangent at q, by inertia.
     With force terms (``forces``, at full load) the tangent is K - dQ/dq, of which the
     symmetric part is taken (a moment about a fixed axis has a non-symmetric load
-    stiffness in general; the inertia needs a symmetric matrix)."""
-    _, K = pattern.assemble(assembly, q)
+    stiffness in general; the inertia needs a symmetric matrix).  ``tangent``: K at q in
+    the pattern's storage if at hand (a solve's ``StaticResult.tangent``: the same numbers,
+    no assembly), else assembled."""
+    K = pattern.assemble(assembly, q)[1] if tangent is None else tangent
     Kq = None if forces is None else forces.jacobians(q, np.zeros_like(q), 0.0)[0]
     if Kq is not None:
         pattern.add_global(K, 0.5 * (Kq + Kq.T), -1.0)
