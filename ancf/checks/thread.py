@@ -141,10 +141,11 @@ def coordinate(x, y) -> np.ndarray:
     d + pi R + d - x, the driver's wrap (x < 0) 2 d + pi R + R (3 pi/2 - angle)."""
     x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
     d, R = DISTANCE, RADIUS
+    driver = np.mod(np.arctan2(y, x), 2 * math.pi)
     return np.select([x > d, x < 0, y > 0],
                      [d + R * (math.pi / 2 - np.arctan2(y, x - d)),
-                      2 * d + math.pi * R + R * (1.5 * math.pi - np.mod(np.arctan2(y, x), 2 * math.pi)),
-                      x], 2 * d + math.pi * R - x)
+                      2 * d + math.pi * R + R * (1.5 * math.pi - driver), x],
+                     2 * d + math.pi * R - x)
 
 
 def _longest_run(ok: np.ndarray) -> slice:
