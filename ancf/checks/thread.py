@@ -39,6 +39,18 @@ DISTANCE = 0.1 * math.pi     # m, centre distance d
 WIDTH = 0.08                 # m, belt width b: contact pressure (N/m^2) x b = N/m
 WINDOW = (2.0, 2.45)         # s, the steady window of the issue's omega and torque means
 LOAD, DAMPING = 25.0, 2.0    # N m and N m s on the driven pulley after t = 1.5 s
+OMEGA_DRIVER = 12.0          # rad/s, the driver's prescribed final speed
+RHO_A = 1036.0 * 0.08 * 0.01  # kg/m, the belt's mass per laid length
+PATH = 2 * DISTANCE + 2 * math.pi * RADIUS   # m, P
+# THREAD's variants of the base case (README): every case of its src/solution/ that reaches
+# 2.45 s, the base first; FINEST is the one its plot script labels "reference solution".
+FINEST = "tt245-hh10-nn8-ns4-cs10-fs10-ib1-df5"
+VARIANTS = (CASE, "tt245-hh10-nn4-ns4-cs10-fs10-ib1-df5", "tt245-hh20-nn4-ns4-cs10-fs10-ib1-df5",
+            "tt245-hh100-nn4-ns4-cs10-fs10-ib1-df5", "tt245-hh50-nn1-ns4-cs10-fs10-ib1-df5",
+            "tt245-hh50-nn2-ns4-cs10-fs10-ib1-df5", FINEST,
+            "tt245-hh50-nn4-ns8-cs10-fs10-ib1-df5", "tt245-hh50-nn4-ns4-cs1-fs10-ib1-df5",
+            "tt245-hh50-nn4-ns4-cs10-fs1-ib1-df5", "tt245-hh50-nn4-ns4-cs10-fs10-ib1-df10")
+STICK_SLOPE = 0.25           # a stick arc: |dN/ds| < STICK_SLOPE x Euler's slip slope mu |N| / R
 TOLERANCES = {"tight": 1.5, "slack": 1.5, "omega": 0.3, "torque": 1.0, "axial_rms": 3.0,
               "balance": 1.0, "steady": 2.0}   # % (issue 21's acceptance)
 
@@ -61,11 +73,15 @@ class Stored:
     @property
     def length(self) -> float:
         """P, m."""
-        return 2 * DISTANCE + 2 * math.pi * RADIUS
+        return PATH
 
 
 def _table(name: str, case: str, data: Path) -> np.ndarray:
-    return np.loadtxt(data / f"{name}-{case}-.txt", delimiter=",", comments="#", ndmin=2)
+    """The stored file ``name-case-.txt`` (or its gzip copy ``.txt.gz``) as an array."""
+    path = data / f"{name}-{case}-.txt"
+    if not path.exists():
+        path = path.with_name(path.name + ".gz")
+    return np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
 
 
 def read(case: str = CASE, data: Path = DATA) -> Stored:
@@ -106,6 +122,104 @@ def scalars(st: Stored) -> dict:
     return {"tight_N": tight, "slack_N": slack, "omega_mean": omega,
             "driver_torque_Nm": window_mean(st.t, st.driver_torque),
             "belt_moment_Nm": (tight - slack) * RADIUS, "resisting_Nm": LOAD + DAMPING * omega}
+
+
+def case_parameters(case: str) -> dict:
+    """The fields of a THREAD case name as its ``FileClassifier2Data`` decodes them: end
+    time tt / 100 s, step hh x 1e-6 s, nn x 60 elements, ns contact segments per element,
+    contact stiffness cs x 1e7 x 40 N/m^3 (``k_p`` per unit length: x b, N/m^2), friction
+    mu = df / 10.  (Its fs field is not decoded: the files' headers give another friction
+    stiffness than the name's.)"""
+    f = {x[:2]: int(x[2:]) for x in case.split("-")}
+    return {"t_end": f["tt"] / 100, "step": f["hh"] * 1e-6, "elements": 60 * f["nn"],
+            "segments": f["ns"], "k_p": f["cs"] * 1e7 * 40 * WIDTH, "mu": f["df"] / 10}
+
+
+def coordinate(x, y) -> np.ndarray:
+    """THREAD's s (m) of belt points (x, y) (m) on its path: the upper span s = x, the
+    driven pulley's wrap (x > d) d + R (pi/2 - angle about its centre), the lower span
+    d + pi R + d - x, the driver's wrap (x < 0) 2 d + pi R + R (3 pi/2 - angle)."""
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    d, R = DISTANCE, RADIUS
+    driver = np.mod(np.arctan2(y, x), 2 * math.pi)
+    return np.select([x > d, x < 0, y > 0],
+                     [d + R * (math.pi / 2 - np.arctan2(y, x - d)),
+                      2 * d + math.pi * R + R * (1.5 * math.pi - driver), x],
+                     2 * d + math.pi * R - x)
+
+
+def _longest_run(ok: np.ndarray) -> slice:
+    edges = np.flatnonzero(np.diff(np.concatenate(([0], ok.astype(int), [0]))))
+    if edges.size == 0:
+        raise ValueError("no stick arc on the wrap")
+    starts, ends = edges[::2], edges[1::2]
+    k = int(np.argmax(ends - starts))
+    return slice(int(starts[k]), int(ends[k]))
+
+
+def stick_tension(s, N, arc: tuple, mu: float) -> float:
+    """Mean axial force (N) over the stick arc of the wrap ``arc`` = (a, b) (m of THREAD's
+    coordinate s): the longest run of points with |dN/ds| < STICK_SLOPE mu |N| / R (a slip
+    arc's slope is Euler's mu N / R, a stick arc's about 0)."""
+    s, N = np.mod(np.asarray(s, dtype=float), PATH), np.asarray(N, dtype=float)
+    sel = (s > arc[0]) & (s < arc[1])
+    order = np.argsort(s[sel])
+    ss, NN = s[sel][order], N[sel][order]
+    ok = np.abs(np.gradient(NN, ss)) < STICK_SLOPE * mu * np.abs(NN) / RADIUS
+    return float(np.mean(NN[_longest_run(ok)]))
+
+
+def wrap_tensions(s, N, mu: float) -> tuple[float, float]:
+    """(driver, driven): :func:`stick_tension` on the driver's wrap (2 d + pi R < s < P)
+    and the driven pulley's (d < s < d + pi R), N."""
+    return (stick_tension(s, N, (2 * DISTANCE + math.pi * RADIUS, PATH), mu),
+            stick_tension(s, N, (DISTANCE, DISTANCE + math.pi * RADIUS), mu))
+
+
+def creep_speed(w1: float, tight: float, slack: float, EA: float) -> float:
+    """The driven speed (rad/s) of belt creep between equal pulleys, the belt sticking where
+    it runs onto each (at its span's stretch 1 + T / EA, EA per laid length):
+    w1 (1 + T_s / EA) / (1 + T_t / EA)."""
+    return w1 * (1 + slack / EA) / (1 + tight / EA)
+
+
+def rolling_speed(w1: float, t_driver: float, t_driven: float, EA: float, k_p: float) -> float:
+    """The driven speed (rad/s) from the stick arcs' tensions (N): each pulley turns with
+    the belt where it sticks, the belt's speed there set by its stretch 1 + T / EA and its
+    rolling radius R - delta, delta = (T - rho A v^2) / (R k_p) its penetration (v = w1 R):
+    w1 (1 + T_2 / EA) (R - delta_1) / ((1 + T_1 / EA) (R - delta_2))."""
+    cf = RHO_A * (w1 * RADIUS) ** 2
+    r1, r2 = (RADIUS - (T - cf) / (RADIUS * k_p) for T in (t_driver, t_driven))
+    return w1 * (1 + t_driven / EA) * r1 / ((1 + t_driver / EA) * r2)
+
+
+@dataclass(frozen=True)
+class Variant:
+    """One stored THREAD case reduced to its steady figures (N, rad/s)."""
+
+    case: str
+    params: dict
+    omega_mean: float
+    tight: float
+    slack: float
+    stick_driver: float
+    stick_driven: float
+
+    def speeds(self, EA: float) -> tuple[float, float]:
+        """(:func:`creep_speed` of its span forces, :func:`rolling_speed` of its stick
+        arcs), rad/s, with the element's EA per laid length (N)."""
+        return (creep_speed(OMEGA_DRIVER, self.tight, self.slack, EA),
+                rolling_speed(OMEGA_DRIVER, self.stick_driver, self.stick_driven, EA,
+                              self.params["k_p"]))
+
+
+def read_variant(case: str, data: Path = DATA) -> Variant:
+    """A stored case's driven omega mean over WINDOW, span forces and stick-arc tensions."""
+    f, w = _table("beamForce", case, data), _table("wheel1angVel", case, data)
+    p = case_parameters(case)
+    tight, slack = span_forces(f[:, 0], f[:, 1], PATH)
+    driver, driven = wrap_tensions(f[:, 0], f[:, 1], p["mu"])
+    return Variant(case, p, window_mean(w[:, 0], w[:, 3]), tight, slack, driver, driven)
 
 
 def aligned(results: dict, L0: float, length: float) -> np.ndarray:
