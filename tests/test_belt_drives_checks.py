@@ -3,6 +3,7 @@ itself (all pass, differences 0) and on perturbed copies (each fails)."""
 import pytest
 
 from ancf.belts.drive_file import load
+from ancf.belts.drive_steady import steady_reference
 from ancf.checks import belt_drives as bd
 from ancf.common.paths import REPO
 
@@ -10,10 +11,10 @@ SERPENTINE = REPO / "examples" / "serpentine.toml"
 
 
 def _as_run(desc) -> dict:
-    ref = bd.steady_reference(desc)
+    ref = steady_reference(desc)
     return {"times": [0.0, desc.run["t_end"]],
             "pulleys": [{"name": p["name"], "omega_mean": p["omega"],
-                         "torque_Nm": [p["torque_Nm"]] * 2} for p in ref["pulleys"]],
+                         "torque_mean_Nm": p["torque_Nm"]} for p in ref["pulleys"]],
             "spans": [dict(s, tension_mean_N=s["tension_N"]) for s in ref["spans"]],
             "arms": [{"name": p["name"], "angle_mean_rad": p["arm_angle_rad"]}
                      for p in ref["pulleys"] if p["arm_angle_rad"] is not None]}
@@ -38,5 +39,5 @@ def test_perturbed_copy_fails(row):
     elif row == 2:
         run["arms"][0]["angle_mean_rad"] += 0.01
     else:
-        run["pulleys"][3]["torque_Nm"] = [0.02 * abs(run["pulleys"][4]["torque_Nm"][0])] * 2
+        run["pulleys"][3]["torque_mean_Nm"] = 0.02 * abs(run["pulleys"][4]["torque_mean_Nm"])
     assert not bd.serpentine_checks(run, desc)[row].passed

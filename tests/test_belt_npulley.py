@@ -17,7 +17,7 @@ from ancf.belts.forces import evaluate
 from ancf.cli import main
 from ancf.common.paths import REPO
 from ancf.scenes import SCENES
-from ancf.belts.system import small_lu, small_solve
+from ancf.belts.system import small_lu, small_solve, window_weights
 from analytic.belt_steady import path_length, solve
 
 EXAMPLES = REPO / "examples"
@@ -196,20 +196,19 @@ def test_tensioner_jacobian_matches_central_differences(by, rtol):
 def test_serpentine_settles_to_the_steady_reference():
     """The serpentine drive (a tensioner arm on the slack span, an idler on the belt's back)
     with its belt's strain-rate damping (dEA = 0.5 N s), 60 elements, k_p = 1e8 N/m^2,
-    dt = 1e-4 s: pulley speeds within 0.5 % (0.24 % seen, the tensioner), span tensions
-    within 2 % (1.05-1.38 % seen, all below: the penalty's penetration, 0.1 mm, shortens
-    the path), the arm within 0.5 degree of its equilibrium (0.012 degree seen), the
-    driver's torque within 1 % (0.23 % seen), and the moments on idler and tensioner
-    within 2 % of the driven pulleys' (0.16 % and 1.6 % seen; their window means are of
-    a 0.1 N m rms fluctuation, mostly at twice the element-passing frequency (334 Hz),
-    sampled every 5 ms: with 0.5 ms samples 1.0 % and 0.06 %, without the damping 0.6 %
-    and 0.05 %)."""
+    dt = 1e-4 s; speeds and torques averaged over every step of the steady window: pulley
+    speeds within 0.5 % (0.15 % seen, the alternator), span tensions within 2 %
+    (1.05-1.38 % seen, all below: the penalty's penetration, 0.1 mm, shortens the path),
+    the arm within 0.5 degree of its equilibrium (0.012 degree seen), the driver's torque
+    within 1 % (0.38 % seen), and the moments on idler and tensioner within 1 % of the
+    driven pulleys' (issue 21's acceptance; 0.08 % and 0.11 % seen; their 0.1 N m rms
+    fluctuation, mostly at twice the element-passing frequency, 334 Hz, aliased into
+    means of the 5 ms samples as 0.16 % and 1.6 %)."""
     path = EXAMPLES / "serpentine.toml"
     out = _run({"file": str(path)})
     assert out["converged"] and out["warnings"] == []
     r, ref = out["results"], _reference(load(path))
-    window = np.array(r["times"]) >= r["times"][-1] - load(path).run["steady_window"] - 1e-12
-    torques = [np.mean(np.array(p["torque_Nm"])[window]) for p in r["pulleys"]]
+    torques = [p["torque_mean_Nm"] for p in r["pulleys"]]
     for ours, theirs in zip(r["pulleys"], ref["pulleys"]):
         assert ours["name"] == theirs["name"]
         assert ours["omega_mean"] == pytest.approx(theirs["omega"], rel=5e-3)
@@ -221,4 +220,38 @@ def test_serpentine_settles_to_the_steady_reference():
     assert abs(arm["angle_mean_rad"] - ref["pulleys"][1]["arm_angle_rad"]) < np.radians(0.5)
     assert torques[0] == pytest.approx(ref["pulleys"][0]["torque_Nm"], rel=1e-2)
     driven = min(abs(torques[2]), abs(torques[4]))
-    assert abs(torques[1]) < 2e-2 * driven and abs(torques[3]) < 2e-2 * driven
+    assert abs(torques[1]) < 1e-2 * driven and abs(torques[3]) < 1e-2 * driven
+
+
+def test_window_weights_sum_to_the_window_on_any_grid():
+    """Each step's weight is its part after the window's start: on a grid of steps and on
+    the same grid with a step halved (a retried step), they sum to the window."""
+    ts = np.linspace(0.0, 1.0, 41)
+    halved = np.sort(np.append(ts, 0.5 * (ts[30] + ts[31])))
+    for start in (ts[30], 0.5 * (ts[30] + ts[31]), 0.3 * ts[30] + 0.7 * ts[31]):
+        for grid in (ts, halved):
+            w = window_weights(grid, start)
+            assert w.sum() == pytest.approx(grid[-1] - start, rel=1e-12)
+            assert np.all(w[grid <= start] == 0.0) and np.all(w >= 0.0)
+    assert np.all(window_weights(ts, np.inf) == 0.0)
+
+
+def test_window_means_are_the_means_over_every_step():
+    """``omega_mean`` and ``torque_mean_Nm`` are the march's means over every step of the
+    steady window: a run sampled at every step gives them as the plain means of its
+    samples after the window's start (equal steps; round-off apart)."""
+    path = EXAMPLES / "three_pulleys.toml"
+    dt, window = load(path).run["dt"], 0.03
+    out = _run({"file": str(path), "set": f"run.t_end=0.1; run.steady_window={window!r}; "
+                f"run.output_dt={dt!r}"})
+    assert out["converged"]
+    r = out["results"]
+    t = np.array(r["times"])
+    after = t > t[-1] - window + 0.5 * dt
+    assert after.sum() == round(window / dt)
+    for p in r["pulleys"]:
+        omega, torque = np.array(p["omega"]), np.array(p["torque_Nm"])
+        assert p["omega_mean"] == pytest.approx(omega[after].mean(), rel=1e-12,
+                                                abs=1e-12 * np.abs(omega).max())
+        assert p["torque_mean_Nm"] == pytest.approx(torque[after].mean(), rel=1e-9,
+                                                    abs=1e-9 * np.abs(torque).max())

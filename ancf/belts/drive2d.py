@@ -263,4 +263,5 @@ class BeltDrive(PulleyDrive):
         r = self.rig
         return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.strain_damping,
                        self.S0, self.w, r.centres, r.radii, self.prm, r.free, r.inertia,
-                       r.damping, self.weight, r.arms, self.z, self.h)
+                       r.damping, self.weight, r.arms, self.z, self.h,
+                       np.zeros((2, r.radii.size)))

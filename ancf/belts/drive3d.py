@@ -183,5 +183,5 @@ class Belt3DDrive(PulleyDrive):
         r = self.rig
         return Drive3D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
                        r.centres, r.radii, self.prm, r.free, r.inertia, r.damping,
-                       self.weight, r.arms, None, np.zeros(1), self.axes,
-                       SHIFT.copy())
+                       self.weight, r.arms, None, np.zeros(1),
+                       np.zeros((2, r.radii.size)), self.axes, SHIFT.copy())

@@ -7,7 +7,9 @@ The steps are fixed (at most ``dt``, samples on steps, see
 fails even with fresh factors is retried as two halves, down to
 ``dt / 2**max_halvings``; past that the run stops with ``converged=False`` and a
 message, keeping the samples it reached.  The initial accelerations are
-consistent (M a0 = -f(x0, v0)).
+consistent (M a0 = -f(x0, v0)).  Given a window's start, the march also averages the
+pulley speeds and the belt's moments on the pulleys over every step after it
+(:mod:`ancf.belts.system`), halved steps included.
 """
 from __future__ import annotations
 
@@ -17,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ancf.belts.forces import evaluate
-from ancf.belts.system import PAIRS, belt_system, steps
+from ancf.belts.system import PAIRS, belt_system, steps, window_weights
 from ancf.solvers import banded
 from ancf.solvers.alpha_march import BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE, march
 from ancf.solvers.generalized_alpha import AlphaOptions, step_times
@@ -42,9 +44,9 @@ class BeltOptions:
 class _March:
     """The arrays of one run of the compiled march."""
 
-    def __init__(self, drive, opt: BeltOptions, ts, nslots: int):
-        self.drive, self.opt = drive, opt
-        self.system = belt_system(drive, ts, nslots)
+    def __init__(self, drive, opt: BeltOptions, ts, nslots: int, mean_from: float = np.inf):
+        self.drive, self.opt, self.mean_from = drive, opt, mean_from
+        self.system = belt_system(drive, ts, nslots, mean_from)
         if self.system.drive.z is not None:  # a friction law's state: the belt at rest
             self.system.drive.z[:] = 0.0
         self.system.drive.h[0] = 0.0
@@ -55,7 +57,8 @@ class _March:
 
     def set_times(self, ts):
         self.ts = ts
-        self.system = self.system._replace(tabs=self.drive.laws(ts), steps=steps(ts))
+        self.system = self.system._replace(tabs=self.drive.laws(ts), steps=steps(ts),
+                                           window=window_weights(ts, self.mean_from))
 
     def initial_acceleration(self, x, v):
         s, n, k = self.system, self.drive.n, self.drive.k
@@ -94,9 +97,13 @@ def _halved(m: _March, st, ta, tb, depth, limit, s=-1, out=None) -> bool:
     return ok
 
 
-def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) -> DynamicResult:
+def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None,
+             mean_from: float = np.inf) -> DynamicResult:
     """Integrate the belt drive over the sample times t_out (s) from x0, v0 (system
-    vectors; default: the laid belt at rest).  ``progress(t)`` is called per chunk."""
+    vectors; default: the laid belt at rest).  ``progress(t)`` is called per chunk.
+    With ``mean_from`` (s) before the end, ``extra["step_means"]`` = (omega, T) (np,):
+    the pulley speeds (rad/s) and the belt's moments on them (N m) averaged over every
+    step after mean_from, each step's end state weighted by its part after mean_from."""
     t_out = np.asarray(t_out, dtype=float)
     ts = step_times(t_out, opt.dt)
     slot = np.full(ts.size, -1, dtype=np.int64)
@@ -104,7 +111,7 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
     n1 = drive.n + drive.k
     x = drive.state(drive.q0) if x0 is None else np.array(x0, dtype=float)
     v = np.zeros(n1) if v0 is None else np.array(v0, dtype=float)
-    m = _March(drive, opt, ts, t_out.size)
+    m = _March(drive, opt, ts, t_out.size, mean_from)
     a0 = m.initial_acceleration(x, v)
     st = (x, v, a0, a0.copy())
     X, V = np.zeros((t_out.size, n1)), np.zeros((t_out.size, n1))
@@ -134,6 +141,9 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None) ->
                         newton_iterations=int(c[3]), rejected_steps=rejected,
                         cpu_time_s=time.process_time() - t0)
     res.extra["contact_pairs"] = int(c[PAIRS])
+    total, omega, moment = m.system.sums
+    if total[0] > 0:
+        res.extra["step_means"] = (omega / total, moment / total)
     if m.system.zs.shape[0]:  # the friction state of the samples' steps (a law with a state)
         res.extra["friction_state"] = list(zip(m.system.zs[:reached], m.system.hs[:reached]))
     return res

@@ -62,6 +62,8 @@ class Drive2D(NamedTuple):
     z: np.ndarray        # (2, nel, ng, np) friction state per contact point, m: [0] at the
     #                      last converged step, [1] the trial (a law with a state; else None)
     h: np.ndarray        # (1,) the step the trial state is of, s (the march's)
+    last: np.ndarray     # (2, np) work: the pulley speeds (rad/s) and the belt's moments on
+    #                      them T_c,p (N m) at the last evaluation
 
 
 class Drive3D(NamedTuple):
@@ -82,6 +84,7 @@ class Drive3D(NamedTuple):
     arms: np.ndarray     # (0, 8): no tensioner arms in 3D
     z: None              # no friction law with a state in 3D
     h: np.ndarray        # (1,)
+    last: np.ndarray     # (2, np)
     axes: np.ndarray     # pulley axes (np, 3)
     shift: np.ndarray    # direction pulley 0 (the thesis's driver) is moved in (3,)
 
@@ -238,7 +241,8 @@ def pulley_speeds(v, laws, free, k):
 @njit(cache=True)
 def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row, corner):
     """The residual forces and the force part of the iteration matrix (module docstring);
-    returns the pairs the contact kernel evaluated."""
+    the pulley speeds and moments into ``drive.last``; returns the pairs the contact
+    kernel evaluated."""
     nel, nd = drive.vidx.shape
     dim = drive.centres.shape[1]
     E, V = np.empty((nel, nd // dim, dim)), np.empty((nel, nd // dim, dim))
@@ -249,6 +253,8 @@ def evaluate(x, v, laws, drive, want_J, bp, gp, fz, mat, col, row, corner):
     arm = _arm_arrays(nel, nd, drive.arms.shape[0], want_J)
     omegas = pulley_speeds(v, laws, drive.free, drive.inertia.size)
     pairs = drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm)
+    drive.last[0] = omegas
+    drive.last[1] = c[4]
     _combine(g, K, c, drive, bp, gp, want_J, laws, omegas, fz, mat, col, row, corner)
     _combine_arms(drive, x, v, arm, bp, gp, want_J, fz, col, row, corner)
     return pairs

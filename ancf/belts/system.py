@@ -28,6 +28,11 @@ Newton increments are damped by backtracking; converged when beta' |d_z|_inf <= 
 (1 + |z_n|_inf) and beta' |d_theta_j| <= tol (z_n: the step's start).  The blow-up
 test looks at the belt coordinates only.  Counter ``count[5]``: element-pulley pairs
 evaluated by the contact kernel (after its bounding test).
+
+Window means: every converged step adds its end state's pulley speeds and the belt's
+moments on the pulleys (the last residual's, at the accepted iterate) to ``sums``,
+weighted by the part of the step after the window's start (``window``, :func:`window_weights`):
+the means over every step of a steady window, whatever the output samples.
 """
 from __future__ import annotations
 
@@ -57,6 +62,10 @@ class BeltSystem(NamedTuple):
     zs: np.ndarray       # (nslots, ...) the friction state at the start of the step that
     #                      ended at each output slot (a law with a state; else (0, ...))
     hs: np.ndarray       # (nslots,) that step, s
+    window: np.ndarray   # (nts,) each step's weight in the window means, s (window_weights)
+    weight: np.ndarray   # (1,) the current step's, s
+    sums: np.ndarray     # (3, np) over the converged steps: sum of the weights (s), of the
+    #                      weights times the pulley speeds (rad) and times the moments (N m s)
     S: np.ndarray        # work: S_zz, then its band LU
     piv: np.ndarray      # work: its pivots
     U: np.ndarray        # work: (k, n) S_zz^-1 C_j
@@ -67,15 +76,17 @@ class BeltSystem(NamedTuple):
     spiv: np.ndarray     # work: (k,) its pivots
 
 
-def belt_system(drive, ts, nslots: int = 0) -> BeltSystem:
+def belt_system(drive, ts, nslots: int = 0, mean_from: float = np.inf) -> BeltSystem:
     """The system of a drive (:class:`~ancf.belts.drive2d.BeltDrive` or
     :class:`~ancf.belts.drive3d.Belt3DDrive`) over the step times ts (s), keeping the
-    friction state (a law with a state) at ``nslots`` output slots."""
+    friction state (a law with a state) at ``nslots`` output slots and the window means
+    from ``mean_from`` (s; inf: none)."""
     n, k = drive.n, drive.k
     kernel = drive.kernel()
     shape = (0, 0, 0, 0) if kernel.z is None else (nslots, *kernel.z.shape[1:])
     return BeltSystem(kernel, drive.Mb, drive.pattern.kl, drive.laws(ts), steps(ts),
-                      np.zeros(shape), np.zeros(shape[0]),
+                      np.zeros(shape), np.zeros(shape[0]), window_weights(ts, mean_from),
+                      np.zeros(1), np.zeros((3, kernel.radii.size)),
                       drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros((k, n)),
                       np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)), np.zeros((k, k)),
                       np.zeros(k, dtype=np.int64))
@@ -139,10 +150,20 @@ def steps(ts) -> np.ndarray:
     return np.diff(ts, prepend=ts[:1])
 
 
+def window_weights(ts, start: float) -> np.ndarray:
+    """The part (s) of the step ending at each step time ts[k] that lies after ``start``
+    (s), 0 at the first: the weights of a mean over (start, ts[-1]] by the steps' end
+    states, which sum to ts[-1] - start on any grid of steps."""
+    ts = np.asarray(ts, dtype=float)
+    return np.maximum(ts - np.maximum(np.concatenate([ts[:1], ts[:-1]]), start), 0.0)
+
+
 @implements(system_prepare, BeltSystem)
 def _prepare(system, k):
-    """The step (s) a friction law with a state steps its trial state over."""
+    """The step (s) a friction law with a state steps its trial state over, and the
+    step's weight in the window means."""
     system.drive.h[0] = system.steps[k]
+    system.weight[0] = system.window[k]
 
 
 @njit(cache=True)
@@ -161,12 +182,25 @@ def accept_state(prm, z, h, zs, hs, slot):
         z[0] = z[1]
 
 
+@njit(cache=True)
+def accumulate(last, weight, sums):
+    """The window means' sums (module docstring) of a converged step: ``last`` (2, np)
+    the pulley speeds and moments of its last residual, ``weight`` (1,) its weight (s)."""
+    w = weight[0]
+    if w > 0.0:
+        sums[0] += w
+        sums[1] += w * last[0]
+        sums[2] += w * last[1]
+
+
 @implements(system_accept, BeltSystem)
 def _accept(system, slot):
     """The friction state: the trial state of the step's last residual (the accepted
     iterate: the belt's Newton increments are damped, evaluated where they end) becomes
-    the state; the step's start kept in output slot ``slot``."""
+    the state; the step's start kept in output slot ``slot``.  The step's pulley speeds
+    and moments (of that residual) go into the window means' sums."""
     accept_state(system.drive.prm, system.drive.z, system.drive.h, system.zs, system.hs, slot)
+    accumulate(system.drive.last, system.weight, system.sums)
 
 
 @implements(system_residual, BeltSystem)

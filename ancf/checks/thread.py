@@ -28,8 +28,8 @@ from pathlib import Path
 import numpy as np
 
 from ancf.belts.drive_data import DriveDescription, element_modulus, load_law
+from ancf.belts.drive_steady import steady_reference
 from ancf.checks.belt2d import Check
-from ancf.checks.belt_drives import steady_reference
 from ancf.common.paths import REPO
 
 DATA = REPO / "tests" / "data" / "thread"

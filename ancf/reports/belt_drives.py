@@ -5,8 +5,7 @@ The steady reference of every example drive file, the THREAD benchmark
 (:mod:`ancf.checks.thread`: our curves over theirs, the acceptance figures) and the
 serpentine drive (``examples/serpentine.toml``) against its steady reference
 (:mod:`ancf.checks.belt_drives`).  The runs are the files' own cases; ``THREAD_SET`` and
-``SERPENTINE_SET`` are the ``--set`` overrides the chapter applies (today the serpentine
-needs ``belt.damping_axial=0``: the belt's strain-rate damping is not in the dynamics yet).
+``SERPENTINE_SET`` are the ``--set`` overrides the chapter applies (none today).
 The reduced configuration (``--quick``) skips both runs.  Timing: only the column marked
 "(timing)" changes from run to run.
 """
@@ -21,6 +20,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.belts.drive_file import load  # noqa: E402
+from ancf.belts.drive_steady import steady_reference  # noqa: E402
 from ancf.checks import belt_drives as bd  # noqa: E402
 from ancf.checks import thread as th  # noqa: E402
 from ancf.common.params import InputError  # noqa: E402
@@ -32,7 +32,7 @@ from ancf.study.extremes import QUICK_SKIPPED  # noqa: E402
 
 EXAMPLES = REPO / "examples"
 THREAD_FILE, THREAD_SET = EXAMPLES / "thread_benchmark.toml", ()
-SERPENTINE_FILE, SERPENTINE_SET = EXAMPLES / "serpentine.toml", ("belt.damping_axial=0",)
+SERPENTINE_FILE, SERPENTINE_SET = EXAMPLES / "serpentine.toml", ()
 THREAD_NAMES = ("THREAD tight span force", "THREAD slack span force", "THREAD driven ω mean",
                 "THREAD driver torque", "THREAD axial force along the belt, RMS",
                 "THREAD torque balance (T_t − T_s) R = load + damping",
@@ -61,11 +61,11 @@ def steady_tables() -> list:
              "`analytic/belt_steady.py` (Bechtel's extensible string with the centrifugal term, "
              "Coulomb friction with stick and creep arcs, the belt-length constraint closing the "
              "loop, a tensioner's arm in balance) on each file's layout, its prescribed speeds' and "
-             "load torques' final values and its belt (`ancf.checks.belt_drives.steady_reference`). "
+             "load torques' final values and its belt (`ancf.belts.drive_steady.steady_reference`). "
              "Torque: the belt's moment on the pulley, counter-clockwise positive.\n"]
     for path in sorted(EXAMPLES.glob("*.toml")):
         try:
-            ref = bd.steady_reference(load(path))
+            ref = steady_reference(load(path))
         except InputError as e:
             parts += [f"### {path.name}\n", f"No reference: `{e}`\n"]
             continue
@@ -95,7 +95,7 @@ def _stored_vs_string() -> list:
     eps = desc.belt["prestretch"]
     rows = []
     for label, EA in (("file's EA", desc.belt["EA"]), ("EA (1 + ε_ref)", desc.belt["EA"] * (1 + eps))):
-        ref = bd.steady_reference(load(THREAD_FILE, [*THREAD_SET, f"belt.EA={EA!r}",
+        ref = steady_reference(load(THREAD_FILE, [*THREAD_SET, f"belt.EA={EA!r}",
                                                      "belt.strain_reference=stress-free"]))
         T = {(s["from"], s["to"]): s["tension_N"] for s in ref["spans"]}
         rows.append({"string": label, "EA N": EA, "tight N": T[("driven", "driver")],
@@ -311,16 +311,17 @@ def serpentine_section() -> tuple[list, list]:
     parts = ["## Serpentine drive against the steady reference\n",
              f"`ancf run belt-drive --file {_name(SERPENTINE_FILE)}"
              f"{''.join(' --set ' + s for s in SERPENTINE_SET)}`; means over the file's steady "
-             "window.\n"]
+             "window: the pulley speeds and torques over every time step of it (`omega_mean`, "
+             "`torque_mean_Nm`), the span tensions and the arm's angle over its output "
+             "samples.\n"]
     if settings().quick:
         return parts + ["Reduced configuration: the run is skipped.\n"], []
     out, desc = _run(SERPENTINE_FILE, SERPENTINE_SET)
     if not out["converged"]:
         return parts + [f"Our run stopped: {out['message']}\n"], []
-    r, ref = out["results"], bd.steady_reference(desc)
-    T = bd.window_means(r, desc.run["steady_window"])
+    r, ref = out["results"], steady_reference(desc)
     pulleys = pd.DataFrame([{"pulley": o["name"], "ω ours rad/s": o["omega_mean"],
-                             "ω reference": p["omega"], "torque ours N m": T[o["name"]],
+                             "ω reference": p["omega"], "torque ours N m": o["torque_mean_Nm"],
                              "torque reference": p["torque_Nm"]}
                             for o, p in zip(r["pulleys"], ref["pulleys"])])
     spans = pd.DataFrame([{"span": f"{o['from']} → {o['to']}", "ours N": o["tension_mean_N"],

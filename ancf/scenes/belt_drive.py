@@ -11,9 +11,11 @@ section.key=value`` overrides a key of the file (``friction.mu=1.0``,
 ``pulleys.driven.inertia=0.5``).
 
 Results: the sample times; per pulley its angular velocity and the belt's moment on it
-(the friction's, counter-clockwise positive) at every sample, and the mean angular
-velocity and the slip over ``run.steady_window`` (1 - its rim speed / the driver's, the
-driver the first prescribed pulley); per span (pulley k to k + 1) the mean axial force
+(the friction's, counter-clockwise positive) at every sample, their means over every time
+step of ``run.steady_window`` (the march's, :func:`ancf.belts.dynamics.simulate`: a
+moment fluctuating faster than the samples does not alias into them) and the slip over
+the window (1 - its mean rim speed / the driver's, the driver the first prescribed
+pulley); per span (pulley k to k + 1) the mean axial force
 over its middle third at t_end and averaged over the samples of the steady window; the
 axial force, the speed, the position and the contact forces (normal and friction per unit
 length, summed over the pulleys) along the belt at t_end; per tensioner its arm's angle; the run
@@ -135,16 +137,16 @@ def _moments(desc, drive, res) -> np.ndarray:
                      for x, v, t, z in zip(res.q, res.v, res.t, states)])
 
 
-def _pulleys(desc, drive, res, window) -> list:
+def _pulleys(desc, drive, res) -> list:
     W = np.array([drive.omegas(float(t), v) for t, v in zip(res.t, res.v)])
     T = _moments(desc, drive, res)
-    mean = W[window].mean(axis=0)
+    mean, moment = res.extra["step_means"]
     d = next(i for i, q in enumerate(desc.pulleys) if q.law == "prescribed")
     rim = np.abs(mean) * drive.radii
     slip = 1.0 - rim / rim[d] if rim[d] > 0 else np.full(rim.size, np.nan)
     return [{"name": q.name, "omega": W[:, i].tolist(), "torque_Nm": T[:, i].tolist(),
-             "omega_mean": float(mean[i]), "slip": float(slip[i])}
-            for i, q in enumerate(desc.pulleys)]
+             "omega_mean": float(mean[i]), "torque_mean_Nm": float(moment[i]),
+             "slip": float(slip[i])} for i, q in enumerate(desc.pulleys)]
 
 
 def _arms(drive, res, window) -> list:
@@ -159,7 +161,7 @@ def _arms(drive, res, window) -> list:
 
 def _results(desc, drive, res) -> dict:
     window = np.flatnonzero(res.t >= res.t[-1] - desc.run["steady_window"] - 1e-12)
-    out = {"times": res.t.tolist(), "pulleys": _pulleys(desc, drive, res, window),
+    out = {"times": res.t.tolist(), "pulleys": _pulleys(desc, drive, res),
            "arms": _arms(drive, res, window)}
     end = _end3d if desc.belt["element"] == "plate36" else _end2d
     out.update(end(desc, drive, res, window))
@@ -173,7 +175,8 @@ def run(p: dict) -> SceneResult:
     opt = BeltOptions(dt=r["dt"], rho_inf=r["rho_inf"], newton_tol=r["newton_tol"],
                       max_steps=r["max_steps"])
     res = simulate(drive, bc.times(r), opt, x0=x0 if pre is None or pre.converged else None,
-                   progress=bc.progress("belt-drive", r, PROGRESS_STEPS))
+                   progress=bc.progress("belt-drive", r, PROGRESS_STEPS),
+                   mean_from=r["t_end"] - r["steady_window"])
     if pre is not None and not pre.converged:
         res.converged, res.message = False, f"pre-tension: {pre.message}"
     results = _results(desc, drive, res) if res.converged else {
@@ -254,44 +257,10 @@ class FileScene(Scene):
 
 
 def steady_reference(p: dict) -> dict:
-    """:func:`analytic.belt_steady.solve` on the drive of the resolved parameters ``p``:
-    its layout (a tensioner at its file position as the arm's nominal one), the laws' final
-    values (driver speed, load torques, damping, the arm's spring), the belt's EA, rho A,
-    reference length and the friction's mu.  InputError (a ValueError) where the steady
-    belt does not exist."""
-    from analytic.belt_steady import path_length, solve
-    desc = load(p["file"], _items(p))
-    pulleys = [_steady_pulley(q) for q in desc.pulleys]
-    for i, q in enumerate(desc.pulleys):
-        if q.law == "tensioner":
-            pulleys[i].update(pivot=q.params["pivot"], stiffness=q.params["arm_stiffness"],
-                              preload=q.params["arm_preload"])
-            pulleys[i]["preload"] *= _into(pulleys, i, q, path_length)
-    b = desc.belt
-    return solve(pulleys, EA=b["EA"], rhoA=b["rho"] * b["b"] * b["h"], L0=b["length"],
-                 mu=desc.friction["mu"])
-
-
-def _steady_pulley(q) -> dict:
-    out = {"name": q.name, "centre": q.centre, "radius": q.radius, "side": q.side,
-           "law": q.law}
-    if q.law == "prescribed":
-        out["omega"] = q.params["omega_final"]
-    elif q.law == "driven":
-        out.update(torque=q.params["load_torque"], damping=q.params["damping"])
-    elif q.law != "fixed":
-        out["damping"] = q.params["damping"]
-    return out
-
-
-def _into(pulleys, i, q, path_length) -> float:
-    """+1 if turning tensioner i's arm counter-clockwise lengthens the path, else -1 (the
-    reference's preload turns the arm into the belt, the file's counter-clockwise)."""
-    turned = [dict(x) for x in pulleys]
-    a = np.arctan2(*np.subtract(q.centre, q.params["pivot"])[::-1]) + 1e-6
-    turned[i]["centre"] = np.add(q.params["pivot"], q.params["arm_length"]
-                                 * np.array([np.cos(a), np.sin(a)]))
-    return float(np.sign(path_length(turned) - path_length(pulleys)))
+    """:func:`ancf.belts.drive_steady.steady_reference` of the drive of the resolved
+    parameters ``p``; InputError (a ValueError) where the steady belt does not exist."""
+    from ancf.belts.drive_steady import steady_reference as reference  # scipy: on use only
+    return reference(load(p["file"], _items(p)))
 
 
 SCENE = FileScene(

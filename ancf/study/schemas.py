@@ -178,7 +178,10 @@ RESULTS = {
             "omega": series("angular velocity, counter-clockwise positive, rad/s"),
             "torque_Nm": series("the belt's moment on it (friction), counter-clockwise "
                                 "positive, N m"),
-            "omega_mean": field(NUM, "mean angular velocity over run.steady_window, rad/s"),
+            "omega_mean": field(NUM, "mean angular velocity over run.steady_window (over every "
+                                     "time step of it), rad/s"),
+            "torque_mean_Nm": field(NUM, "mean of the belt's moment on it over every time "
+                                         "step of run.steady_window, N m"),
             "slip": field(NUM, "1 - its mean rim speed / the driver's (the first prescribed "
                                "pulley) over the window")}),
         "arms": field("array", "per tensioner, in belt order (null when the run stopped)",

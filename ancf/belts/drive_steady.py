@@ -1,0 +1,51 @@
+"""The steady reference of a drive (issue 21): :func:`analytic.belt_steady.solve`
+(Bechtel's extensible string round the drive's pulleys) on a validated drive description
+(:mod:`ancf.belts.drive_data`), the one the ``belt-drive`` scene's sweeps score against and
+the serpentine and THREAD checks compare with.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ancf.belts.drive_data import DriveDescription, element_modulus
+from analytic.belt_steady import path_length, solve
+
+
+def steady_reference(desc: DriveDescription) -> dict:
+    """:func:`analytic.belt_steady.solve` on the drive's layout (a tensioner at its file
+    position as the arm's nominal one), its final laws (the prescribed speeds' and load
+    torques' end values, the damping, the arm's spring) and its belt (the element's EA,
+    :func:`ancf.belts.drive_data.element_modulus`; rho A, the reference length) with the
+    friction's mu.  InputError (a ValueError) where the steady belt does not exist."""
+    pulleys = [_steady_pulley(p) for p in desc.pulleys]
+    for i, p in enumerate(desc.pulleys):
+        if p.law == "tensioner":
+            pulleys[i].update(pivot=p.params["pivot"], stiffness=p.params["arm_stiffness"],
+                              preload=p.params["arm_preload"])
+            pulleys[i]["preload"] *= _into(pulleys, i, p)
+    b = desc.belt
+    area = b["b"] * b["h"]
+    return solve(pulleys, EA=element_modulus(b) * area, rhoA=b["rho"] * area, L0=b["length"],
+                 mu=desc.friction["mu"])
+
+
+def _steady_pulley(p) -> dict:
+    out = {"name": p.name, "centre": p.centre, "radius": p.radius, "side": p.side,
+           "law": p.law}
+    if p.law == "prescribed":
+        out["omega"] = p.params["omega_final"]
+    elif p.law == "driven":
+        out.update(torque=p.params["load_torque"], damping=p.params["damping"])
+    elif p.law != "fixed":
+        out["damping"] = p.params["damping"]
+    return out
+
+
+def _into(pulleys, i, p) -> float:
+    """+1 if turning tensioner i's arm counter-clockwise lengthens the path, else -1 (the
+    reference's preload turns the arm into the belt, the file's counter-clockwise)."""
+    turned = [dict(q) for q in pulleys]
+    a = np.arctan2(*np.subtract(p.centre, p.params["pivot"])[::-1]) + 1e-6
+    turned[i]["centre"] = np.add(p.params["pivot"], p.params["arm_length"]
+                                 * np.array([np.cos(a), np.sin(a)]))
+    return float(np.sign(path_length(turned) - path_length(pulleys)))
