@@ -62,10 +62,12 @@ def test_recommend_cantilever_1e3_answers_with_evidence(capsys, cantilever_answe
     # re-run the recommended configuration exactly as printed: it meets the tolerance
     err = _rerun_error(capsys, "cantilever", a["params"], "reissner")
     assert err == pytest.approx(a["error"], rel=1e-9) and err <= 1e-3
-    # and nothing in the evidence takes less work and is adequate beyond the tie band
-    # (runs within WORK_TIE of the least work tie and go to the smallest model)
-    least = min([a["work"]] + [r["work"] for r in ev["runners_up"]])
-    assert a["work"] <= (1 + WORK_TIE) * least
+    # the pick lies in the tie group (runs chained to the least work by gaps below
+    # 1 + WORK_TIE), which holds the least work of every adequate run
+    group = ev["tie_group"]
+    assert group["least_work"] <= a["work"] <= group["most_work"]
+    assert group["most_work"] < (1 + WORK_TIE) ** group["runs"] * group["least_work"]
+    assert min(r["work"] for r in ev["runners_up"]) >= group["least_work"]
     assert ev["cost_model"]["calibration"]["rows"] >= ev["converged_runs"] - 1
     assert "cheapest model" in a["message"] and "Physics needed" in a["message"]
 

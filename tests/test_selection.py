@@ -1,14 +1,21 @@
 """`ancf.study.selection` and `ancf.study.cost`: the cheapest run by counted work, so that the choice is
 the same on every repeat and every machine (issue 15, item 11; used by the speed-accuracy
 tables and `ancf recommend`)."""
+from pathlib import Path
+
 import numpy as np
 import pandas as pd
 import pytest
 
 from ancf.study.cost import FEATURES, WEIGHTS, calibrate, counts, quadrature_points, with_work, work
 from ancf.reports.speed_accuracy import cheapest_table
-from ancf.study.selection import WORK_TIE, cheapest_first, model_size, tie_limit
+from ancf.reports.speed_accuracy import TOLERANCES, _knob_defaults, slug
+from ancf.study.references import FREQUENCY_SPECS, spec, specs
+from ancf.study.selection import (WORK_SCATTER, WORK_TIE, cheapest_first, model_size,
+                                  nominal_work, rank, tie_group, tie_keys)
 from ancf.study.sweep import run_sweep
+
+DATA = Path(__file__).resolve().parents[1] / "reports" / "data"
 
 
 def _runs(work, cpu=None):
@@ -25,19 +32,23 @@ def test_model_size_counts_global_coordinates():
     assert model_size({"element": "belt-x", "n_elements": 7}) == 7           # unknown family
 
 
-def test_ties_go_to_the_smallest_model_then_the_smallest_error():
-    # all within the band of the cheapest (1.00): the 1-element runs win, the more
-    # accurate of the two first, whatever the order of the work inside the band
-    for w in ([1.00, 1.05, 1.08, 1.02], [1.08, 1.00, 1.05, 1.09]):
+def test_ties_go_to_the_least_nominal_work_then_the_smallest_model():
+    # all chained (gaps below 1 + WORK_TIE): the 1-element runs (least nominal work) win,
+    # the more accurate of the two first, whatever the order of the work inside the group
+    for w in ([1.00, 1.05, 1.08, 1.02], [1.08, 1.00, 1.05, 1.09], [1.0, 1.3, 1.69, 2.19]):
         assert list(cheapest_first(_runs(w)).index[:2]) == [3, 2]
+    df = _runs([1.0] * 4)
+    assert nominal_work(df.loc[2]) < nominal_work(df.loc[1]) < nominal_work(df.loc[0])
 
 
-def test_a_clearly_cheaper_run_wins_whatever_its_size():
+def test_a_gap_separates_the_tie_group():
     assert cheapest_first(_runs([1.0, 2.0, 2.0, 2.0])).index[0] == 0
-    # just outside the band the tie no longer applies; just inside it does
+    # a gap just above 1 + WORK_TIE ends the group; just below it chains
     assert cheapest_first(_runs([1.0, (1 + WORK_TIE) * 1.01, 5.0, 5.0])).index[0] == 0
     assert cheapest_first(_runs([1.0, (1 + WORK_TIE) * 0.99, 5.0, 5.0])).index[0] == 1
-    assert tie_limit(2.0) == 2.0 * (1 + WORK_TIE)
+    assert list(tie_group([3.0, 1.0, 1.3, np.nan, 1.69])) == [False, True, True, False, True]
+    # runs of equal work stay in one group whatever the scatter between machines
+    assert (1 + WORK_SCATTER) / (1 - WORK_SCATTER) < 1 + WORK_TIE
 
 
 def test_measured_times_do_not_decide():
@@ -55,12 +66,16 @@ def test_uncounted_runs_rank_last():
 
 
 def test_equal_errors_go_to_the_scene_defaults():
-    """Quadrature variants that agree to print precision: the default one is reported."""
+    """Solver tolerances of one model that agree to print precision: the default one is
+    reported (equal nominal work and size); without defaults, the first of the rows."""
     df = pd.DataFrame({"element": ["linear"] * 3, "n_elements": [4] * 3,
-                       "integration": ["report-fix", "thesis", "report-selective"],
+                       "integration": ["thesis"] * 3, "rtol": [1e-4, 1e-8, 1e-6],
                        "error": [0.06211, 0.06212, 0.06213], "work": [1.0, 1.05, 1.02]})
-    assert cheapest_first(df, defaults={"integration": "thesis"}).index[0] == 1
-    assert cheapest_first(df).index[0] == 0      # without defaults: the least work
+    assert cheapest_first(df, defaults={"rtol": 1e-8}).index[0] == 1
+    assert cheapest_first(df).index[0] == 0
+    # quadrature variants differ in nominal work: the fewer points win before the defaults
+    q = df.assign(integration=["exact", "thesis", "report-selective"], rtol=1e-8)
+    assert cheapest_first(q, defaults={"integration": "exact"}).index[0] == 1
 
 
 @pytest.mark.parametrize("spec,points", [("normal=1xe,shear=1xe", 3), ("normal=2x2,shear=1x1", 5),
@@ -124,3 +139,63 @@ def test_repeated_sweeps_choose_the_same_configurations(workdir):
     pd.testing.assert_series_equal(works[0], works[1])
     pd.testing.assert_frame_equal(tables[0], tables[1])
     assert tables[0]["n_elements"].notna().sum() >= 2
+
+
+def _committed_levels():
+    """(name, rows, error column, defaults) of every committed speed-accuracy sweep the
+    reports tabulate (the scenes' results and the natural frequencies)."""
+    found = []
+    scenes = [(n, s) for n, s in specs().items()] + [(n, spec(n, "frequency"))
+                                                     for n in FREQUENCY_SPECS]
+    for name, s in scenes:
+        path = DATA / f"speed_accuracy_{slug(name, s.quantity)}.csv"
+        if path.exists():
+            defaults = _knob_defaults(name, s)
+            df = pd.read_csv(path)
+            df = df.assign(**{k: v for k, v in defaults.items() if k not in df})
+            for err in ("error", "error_self"):
+                if err in df:
+                    found.append((f"{name} {s.quantity} {err}", df, err, defaults, path.name))
+    return found
+
+
+def perturbed_picks(pick, draws: int = 200, seed: int = 0) -> dict:
+    """Per (sweep, error column, tolerance) of the committed data: the set of picks of
+    ``pick(rows, err, defaults, work)`` over ``draws`` draws of every run's work scaled
+    independently by a uniform factor in [1 - WORK_SCATTER, 1 + WORK_SCATTER], beside the
+    pick of the unperturbed work."""
+    rng = np.random.default_rng(seed)
+    out = {}
+    for label, df, err, defaults, _ in _committed_levels():
+        ok = df[(df["status"] == "ok") & np.isfinite(df[err].astype(float))]
+        for tol in TOLERANCES:
+            m = ok[ok[err] <= tol]
+            if not len(m):
+                continue
+            state = pick(m, err, defaults, None)
+            w = m["work"].to_numpy(float)
+            out[f"{label} <= {tol:g}"] = (pick(m, err, defaults, w, state), {
+                pick(m, err, defaults, w * rng.uniform(1 - WORK_SCATTER, 1 + WORK_SCATTER,
+                                                       len(w)), state)
+                for _ in range(draws)})
+    return out
+
+
+def _pick(rows, err, defaults, work, keys=None):
+    """The rule's pick with ``work`` in place of the rows' (``work`` None: the tie keys,
+    computed once per level)."""
+    if work is None:
+        return tie_keys(rows, err, defaults)
+    return rank(keys, work)[0]
+
+
+def test_picks_do_not_move_with_the_scatter_of_counted_work():
+    """Issue 23: on every committed sweep, at every error level of the reports and against
+    each reference, the pick is the same when each run's counted work moves by up to
+    +-WORK_SCATTER (200 seeded draws): the machine-to-machine scatter of contact runs."""
+    files = {p.name for p in DATA.glob("speed_accuracy_*.csv")} - {"speed_accuracy_calibration.csv"}
+    assert files == {f for *_, f in _committed_levels()}      # every committed sweep is checked
+    picks = perturbed_picks(_pick)
+    assert len(picks) >= 40
+    moved = {k: (base, alts) for k, (base, alts) in picks.items() if alts != {base}}
+    assert moved == {}

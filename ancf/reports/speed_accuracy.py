@@ -24,7 +24,7 @@ from ancf.study.references import cache_root, rescore, runner, spec, specs  # no
 from ancf.reports.output import (fmt, markdown_table, progress, save_figure,  # noqa: E402
                                  settings, timing_note, write_csv)
 from ancf.study.sweep import run_sweep  # noqa: E402
-from ancf.study.selection import WORK_TIE, cheapest_first  # noqa: E402
+from ancf.study.selection import WORK_SCATTER, WORK_TIE, cheapest_first  # noqa: E402
 
 TOLERANCES = (1e-1, 1e-2, 1e-3, 1e-4)
 FLOOR = 1e-16  # plotted in place of an exact zero error
@@ -79,8 +79,9 @@ def _knob_defaults(name: str, s) -> dict:
 
 def cheapest_table(df: pd.DataFrame, dynamic: bool, err: str = "error",
                    defaults: dict | None = None) -> pd.DataFrame:
-    """Per tolerance: the cheapest run with error <= tolerance by counted work (ties within
-    the cost model's scatter go to the smaller model, ``ancf.study.selection``), or 'not reached'."""
+    """Per tolerance: the cheapest run with error <= tolerance by counted work (the runs
+    chained to the least work are equally cheap and go to the least nominal work, then the
+    smaller model, ``ancf.study.selection``), or 'not reached'."""
     ok = df[(df["status"] == "ok") & np.isfinite(df[err].astype(float))]
     rows = []
     for tol in TOLERANCES:
@@ -209,15 +210,20 @@ _INTRO = (
     "Pareto fronts and the cheapest configurations below do not move with timing noise. "
     "Across machines (another CPU, BLAS or compiler) round-off can steer Newton: counted work "
     "of the contact runs differs by up to about 10 % (belt2d: 10933 against 9896 Newton "
-    "iterations on two machines); the tie band below absorbs most of it. The "
+    "iterations on two machines); the rule for 'cheapest' below is built so that its "
+    "picks do not move with that scatter. The "
     "measured CPU times (process time on the machine that generated this report; identical "
     "runs scatter by 10-30 %) do not decide; they are on the timing page "
     "([timing/speed_accuracy.md](timing/speed_accuracy.md)) with the calibration of work to "
     "seconds on that machine. The Pareto front connects the runs that no "
-    "other run beats in both work and error. 'Cheapest' treats runs within "
-    "{tie:g} % of the least work as equally cheap (the cost model's scatter) and takes the "
-    "smallest model among them, then the smallest error, then the scene's default settings "
-    "(`ancf/study/selection.py`). `ancf recommend SCENE --tol TOL` answers the last question of "
+    "other run beats in both work and error. 'Cheapest' treats the runs chained to the "
+    "least work by gaps below {gap:g}× (each run's work within {gap:g}× of the next cheaper "
+    "one) as equally cheap, and takes among them the least nominal work (kernel points of "
+    "one tangent evaluation × steps: the computation's size without the iteration counts "
+    "that round-off steers), then the smallest model, then the smallest error, then the "
+    "scene's default settings (`ancf/study/selection.py`): on every sweep of this chapter the "
+    "picks stay the same when each run's work moves by ±{scatter:g} % (tests/test_selection.py). "
+    "`ancf recommend SCENE --tol TOL` answers the last question of "
     "each section for a given tolerance. The natural frequencies (`--quantity frequency`) "
     "have their own chapter, speed_accuracy_frequencies.md.\n")
 
@@ -339,7 +345,8 @@ def speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
     workers = workers or os.cpu_count()
     status, frames = {}, {}
     sp = specs()
-    parts = ["# Speed versus accuracy\n", _INTRO.format(tie=100 * WORK_TIE)]
+    parts = ["# Speed versus accuracy\n", _INTRO.format(gap=1 + WORK_TIE,
+                                                            scatter=100 * WORK_SCATTER)]
     parts += _references_table(sp)
     for name, s in sp.items():
         key = f"Speed–accuracy {name}: Pareto plot + cheapest-configuration table"

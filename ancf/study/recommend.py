@@ -2,8 +2,10 @@
 
 From sweep data (``--data FILE``, or a sweep of the scene's recommendation grid run on
 demand and cached under ``reports/.cache/recommend/``), the cheapest configuration
-(least counted work, ties within the cost model's scatter going to the smallest model,
-see ``ancf.study.selection`` and ``ancf.study.cost``; the measured CPU time is reported, not ranked)
+(least counted work; runs chained to the least work by gaps below 1.4 are equally cheap
+and go to the least nominal work, then the smallest model, so the pick does not move
+with the machine-to-machine scatter of the counts: see ``ancf.study.selection`` and
+``ancf.study.cost``; the measured CPU time is reported, not ranked)
 whose error against the scene's reference is at most ``tol``, among the configurations
 that provide every physics the scene needs (``ancf.study.references``).  The answer carries
 its evidence: the error, counted work and CPU time of the chosen run, how many runs
@@ -21,7 +23,7 @@ import pandas as pd
 from ancf.study.cost import calibrate, counts, with_work, work
 from ancf.study.references import (ReferenceFailed, cache_root, model_physics, runner, spec,
                                    stable_hash)
-from ancf.study.selection import WORK_TIE, cheapest_first
+from ancf.study.selection import WORK_TIE, cheapest_first, tie_group
 from ancf.common.params import InputError
 from ancf.study.sweep import check_table, read_rows, rows_for, run_sweep
 
@@ -228,6 +230,9 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
         result.update(params=params, error=float(row["error"]), cpu_time_s=float(row["cpu_time_s"]),
                       work=float(row["work"]))
         evidence["runners_up"] = [entry(r) for _, r in order.iloc[1:4].iterrows()]
+        group = adequate["work"][tie_group(adequate["work"])].astype(float)
+        evidence["tie_group"] = {"runs": int(len(group)), "least_work": float(group.min()),
+                                 "most_work": float(group.max()), "gap": 1.0 + WORK_TIE}
         cheaper = ok[(ok["work"] < row["work"]) & (ok["error"] > tol)]
         if len(cheaper):
             c = cheaper.loc[cheaper["error"].astype(float).idxmin()]
@@ -237,9 +242,10 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
         lines.append(f"{scene}: cheapest model with error <= {tol:g} against {ref.name}: "
                      f"{result['model']}; error {result['error']:.3g}, work {result['work']:.3g} "
                      f"units, CPU {result['cpu_time_s']:.3g} s ({len(adequate)} of {len(df)} runs "
-                     f"meet the tolerance; ranked by counted work, not by the measured time: runs "
-                     f"within {100 * WORK_TIE:g} % of the least work count as equally cheap and "
-                     f"the smallest model among them is chosen).")
+                     f"meet the tolerance; ranked by counted work, not by the measured time: the "
+                     f"{len(group)} run(s) chained to the least work by gaps below "
+                     f"{1 + WORK_TIE:g}x count as equally cheap and the least nominal work, "
+                     f"then the smallest model among them is chosen).")
         lines.append(f"Physics needed: {', '.join(sorted(needs)) or 'none declared'}; the model "
                      f"provides {', '.join(provides)}.")
         if len(excluded):
@@ -288,6 +294,9 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
         code = 3
     cal = calibrate(df[df["status"] == "ok"])
     evidence["cost_model"] = {"ranked_by": "work (ancf.study.cost: counted work, fixed weights)",
+                              "ties": "runs chained to the least work by gaps below "
+                                      f"{1 + WORK_TIE:g}x, ordered by nominal work, model size, "
+                                      "error, defaults (ancf.study.selection)",
                               "calibration": cal.as_dict() if cal else None}
     result["message"] = " ".join(x for x in lines if x)
     result["evidence"] = evidence
