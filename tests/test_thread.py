@@ -223,3 +223,19 @@ def test_reference_spread_is_the_limits_size():
     assert drop[(60, 4, base.params["step"])] > drop[(120, 4, base.params["step"])] > b
     assert drop[(480, 4, vs[th.FINEST].params["step"])] < 0.5 * b
     assert drop[(240, 8, base.params["step"])] < 0.5 * b
+
+
+def test_base_case_omega_is_explained_only_by_the_finest_case():
+    """The base-case ω row reads "DIFFERS (explained)" only while THREAD's own variants
+    spread beyond its tolerance and ours is within the tolerance of the finest case."""
+    from ancf.checks.belt2d import Check
+    fine = th.read_variant(th.FINEST).omega_mean
+    tol = th.TOLERANCES["omega"]
+
+    def checks(omega):
+        d = 100 * abs(omega / fine - 1)
+        return [Check(th.FINEST_ROW, omega, fine, d, tol, "rad/s", "%")]
+
+    assert th.omega_spread() > tol
+    assert th.omega_explained(checks(fine * (1 - 0.9 * tol / 100)))
+    assert not th.omega_explained(checks(fine * (1 - 1.1 * tol / 100)))
