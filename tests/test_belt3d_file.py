@@ -118,3 +118,18 @@ def test_plate_belt_weight_is_its_mass_times_gravity():
     w = drive.belt(np.append(drive.weight, np.zeros(drive.k))).reshape(-1, 3, 3)
     m = d.belt["rho"] * d.belt["h"] * d.belt["b"] * d.belt["length"]
     assert w[:, 0].sum(axis=0) == pytest.approx([3.0 * m, -9.81 * m, 0.0], rel=1e-12, abs=1e-15)
+
+
+@pytest.mark.parametrize("path, element", [(THESIS3D, "plate36"), (None, "dufva2d")])
+def test_sweeps_and_recommend_vary_the_files_own_element(path, element):
+    """``ancf sweep|recommend belt-drive --file F`` vary the contact points the file's element
+    takes (a plate: n x n over its surface; Dufva's: Gauss points along it), and every value
+    of the grid is one the file accepts."""
+    from ancf.study.references import DRIVE_GRIDS, spec
+    p = SCENES["belt-drive"].resolve({"file": str(path)} if path else {})
+    grids = spec("belt-drive").grids(p)
+    assert grids == DRIVE_GRIDS[element] == spec("belt-drive").grids(p, "report")
+    for g in grids:
+        for n in g["n_elements"]:
+            for k in g["gauss_points"]:
+                SCENES["belt-drive"].resolve({**p, "n_elements": n, "gauss_points": k})

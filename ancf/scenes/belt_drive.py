@@ -256,11 +256,17 @@ class FileScene(Scene):
                 "gauss_points": int(desc.contact["gauss_points"])}
 
 
+def description(p: dict):
+    """The drive description (:class:`ancf.belts.drive_data.DriveDescription`) of the
+    resolved parameters ``p``."""
+    return load(p["file"], _items(p))
+
+
 def steady_reference(p: dict) -> dict:
     """:func:`ancf.belts.drive_steady.steady_reference` of the drive of the resolved
     parameters ``p``; InputError (a ValueError) where the steady belt does not exist."""
     from ancf.belts.drive_steady import steady_reference as reference  # scipy: on use only
-    return reference(load(p["file"], _items(p)))
+    return reference(description(p))
 
 
 SCENE = FileScene(

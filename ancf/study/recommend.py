@@ -181,7 +181,7 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
             raise InputError(f"--data {source!r}: no rows of scene {scene!r} with reference "
                              f"{ref.name!r} for these physical parameters")
     else:
-        grids = _restrict(s.recommend_grids, fixed_knobs)
+        grids = _restrict(s.grids(base), fixed_knobs)
         key = stable_hash({"physical": physical, "reference": ref.name, "grids": grids,
                            **({"quantity": quantity} if quantity != "results" else {})})
         out = cache_root() / "recommend" / f"{scene}-{key}.parquet"

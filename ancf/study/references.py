@@ -248,6 +248,14 @@ class SceneSpec:
     notes: str = ""
     provides: frozenset | None = None  # physics of a scene without an element choice
     quantity: str = "results"  # what the runs compute: the scene's results or frequencies
+    grids_for: object = None  # resolved params -> model grids, where they depend on the problem
+
+    def grids(self, params: dict | None, which: str = "recommend") -> tuple:
+        """The model grids of ``recommend`` or the ``report``, for the problem of the
+        resolved ``params`` where the scene's grids depend on it (a drive file's element)."""
+        if self.grids_for is not None and params is not None:
+            return self.grids_for(params)
+        return self.recommend_grids if which == "recommend" else self.report_grids
 
     def reference(self, name: str | None = None) -> Reference:
         name = name or self.default_reference
@@ -770,6 +778,15 @@ def _drive_error(res, ref, p):
 
 #: the drive file's model parameters (ancf.scenes.belt_drive.MODEL_KEYS)
 DRIVE_KNOBS = ("n_elements", "dt", "gauss_points")
+#: the model grids per belt element of the file (contact points: Gauss points along a
+#: Dufva element, n x n points over a plate)
+DRIVE_GRIDS = {"dufva2d": ({"n_elements": [30, 45, 60], "gauss_points": [5, 7]},),
+               "plate36": ({"n_elements": [20, 30, 40], "gauss_points": [25, 49]},)}
+
+
+def _drive_grids(params: dict) -> tuple:
+    from ancf.scenes.belt_drive import description
+    return DRIVE_GRIDS[description(params).belt["element"]]
 
 
 def _belt_drive_spec() -> SceneSpec:
@@ -782,10 +799,11 @@ def _belt_drive_spec() -> SceneSpec:
         "ω_ref| / |ω_ref|. It includes the model gap (creep-rate against Coulomb friction, "
         "the penalty's penetration: 1-2 % on the shipped examples) and whatever of the "
         "start-up the window still holds", _drive_steady, _drive_error)}
-    grids = ({"n_elements": [30, 45, 60], "gauss_points": [5, 7]},)
+    grids = DRIVE_GRIDS["dufva2d"]
     return SceneSpec("belt-drive", DRIVE_KNOBS, frozenset({"axial", "bending", "inertia",
                                                           "contact"}),
                      refs, "steady", report_grids=grids, recommend_grids=grids, dynamic=True,
+                     grids_for=_drive_grids,
                      provides=frozenset({"axial", "bending", "shear", "large-rotation",
                                          "inertia", "contact"}),
                      notes="A drive file (`--set file=PATH`; default the thesis drive) "

@@ -794,7 +794,8 @@ def run_sweep(scene: str, grids=None, *, out, fixed: dict | None = None,
         raise InputError(f"time_limit = {time_limit!r} is out of range; allowed: a number > 0")
     out = _check_out(out)
     s = spec(scene, quantity)
-    grids = s.report_grids if grids is None else grids
+    if grids is None:  # the scene's report grid, for this problem where it depends on it
+        grids = s.grids(SCENES[scene].resolve(fixed) if s.grids_for else None, "report")
     ref = s.reference(reference)
     log = log or (lambda msg: print(msg, file=sys.stderr, flush=True))
     tasks = make_tasks(scene, expand(grids, fixed), ref.name, quantity)
