@@ -14,7 +14,7 @@ is the number of eigenvalues below ``s``.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, uintp
 
 from ancf.common.leaf import leaf
 
@@ -24,7 +24,9 @@ def lu(AB, kl, piv, pivoting):
     """Factor in place; returns 0, or k + 1 if the pivot of column k is zero.  The
     last nonzero column of each row is tracked, so the fill columns are only worked
     on where row interchanges put something there."""
-    n = AB.shape[0]
+    n, w = AB.shape
+    flat = AB.reshape(-1)  # the row updates index it with unsigned offsets: no negative-
+    #                        index test in the loop, which then runs on vector instructions
     last = np.empty(n, dtype=np.int64)
     for i in range(n):
         last[i] = min(n - 1, i + kl)
@@ -48,12 +50,14 @@ def lu(AB, kl, piv, pivoting):
             last[k], last[p] = cmax, cmax
         d = AB[k, kl]
         cmax = last[k]
+        ob = uintp(k * w + kl + 1)  # flat index of row k's entry in column k + 1
         for r in range(k + 1, end + 1):
             m = AB[r, k - r + kl] / d
             AB[r, k - r + kl] = m
             if m != 0.0:
-                for c in range(k + 1, cmax + 1):
-                    AB[r, c - r + kl] -= m * AB[k, c - k + kl]
+                oa = uintp(r * w + k + 1 - r + kl)
+                for t in range(uintp(cmax - k)):  # columns k + 1 ... cmax
+                    flat[oa + t] -= m * flat[ob + t]
                 if cmax > last[r]:
                     last[r] = cmax
     return 0
