@@ -66,19 +66,22 @@ def lu(AB, kl, piv, pivoting):
 @leaf
 def solve(AB, kl, piv, b):
     """Solve in place with the factors of :func:`lu`."""
-    n = AB.shape[0]
+    n, w = AB.shape
+    flat, step = AB.reshape(-1), uintp(w - 1)  # unsigned offsets, as in lu
     for k in range(n):
         p = piv[k]
         if p != k:
             b[k], b[p] = b[p], b[k]
         bk = b[k]
         if bk != 0.0:
-            for r in range(k + 1, min(n - 1, k + kl) + 1):
-                b[r] -= AB[r, k - r + kl] * bk
+            o, r0 = uintp((k + 1) * w - 1 + kl), uintp(k + 1)  # AB[k + 1, kl - 1]
+            for t in range(uintp(min(n - 1, k + kl) - k)):  # rows k + 1 ... k + kl
+                b[r0 + t] -= flat[o + t * step] * bk
     for k in range(n - 1, -1, -1):
         s = b[k]
-        for c in range(k + 1, min(n - 1, k + 2 * kl) + 1):
-            s -= AB[k, c - k + kl] * b[c]
+        o, c0 = uintp(k * w + kl + 1), uintp(k + 1)  # AB[k, kl + 1]
+        for t in range(uintp(min(n - 1, k + 2 * kl) - k)):  # columns k + 1 ... k + 2 kl
+            s -= flat[o + t] * b[c0 + t]
         b[k] = s / AB[k, kl]
 
 
@@ -102,12 +105,15 @@ def count_below(AB, kl, shift):
 
 @njit(cache=True)
 def matvec(AB, kl, x):
-    n = AB.shape[0]
+    n, w = AB.shape
+    flat = AB.reshape(-1)  # unsigned offsets, as in lu
     y = np.zeros(n)
     for i in range(n):
         s = 0.0
-        for j in range(max(0, i - kl), min(n - 1, i + kl) + 1):
-            s += AB[i, j - i + kl] * x[j]
+        j0 = max(0, i - kl)
+        o, x0 = uintp(i * w + j0 - i + kl), uintp(j0)
+        for t in range(uintp(min(n - 1, i + kl) + 1 - j0)):  # columns j0 ... i + kl
+            s += flat[o + t] * x[x0 + t]
         y[i] = s
     return y
 
