@@ -48,6 +48,7 @@ import numpy as np
 from numba import njit
 
 from ancf.belts import friction
+from ancf.common.leaf import leaf
 from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_rows, positive_lengths
 from ancf.elements._generated import plate36_S
 from ancf.core.quadrature import gauss01
@@ -254,6 +255,37 @@ def _mid_surface(E, V, S0, e, q, r, v):
             v[c] += s * V[e, k, c]
 
 
+@leaf
+def _mid_velocity(V, S0, e, q, v):
+    """The velocity part of :func:`_mid_surface`."""
+    v[:] = 0.0
+    for k in range(S0.shape[2]):
+        s = S0[e, q, k]
+        for c in range(3):
+            v[c] += s * V[e, k, c]
+
+
+@leaf
+def _penetrates(E, S0, e, q, centres, j, p, R, r):
+    """False if point q of element e is outside pulley j's cylinder (d = R - |N| < 0;
+    unit axis p): the position r (into r) and penetration of :func:`_mid_surface` and
+    :func:`_point_law` with the same arithmetic, without the velocities, so the contact
+    kernel skips such a point (it has no force)."""
+    r[:] = 0.0
+    for k in range(S0.shape[2]):
+        s = S0[e, q, k]
+        for c in range(3):
+            r[c] += s * E[e, k, c]
+    a0, a1, a2 = r[0] - centres[j, 0], r[1] - centres[j, 1], r[2] - centres[j, 2]
+    ap = a0 * p[0] + a1 * p[1] + a2 * p[2]
+    n0, n1, n2 = a0 - ap * p[0], a1 - ap * p[1], a2 - ap * p[2]
+    rho = 0.0
+    rho += n0 * n0
+    rho += n1 * n1
+    rho += n2 * n2
+    return not R - np.sqrt(rho) < 0.0
+
+
 @njit(cache=True)
 def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
     """Add point q's terms to the omega and moment derivatives, and its shape-function
@@ -329,7 +361,9 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
             pairs += 1
             touched = False
             for q in range(nq):
-                _mid_surface(E, V, S0, e, q, r, v)
+                if not _penetrates(E, S0, e, q, centres, p, pax, R, r):
+                    continue
+                _mid_velocity(V, S0, e, q, v)
                 for c in range(3):
                     a[c] = r[c] - centres[p, c]
                     vr[c] = v[c] - centre_velocities[p, c]

@@ -68,8 +68,8 @@ def energy(E, data):
 def _density(v, k, bending, want_K, gw, H, gb, Hb):
     """Gradient gw (15,) and, if want_K, Hessian H (15, 15) of the point density."""
     gw[:] = 0.0
-    H[:] = 0.0
     if want_K:
+        H[:] = 0.0
         gen.membrane_hess(v[0], v[1], v[2], v[3], v[4], v[5], k, gb[:6], Hb[:6, :6])
         for i in range(6):
             for j in range(6):
@@ -100,7 +100,7 @@ def _add_point(Bq, ww, nd, gw, H, want_K, ge, Ke, T):
                 ge[3 * kk + c] += ww * Bq[d, kk] * gw[3 * d + c]
     if not want_K:
         return
-    T[:] = 0.0
+    T[: 3 * nd] = 0.0  # the rows read below
     for i in range(3 * nd):
         for d2 in range(nd):
             for c2 in range(3):

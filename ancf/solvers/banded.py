@@ -14,7 +14,7 @@ is the number of eigenvalues below ``s``.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, uintp
 
 from ancf.common.leaf import leaf
 
@@ -24,7 +24,9 @@ def lu(AB, kl, piv, pivoting):
     """Factor in place; returns 0, or k + 1 if the pivot of column k is zero.  The
     last nonzero column of each row is tracked, so the fill columns are only worked
     on where row interchanges put something there."""
-    n = AB.shape[0]
+    n, w = AB.shape
+    flat = AB.reshape(-1)  # the row updates index it with unsigned offsets: no negative-
+    #                        index test in the loop, which then runs on vector instructions
     last = np.empty(n, dtype=np.int64)
     for i in range(n):
         last[i] = min(n - 1, i + kl)
@@ -48,12 +50,14 @@ def lu(AB, kl, piv, pivoting):
             last[k], last[p] = cmax, cmax
         d = AB[k, kl]
         cmax = last[k]
+        ob = uintp(k * w + kl + 1)  # flat index of row k's entry in column k + 1
         for r in range(k + 1, end + 1):
             m = AB[r, k - r + kl] / d
             AB[r, k - r + kl] = m
             if m != 0.0:
-                for c in range(k + 1, cmax + 1):
-                    AB[r, c - r + kl] -= m * AB[k, c - k + kl]
+                oa = uintp(r * w + k + 1 - r + kl)
+                for t in range(uintp(cmax - k)):  # columns k + 1 ... cmax
+                    flat[oa + t] -= m * flat[ob + t]
                 if cmax > last[r]:
                     last[r] = cmax
     return 0
@@ -62,19 +66,22 @@ def lu(AB, kl, piv, pivoting):
 @leaf
 def solve(AB, kl, piv, b):
     """Solve in place with the factors of :func:`lu`."""
-    n = AB.shape[0]
+    n, w = AB.shape
+    flat, step = AB.reshape(-1), uintp(w - 1)  # unsigned offsets, as in lu
     for k in range(n):
         p = piv[k]
         if p != k:
             b[k], b[p] = b[p], b[k]
         bk = b[k]
         if bk != 0.0:
-            for r in range(k + 1, min(n - 1, k + kl) + 1):
-                b[r] -= AB[r, k - r + kl] * bk
+            o, r0 = uintp((k + 1) * w - 1 + kl), uintp(k + 1)  # AB[k + 1, kl - 1]
+            for t in range(uintp(min(n - 1, k + kl) - k)):  # rows k + 1 ... k + kl
+                b[r0 + t] -= flat[o + t * step] * bk
     for k in range(n - 1, -1, -1):
         s = b[k]
-        for c in range(k + 1, min(n - 1, k + 2 * kl) + 1):
-            s -= AB[k, c - k + kl] * b[c]
+        o, c0 = uintp(k * w + kl + 1), uintp(k + 1)  # AB[k, kl + 1]
+        for t in range(uintp(min(n - 1, k + 2 * kl) - k)):  # columns k + 1 ... k + 2 kl
+            s -= flat[o + t] * b[c0 + t]
         b[k] = s / AB[k, kl]
 
 
@@ -98,12 +105,15 @@ def count_below(AB, kl, shift):
 
 @njit(cache=True)
 def matvec(AB, kl, x):
-    n = AB.shape[0]
+    n, w = AB.shape
+    flat = AB.reshape(-1)  # unsigned offsets, as in lu
     y = np.zeros(n)
     for i in range(n):
         s = 0.0
-        for j in range(max(0, i - kl), min(n - 1, i + kl) + 1):
-            s += AB[i, j - i + kl] * x[j]
+        j0 = max(0, i - kl)
+        o, x0 = uintp(i * w + j0 - i + kl), uintp(j0)
+        for t in range(uintp(min(n - 1, i + kl) + 1 - j0)):  # columns j0 ... i + kl
+            s += flat[o + t] * x[x0 + t]
         y[i] = s
     return y
 
