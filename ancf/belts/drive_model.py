@@ -80,4 +80,5 @@ def build(d: DriveDescription) -> BeltDrive:
     """The drive's model (the damping times :func:`ancf.belts.drive_data.laid_factor`)."""
     b = d.belt
     return BeltDrive(spec(d), rig(d), d.gravity,
-                     laid_factor(b) * np.array([b["damping_axial"], b["damping_bending"]]))
+                     laid_factor(b) * np.array([b["damping_axial"], b["damping_bending"]]),
+                     d.run["damping_jacobian"])
