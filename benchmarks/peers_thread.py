@@ -102,6 +102,12 @@ def _exudyn(t_end: float, env: dict) -> dict:
     return json.loads(proc.stdout[proc.stdout.index("{"):])
 
 
+def _relative(path: Path) -> str:
+    """The path relative to the checkout where it lies in it (no machine paths in reports)."""
+    path = path.resolve()
+    return str(path.relative_to(peers.ROOT)) if path.is_relative_to(peers.ROOT) else path.name
+
+
 def markdown(res: dict) -> str:
     """The table of :func:`main`'s result."""
     o, e = res["ours"], res["exudyn"]
@@ -142,7 +148,7 @@ def main(argv=None) -> int:
            "started": dt.datetime.now(dt.timezone.utc).isoformat(timespec="seconds"),
            "command": "python -m benchmarks.peers_thread " + " ".join(argv or sys.argv[1:]),
            "machine": peers.machine(),
-           "settings": {**SETTINGS, "file": str(args.file), "file_text": args.file.read_text(),
+           "settings": {**SETTINGS, "file": _relative(args.file), "file_text": args.file.read_text(),
                         "extra_sets": args.set,
                         "worker_env": peers.THREAD_ENV, "unset": peers.UNSET_ENV}}
     res["ours"] = _ours(args.file, args.t_end, args.set, env)
