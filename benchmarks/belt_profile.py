@@ -4,24 +4,29 @@ The compiled march has no clock inside, so the split is estimated: each kernel i
 timed on its own (median of repeated calls at the run's last state, warm) and
 multiplied by the number of calls the run's counters report:
 
-* elastic forces: the belt element kernel, with the tangent on Jacobian evaluations;
-* contact: the contact kernel, with its Jacobians on Jacobian evaluations;
+* elastic forces: the belt element kernel, with the tangent on Jacobian evaluations, and
+  the belt's strain-rate damping where it has any;
+* contact: the contact kernel (with the friction law's state where it has one), with its
+  Jacobians on Jacobian evaluations;
 * linear algebra: per factorisation the band LU plus the solve for the border
   column, per Newton iteration one bordered solve;
 * the rest (gathering, scattering, the recurrence, Python around the march) is the
   integration time minus these.
 
-``python -m benchmarks.belt_profile [N ...]`` prints the split of the default 1 s run.
+``python -m benchmarks.belt_profile [N ...]`` prints the split of the default 1 s run;
+``python -m benchmarks.belt_profile --file drive.toml [--set key=value ...]`` that of a
+drive file's run (``ancf run belt-drive``; e.g. ``--set run.t_end=0.3``).
 """
 from __future__ import annotations
 
+import argparse
 import sys
 import time
 
 import numpy as np
 
-from ancf.belts.contact2d import contact_forces
-from ancf.elements.dufva2d import gradient_tangent
+from ancf.belts.contact2d import contact_forces_moving
+from ancf.elements.dufva2d import damping_forces, gradient_tangent
 from ancf.solvers import banded
 from ancf.belts.forces import gather
 
@@ -48,12 +53,23 @@ def kernel_costs(drive, x, v, omegas) -> dict:
     g, K = np.zeros((nel, 12)), np.zeros((nel, 12, 12))
     Q, Kq, Cv = np.zeros((nel, 12)), np.zeros((nel, 12, 12)), np.zeros((nel, 12, 12))
     Qw, T, dT = np.zeros((nel, npul, 12)), np.zeros(npul), np.zeros((npul, nel, 12))
+    z = None if drive.z is None else np.zeros_like(drive.z)
+    h = 1e-4 if z is not None else 0.0
+    o, odot = drive.moved(x, v)
+    damping = drive.strain_damping
 
     def contact(J):
-        return lambda: contact_forces(E, V, drive.S0, drive.w, drive.centres, drive.radii, omegas,
-                                      drive.prm, J, Q, Kq, Cv, Qw, T, dT, dT, T)
-    return {"elastic": _per_call(lambda: gradient_tangent(E, eld, False, g, K)),
-            "elastic_tangent": _per_call(lambda: gradient_tangent(E, eld, True, g, K)),
+        return lambda: contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii,
+                                             omegas, drive.prm, z, h, J, Q, Kq, Cv, Qw, T, dT,
+                                             dT, T)
+
+    def elastic(J):
+        def fn():
+            gradient_tangent(E, eld, J, g, K)
+            if damping.any():
+                damping_forces(E, V, eld, damping, J, g, K, Cv)
+        return fn
+    return {"elastic": _per_call(elastic(False)), "elastic_tangent": _per_call(elastic(True)),
             "contact": _per_call(contact(False)), "contact_jacobian": _per_call(contact(True)),
             **linear_algebra_costs(drive)}
 
@@ -84,26 +100,49 @@ def breakdown(r: dict, costs: dict) -> dict:
     return out
 
 
+def split(out: dict, res) -> dict:
+    """The counts, per-call costs (us) and the split of a belt scene's run (the pair
+    ``Scene.execute`` returns), the kernels timed at the run's last state."""
+    run, drive = res.extra["result"], res.extra["drive"]
+    costs = kernel_costs(drive, run.q[-1], run.v[-1], drive.omegas(float(run.t[-1]), run.v[-1]))
+    r = out["results"]
+    return {"counts": {k: r[k] for k in ("steps", "nfev", "njev", "nlu", "newton_iterations")},
+            "integration_cpu_s": r["integration_cpu_s"],
+            "per_call_us": {k: c * 1e6 for k, c in costs.items()}, **breakdown(r, costs)}
+
+
 def profile(n: int) -> dict:
     from ancf.scenes import SCENES
-    out, res = SCENES["belt2d"].execute({"n_elements": n})
-    run, drive = res.extra["result"], res.extra["drive"]
-    omegas = np.array([float(drive.omega_driver(run.t[-1])), float(run.v[-1, -1])])
-    costs = kernel_costs(drive, run.q[-1], run.v[-1], omegas)
-    return {"n": n, "counts": {k: out["results"][k] for k in ("steps", "nfev", "njev", "nlu",
-                                                             "newton_iterations")},
-            "integration_cpu_s": out["results"]["integration_cpu_s"],
-            "per_call_us": {k: v * 1e6 for k, v in costs.items()},
-            **breakdown(out["results"], costs)}
+    return {"n": n, **split(*SCENES["belt2d"].execute({"n_elements": n}))}
+
+
+def profile_file(path: str, sets: list) -> dict:
+    """:func:`split` of ``ancf run belt-drive --file path --set ...``."""
+    from ancf.scenes import SCENES
+    from ancf.scenes.belt_drive import SEP
+    return {"file": path, **split(*SCENES["belt-drive"].execute({"file": path,
+                                                                  "set": SEP.join(sets)}))}
+
+
+def _line(label: str, p: dict) -> str:
+    return (f"{label}: integration {p['integration_cpu_s']:.3f} s; elastic {p['elastic_s']:.3f}, "
+            f"contact {p['contact_s']:.3f}, linear algebra {p['linear_algebra_s']:.3f}, "
+            f"other {p['other_s']:.3f} s; counts {p['counts']}; per call (us) "
+            + ", ".join(f"{k} {v:.1f}" for k, v in p["per_call_us"].items()))
 
 
 def main(argv=None) -> int:
-    for n in [int(a) for a in (sys.argv[1:] if argv is None else argv)] or [20, 40]:
-        p = profile(n)
-        print(f"n = {n}: integration {p['integration_cpu_s']:.3f} s; elastic {p['elastic_s']:.3f}, "
-              f"contact {p['contact_s']:.3f}, linear algebra {p['linear_algebra_s']:.3f}, "
-              f"other {p['other_s']:.3f} s; counts {p['counts']}; per call (us) "
-              + ", ".join(f"{k} {v:.1f}" for k, v in p["per_call_us"].items()))
+    ap = argparse.ArgumentParser(prog="python -m benchmarks.belt_profile",
+                                 description=__doc__.split("\n")[0])
+    ap.add_argument("n", type=int, nargs="*", help="belt2d element counts (default 20 40)")
+    ap.add_argument("--file", help="a drive file instead of belt2d")
+    ap.add_argument("--set", action="append", default=[], help="overrides of the file")
+    args = ap.parse_args(argv)
+    if args.file:
+        print(_line(args.file, profile_file(args.file, args.set)))
+        return 0
+    for n in args.n or [20, 40]:
+        print(_line(f"n = {n}", profile(n)))
     return 0
 
 

@@ -25,7 +25,7 @@ from ancf.belts import friction
 from ancf.belts.arm2d import COORD, arm_geometry
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact2d import contact_forces, contact_points, contact_state
-from ancf.belts.forces import Drive2D
+from ancf.belts.forces import DAMPING_JACOBIANS, Drive2D
 from ancf.elements.dufva2d import DufvaBelt2D
 from ancf.core.mesh import BeamMesh
 from ancf.core.pattern import ReducedPattern, scatter
@@ -184,15 +184,17 @@ class BeltDrive(PulleyDrive):
     """The assembled model of a belt on its pulleys: a :class:`BeltSpec` (the thesis
     drive), or a :class:`Belt2DSpec` on any path with the pulleys of ``rig``, the
     belt's weight under ``gravity`` (m/s^2) and its strain-rate ``damping`` (dEA N s,
-    dEI N m^2 s; :func:`ancf.elements.dufva2d.damping_forces`)."""
+    dEI N m^2 s; :func:`ancf.elements.dufva2d.damping_forces`), whose part of the march's
+    iteration matrix is ``damping_jacobian`` (:data:`ancf.belts.forces.DAMPING_JACOBIANS`)."""
 
     contact_state = staticmethod(contact_state)
     contact_forces = staticmethod(contact_forces)
 
     def __init__(self, spec: Belt2DSpec, rig: Rig | None = None, gravity=(0.0, 0.0),
-                 damping=(0.0, 0.0)):
+                 damping=(0.0, 0.0), damping_jacobian: str = "exact"):
         self.spec = s = spec
         self.strain_damping = np.array(damping, dtype=float)
+        self.damping_jacobian = DAMPING_JACOBIANS.index(damping_jacobian)
         self.mesh = BeamMesh(s.belt_length, s.n_elements, SLOTS, closed=True)
         self.q0 = laid_belt(s.path, s.belt_length, s.n_elements).ravel()
         self.element = DufvaBelt2D(self.mesh.lengths, self.q0[self.mesh.dofmap],
@@ -264,4 +266,4 @@ class BeltDrive(PulleyDrive):
         return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.strain_damping,
                        self.S0, self.w, r.centres, r.radii, self.prm, r.free, r.inertia,
                        r.damping, self.weight, r.arms, self.z, self.h,
-                       np.zeros((2, r.radii.size)))
+                       np.zeros((2, r.radii.size)), self.damping_jacobian)

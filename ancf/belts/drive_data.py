@@ -51,7 +51,10 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
 * ``[contact]``: the penalty ``k_p`` (N/m^2), ``c_p`` (N s/m^2) and ``gauss_points``.
 * ``[run]``: ``t_end``, ``dt``, ``output_dt``, ``steady_window`` (s: the averaging window
   before t_end), ``start`` (``settled`` or ``laid``), ``rho_inf``, ``newton_tol``,
-  ``max_steps``.
+  ``max_steps``, modified Newton's ``refresh_ratio`` and ``newton_accept``
+  (:mod:`ancf.solvers.alpha_march`; their defaults are the march's defaults) and the belt
+  damping's part of the iteration matrix ``damping_jacobian``
+  (:data:`ancf.belts.forces.DAMPING_JACOBIANS`).
 
 Keys without a default (:data:`REQUIRED`) must be given.
 """
@@ -65,10 +68,12 @@ import numpy as np
 from ancf.belts import friction
 from ancf.belts.contact2d import SUPPORTED_POINTS
 from ancf.belts.contact3d import SUPPORTED_RULES
+from ancf.belts.forces import DAMPING_JACOBIANS
 from ancf.belts.path import PulleyPath
 from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS
 from ancf.common.inputs import MAX_STEPS
 from ancf.common.params import InputError, Param
+from ancf.solvers.alpha_march import ACCEPT, REFRESH_RATIO
 
 REQUIRED = None  # the default of a key that must be given (Param's "no default")
 BOUND = 1e3      # m: coordinates of centres and pivots within +-BOUND
@@ -272,6 +277,16 @@ RUN = _keys(
     Param("rho_inf", 0.5, float, "-", "generalized-alpha spectral radius", lo=0, hi=1),
     Param("newton_tol", 1e-7, float, "-", "Newton tolerance", lo=1e-14, hi=1e-3),
     Param("max_steps", 400_000, int, doc="step budget", lo=1, hi=MAX_STEPS),
+    Param("refresh_ratio", REFRESH_RATIO, float, "-", "modified Newton: the kept iteration "
+          "matrix is refactored when an increment exceeds this fraction of the one before",
+          lo=0.1, hi=0.95),
+    Param("newton_accept", ACCEPT[0], str, doc="the converged step's state: 'applied', the "
+          "iterate after the last increment; 'evaluated', the last evaluated iterate once the "
+          "increment from it is below newton_tol (one residual evaluation fewer per step)",
+          choices=ACCEPT),
+    Param("damping_jacobian", DAMPING_JACOBIANS[0], str, doc="the belt damping's part of the "
+          "iteration matrix: 'exact', or 'rate' (dQ_d/dz' only, dQ_d/dz left out: the same "
+          "residual, a cheaper matrix)", choices=DAMPING_JACOBIANS),
 )
 
 @dataclass(frozen=True)

@@ -106,4 +106,5 @@ def build(d: DriveDescription) -> BeltDrive | Belt3DDrive:
     if b["element"] == "plate36":
         return Belt3DDrive(spec3d(d), rig(d, dim=3), d.gravity)
     return BeltDrive(spec(d), rig(d), d.gravity,
-                     laid_factor(b) * np.array([b["damping_axial"], b["damping_bending"]]))
+                     laid_factor(b) * np.array([b["damping_axial"], b["damping_bending"]]),
+                     d.run["damping_jacobian"])

@@ -21,7 +21,8 @@ import numpy as np
 from ancf.belts.forces import evaluate
 from ancf.belts.system import PAIRS, belt_system, steps, window_weights
 from ancf.solvers import banded
-from ancf.solvers.alpha_march import BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE, march
+from ancf.solvers.alpha_march import (BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE,
+                                      REFRESH_RATIO, march, newton_settings)
 from ancf.solvers.generalized_alpha import AlphaOptions, step_times
 from ancf.solvers.result import DynamicResult
 
@@ -35,6 +36,8 @@ class BeltOptions:
     dt: float = 2.5e-4
     rho_inf: float = 0.5
     newton_tol: float = 1e-7     # beta' |d acc|_inf <= tol (1 + |z|_inf)
+    refresh_ratio: float = REFRESH_RATIO  # modified Newton: refactor when |d_k| > it |d_k-1|
+    newton_accept: str = "applied"  # the converged state (ancf.solvers.alpha_march.ACCEPT)
     max_iter: int = 12
     max_halvings: int = 4
     max_steps: int = 400_000
@@ -75,8 +78,9 @@ class _March:
 
     def run(self, st, k, k_stop, slot, out_x, out_v, limit):
         o = self.opt
-        return march(self.ts, k, k_stop, st, self.system, self.hf, self.cf, self.count,
-                     o.newton_tol, o.max_iter, limit, o.max_steps, slot, out_x, out_v)
+        newton = newton_settings(o.newton_tol, o.refresh_ratio, o.newton_accept)
+        return march(self.ts, k, k_stop, st, self.system, self.hf, self.cf, self.count, newton,
+                     o.max_iter, limit, o.max_steps, slot, out_x, out_v)
 
 
 def _halved(m: _March, st, ta, tb, depth, limit, s=-1, out=None) -> bool:

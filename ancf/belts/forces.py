@@ -42,6 +42,12 @@ from ancf.common.dispatch import implements
 from ancf.core.pattern import scatter
 from ancf.elements import dufva2d, plate36
 
+#: the belt damping's part of the iteration matrix (a 2D drive's ``damping_jacobian``):
+#: exact (dQ_d/dz and dQ_d/dz'), or rate (dQ_d/dz' only; dQ_d/dz, proportional to the strain
+#: rates, left out: the residual, and so the converged steps, are the same)
+DAMPING_JACOBIANS = ("exact", "rate")
+
+
 class Drive2D(NamedTuple):
     """The compiled data of a 2D belt drive (SI units)."""
 
@@ -64,6 +70,8 @@ class Drive2D(NamedTuple):
     h: np.ndarray        # (1,) the step the trial state is of, s (the march's)
     last: np.ndarray     # (2, np) work: the pulley speeds (rad/s) and the belt's moments on
     #                      them T_c,p (N m) at the last evaluation
+    damping_jacobian: int = 0  # the damping's part of the iteration matrix: an index of
+    #                      DAMPING_JACOBIANS (0 exact; 1 rate: dQ_d/dz' only)
 
 
 class Drive3D(NamedTuple):
@@ -99,10 +107,14 @@ def drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
 @njit(cache=True)
 def _belt_damping(E, V, drive, want_J, g, K, Cv):
     """The belt's strain-rate damping forces Q_d (:func:`ancf.elements.dufva2d.damping_forces`)
-    into g and dQ_d/dz into K, like the elastic forces; dQ_d/dz' is subtracted from Cv,
+    into g and dQ_d/dz into K, like the elastic forces (not with ``damping_jacobian`` rate:
+    :func:`ancf.elements.dufva2d.damping_forces_rate`); dQ_d/dz' is subtracted from Cv,
     which holds dQ_c/dz' of the contact forces on the belt's other side."""
     C = np.zeros_like(Cv)
-    dufva2d.damping_forces(E, V, drive.element, drive.strain_damping, want_J, g, K, C)
+    if want_J and drive.damping_jacobian == 1:
+        dufva2d.damping_forces_rate(E, V, drive.element, drive.strain_damping, g, C)
+    else:
+        dufva2d.damping_forces(E, V, drive.element, drive.strain_damping, want_J, g, K, C)
     Cv -= C
 
 

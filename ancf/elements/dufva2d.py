@@ -212,23 +212,55 @@ def gradient_tangent(E, data, want_K, g, K):
 
 
 @njit(cache=True)
-def _measure_hessian(Jv, gm, Hm, hI, hJ, inv_l, z, Hs, HJ):
+def _live_tangent(Hs, Jv, Hm, HJ, live):
+    """Hs += Jv^T Hm Jv (upper triangle) as ``add_point_tangent(Hs, 1.0, Jv, Hm, HJ)``,
+    over the point variables with a nonzero row of the symmetric Hm only (live: (7,) int
+    work): the terms left out are products with an exact zero, so the sums are the same
+    (the axial strain's Hessian has 2 live rows of 7: a seventh of the work)."""
+    nv, nd = Jv.shape
+    nl = 0
+    for i in range(nv):
+        for j in range(nv):
+            if Hm[i, j] != 0.0:
+                live[nl] = i
+                nl += 1
+                break
+    for t in range(nl):
+        i = live[t]
+        for b in range(nd):
+            acc = 0.0
+            for u in range(nl):
+                acc += Hm[i, live[u]] * Jv[live[u], b]
+            HJ[i, b] = acc
+    for a in range(nd):
+        for b in range(a, nd):
+            acc = 0.0
+            for t in range(nl):
+                acc += Jv[live[t], a] * HJ[live[t], b]
+            Hs[a, b] += acc
+
+
+@njit(cache=True)
+def _measure_hessian(Jv, gm, Hm, hI, hJ, inv_l, z, Hs, HJ, live):
     """Hs = d2m/de2 (nd, nd) of a point measure m with point gradient gm and Hessian Hm:
     Jv^T Hm Jv and the nodal shear sines' Hessians hI, hJ times dm/d(s, s_x)."""
     Hs[:] = 0.0
-    add_point_tangent(Hs, 1.0, Jv, Hm, HJ)
+    _live_tangent(Hs, Jv, Hm, HJ, live)
     for a in range(Hs.shape[0]):
         for b in range(a + 1, Hs.shape[0]):
             Hs[b, a] = Hs[a, b]
     bI = (1.0 - z) * gm[4] - inv_l * gm[5]
     bJ = z * gm[4] + inv_l * gm[5]
-    _add_nodal_curvature(Hs, bI, bJ, hI, hJ, 0.0, 0.0)
+    if bI != 0.0 or bJ != 0.0:  # else it adds exact zeros
+        _add_nodal_curvature(Hs, bI, bJ, hI, hJ, 0.0, 0.0)
 
 
 @njit(cache=True)
-def _add_damping(e, ww, d, Jv, gm, Hm, ve, want_J, g, K, C, hI, hJ, inv_l, z, Hs, HJ, G):
+def _add_damping(e, ww, d, Jv, gm, Hm, ve, want_K, want_C, g, K, C, hI, hJ, inv_l, z, Hs, HJ,
+                 G, live):
     """A point's damping force ww d m' dm/de of the measure m (gradient gm, Hessian Hm
-    in the point variables) into g[e] and, if want_J, its Jacobians into K[e], C[e]."""
+    in the point variables) into g[e] and its Jacobians into K[e] (if want_K) and C[e]
+    (if want_C)."""
     nd = ve.size
     rate = 0.0
     for a in range(nd):
@@ -240,14 +272,17 @@ def _add_damping(e, ww, d, Jv, gm, Hm, ve, want_J, g, K, C, hI, hJ, inv_l, z, Hs
     f = ww * d
     for a in range(nd):
         g[e, a] += f * rate * G[a]
-    if not want_J:
+    if want_C:
+        for a in range(nd):
+            for b in range(nd):
+                C[e, a, b] += f * G[a] * G[b]
+    if not want_K:
         return
-    _measure_hessian(Jv, gm, Hm, hI, hJ, inv_l, z, Hs, HJ)
+    _measure_hessian(Jv, gm, Hm, hI, hJ, inv_l, z, Hs, HJ, live)
     u = np.dot(Hs, ve)
     for a in range(nd):
         for b in range(nd):
             K[e, a, b] += f * (G[a] * u[b] + rate * Hs[a, b])
-            C[e, a, b] += f * G[a] * G[b]
 
 
 @njit(cache=True)
@@ -265,19 +300,18 @@ def _point_measure(m, want_J, a0, a1, c0, c1, s, sx, gm, Hm):
 
 
 @njit(cache=True)
-def damping_forces(E, V, data, d, want_J, g, K, C):
-    """Add the strain-rate damping forces Q_d (nel, 12) to ``g`` (N or N m) and, if
-    ``want_J``, dQ_d/de to ``K`` and dQ_d/de' to ``C`` (nel, 12, 12) (module docstring).
-    E, V: (nel, 6, 2) coordinates and velocities; d = (dEA N s, dEI N m^2 s)."""
+def _damping(E, V, data, d, want_K, want_C, g, K, C):
+    """:func:`damping_forces` with dQ_d/de (want_K) and dQ_d/de' (want_C) apart."""
     BX, BXX, xi, wq, lengths, k = data
     nel, nq = wq.shape
     nd = 2 * E.shape[1]
     gI, gJ, gm = np.empty(4), np.empty(4), np.empty(7)
     hI, hJ, Hm = np.zeros((4, 4)), np.zeros((4, 4)), np.zeros((7, 7))
     Jv, HJ, Hs, G = np.empty((7, nd)), np.empty((7, nd)), np.empty((nd, nd)), np.empty(nd)
+    live = np.empty(7, dtype=np.int64)
     for e in range(nel):
-        sI = _nodal_shear_sine(E, e, 0, want_J, gI, hI)
-        sJ = _nodal_shear_sine(E, e, 1, want_J, gJ, hJ)
+        sI = _nodal_shear_sine(E, e, 0, want_K, gI, hI)
+        sJ = _nodal_shear_sine(E, e, 1, want_K, gJ, hJ)
         ve = V[e].ravel().copy()
         inv_l = 1.0 / lengths[e]
         for q in range(nq):
@@ -288,9 +322,25 @@ def damping_forces(E, V, data, d, want_J, g, K, C):
             for m in range(2):
                 if d[m] == 0.0:
                     continue
-                _point_measure(m, want_J, a0, a1, c0, c1, s, sx, gm, Hm)
-                _add_damping(e, ww, d[m], Jv, gm, Hm, ve, want_J, g, K, C, hI, hJ, inv_l, z,
-                             Hs, HJ, G)
+                _point_measure(m, want_K, a0, a1, c0, c1, s, sx, gm, Hm)
+                _add_damping(e, ww, d[m], Jv, gm, Hm, ve, want_K, want_C, g, K, C, hI, hJ,
+                             inv_l, z, Hs, HJ, G, live)
+
+
+@njit(cache=True)
+def damping_forces(E, V, data, d, want_J, g, K, C):
+    """Add the strain-rate damping forces Q_d (nel, 12) to ``g`` (N or N m) and, if
+    ``want_J``, dQ_d/de to ``K`` and dQ_d/de' to ``C`` (nel, 12, 12) (module docstring).
+    E, V: (nel, 6, 2) coordinates and velocities; d = (dEA N s, dEI N m^2 s)."""
+    _damping(E, V, data, d, want_J, want_J, g, K, C)
+
+
+@njit(cache=True)
+def damping_forces_rate(E, V, data, d, g, C):
+    """:func:`damping_forces` with dQ_d/de' (into ``C``) but not dQ_d/de: an iteration
+    matrix's approximation (dQ_d/de is proportional to the strain rates: int dEA (deps/de
+    (d2eps/de2 e')^T + eps' d2eps/de2) dx) that costs a fraction of the exact one."""
+    _damping(E, V, data, d, False, True, g, np.zeros((0, 0, 0)), C)
 
 
 class DufvaBelt2D(BeltElement):

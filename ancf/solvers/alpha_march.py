@@ -15,10 +15,17 @@ residual r(acc1) = M acc1 + f(q_{n+1}, q'_{n+1}, t_{n+1}):
 
 * the iteration matrix and its factors are kept across iterations and steps; they are
   refreshed (new matrix, new factors) when there are none, the step size changed, an
-  increment fails to contract (|d_k| > REFRESH_RATIO |d_{k-1}|) or was damped;
+  increment fails to contract (|d_k| > refresh_ratio |d_{k-1}|, :data:`REFRESH_RATIO`
+  unless the settings say otherwise) or was damped;
 * converged when beta' |d|_inf <= tol (1 + |q|_inf) over the system's first m
   coordinates, q at the step's start or at the last full evaluation as the system
   says, and beta' lam |d_i| <= tol for the others (a position increment);
+* the converged step's state (``accept``, :data:`ACCEPT`): ``applied``, the iterate
+  the last increment leads to (where a damped system has just evaluated its residual to
+  damp it), or ``evaluated`` (damped systems only): the last evaluated iterate, once the
+  increment from it is below the tolerance, without applying it.  ``evaluated`` saves
+  one residual evaluation per step (the one at the end of the last increment); the two
+  differ by that increment, within the tolerance;
 * a step that fails with kept factors is retried once with fresh ones (pivoted); one
   that fails with fresh factors ends the march with NEWTON_FAILED, the state at the
   step's start and no factors, and the caller takes it with smaller steps;
@@ -42,7 +49,7 @@ switching between sticking, sliding and no contact).
 Counters ``count``: 0 residual evaluations, 1 iteration matrices, 2 factorisations,
 3 solves (= Newton iterations), 4 steps; entries past 4 belong to the system.
 ``st`` = (q, q', q'', a) is updated in place; ``hf`` (1,) holds the step size (s) the kept
-factors belong to (nan: none).
+factors belong to (nan: none); ``newton`` is :func:`newton_settings`'s vector.
 """
 from __future__ import annotations
 
@@ -53,9 +60,22 @@ from ancf.common.dispatch import as_struct
 from ancf.common.leaf import leaf
 
 DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
-#: contraction ratio above which the kept iteration matrix is refreshed
+#: contraction ratio above which the kept iteration matrix is refreshed (the default)
 REFRESH_RATIO = 0.5
 MAX_BACKTRACKS = 8  # trial lengths 1, 1/2, ... 1/128 of a Newton increment
+#: the state a converged step takes (module docstring), the first the default
+ACCEPT = ("applied", "evaluated")
+
+
+def newton_settings(tol: float, refresh_ratio: float = REFRESH_RATIO,
+                    accept: str = ACCEPT[0]) -> np.ndarray:
+    """The march's Newton settings [tol, refresh_ratio, accept's index in ACCEPT]
+    (module docstring); ValueError naming a setting out of its range."""
+    if not 0.0 < refresh_ratio < 1.0:
+        raise ValueError(f"refresh_ratio must be in (0, 1) (got {refresh_ratio!r})")
+    if accept not in ACCEPT:
+        raise ValueError(f"accept must be one of {', '.join(ACCEPT)} (got {accept!r})")
+    return np.array([tol, refresh_ratio, float(ACCEPT.index(accept))])
 
 
 def system_prepare(system, k):
@@ -147,16 +167,29 @@ def _converged(bp, dn, lam, d, xs, m, tol):
 
 
 @njit(cache=True)
-def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
+def _take(acc1, st, h, cf, x1, v1, a1):
+    """The step's state from its accepted acceleration acc1 (x1, v1, a1: work)."""
+    _trial(acc1, st, h, cf, True, x1, v1, a1)
+    x, v, acc, a = st
+    x[:] = x1
+    v[:] = v1
+    acc[:] = acc1
+    a[:] = a1
+
+
+@njit(cache=True)
+def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
     """One step of size h ending at step time index k; True on convergence."""
     x, v, acc, a = st
     am, af, gamma, beta = cf
+    tol, ratio, evaluated = newton[0], newton[1], newton[2] == 1.0
     bp = h * h * beta * (1 - af) / (1 - am)
     gp = h * gamma * (1 - af) / (1 - am)
     system_prepare(system, k)
     acc1 = acc.copy()
     r, rt = np.zeros(acc.size), np.zeros(acc.size)
     m, from_start, damped, moving = system_tests(system)
+    evaluated = evaluated and damped
     refresh = fresh or hf[0] != h
     x1, v1, a1 = np.empty(acc.size), v.copy(), np.empty(acc.size)  # at the last evaluation
     have_r, d_prev = False, np.inf
@@ -174,6 +207,10 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
         d = -r
         system_solve(system, d)
         count[3] += 1
+        if evaluated and _converged(bp, np.max(np.abs(d[:m])), 1.0, d, x if from_start else x1,
+                                    m, tol):
+            _take(acc1, st, h, cf, x1, v1, a1)  # the evaluated iterate, r its residual
+            return True
         lam = 1.0
         if damped:
             lam = _backtrack(system, acc1, d, st, h, k, cf, bp, gp, count, r, rt, moving, x1, v1, a1)
@@ -186,17 +223,13 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
         dn = lam * np.max(np.abs(d[:m]))
         if not np.isfinite(dn):
             return False
-        if _converged(bp, dn, lam, d, x if from_start else x1, m, tol):
+        if not evaluated and _converged(bp, dn, lam, d, x if from_start else x1, m, tol):
             if lam == 0.5 ** MAX_BACKTRACKS:  # backtracking ran out: last residual elsewhere
                 _evaluate(system, acc1, st, h, k, cf, bp, gp, False, count, rt, moving, x1, v1,
                           a1)
-            _trial(acc1, st, h, cf, True, x1, v1, a1)
-            x[:] = x1
-            v[:] = v1
-            acc[:] = acc1
-            a[:] = a1
+            _take(acc1, st, h, cf, x1, v1, a1)
             return True
-        if dn > REFRESH_RATIO * d_prev or lam < 1.0:
+        if dn > ratio * d_prev or lam < 1.0:
             refresh = True
             if have_r:
                 _evaluate(system, acc1, st, h, k, cf, bp, gp, True, count, r, moving, x1, v1, a1)
@@ -205,7 +238,7 @@ def _step(h, k, st, system, hf, cf, count, tol, max_iter, fresh):
 
 
 @njit(cache=True)
-def march(ts, k, k_stop, st, system, hf, cf, count, tol, max_iter, limit, max_steps, slot,
+def march(ts, k, k_stop, st, system, hf, cf, count, newton, max_iter, limit, max_steps, slot,
           out_x, out_v):
     """Steps ts[k] -> ts[k_stop] (s); returns (status, step index reached).  The states
     after the steps i with slot[i] >= 0 go to out_x/out_v[slot[i]]; at most max_steps
@@ -219,11 +252,11 @@ def march(ts, k, k_stop, st, system, hf, cf, count, tol, max_iter, limit, max_st
         h = ts[k + 1] - ts[k]
         for i in range(4):
             backup[i][:] = st[i]
-        ok = _step(h, k + 1, st, system, hf, cf, count, tol, max_iter, False)
+        ok = _step(h, k + 1, st, system, hf, cf, count, newton, max_iter, False)
         if not ok:
             for i in range(4):
                 st[i][:] = backup[i]
-            ok = _step(h, k + 1, st, system, hf, cf, count, tol, max_iter, True)
+            ok = _step(h, k + 1, st, system, hf, cf, count, newton, max_iter, True)
         if not ok:
             for i in range(4):
                 st[i][:] = backup[i]

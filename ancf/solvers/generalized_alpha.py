@@ -32,7 +32,8 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ancf.solvers.alpha_compiled import CompiledAlpha
-from ancf.solvers.alpha_march import BLOW_UP, BUDGET, DONE, NON_FINITE, kinematics, march
+from ancf.solvers.alpha_march import (BLOW_UP, BUDGET, DONE, NON_FINITE, kinematics, march,
+                                      newton_settings)
 from ancf.solvers.result import DynamicResult, finish
 
 
@@ -264,7 +265,8 @@ def _run_compiled(model, st, s, t_out, ts, limit, opt):
     k, ok, msg, reached = 0, True, "reached t_end", ts.size - 1
     while ok:
         status, k = march(ts, k, ts.size - 1, state, ca.system, ca.hf, ca.cf, ca.count,
-                          opt.newton_tol, opt.max_iter, limit, opt.max_steps - st.steps, slot,
+                          newton_settings(opt.newton_tol), opt.max_iter, limit,
+                          opt.max_steps - st.steps, slot,
                           out_x, out_v)
         if status == DONE:
             break
