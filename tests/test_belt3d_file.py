@@ -133,3 +133,14 @@ def test_sweeps_and_recommend_vary_the_files_own_element(path, element):
         for n in g["n_elements"]:
             for k in g["gauss_points"]:
                 SCENES["belt-drive"].resolve({**p, "n_elements": n, "gauss_points": k})
+
+
+@pytest.mark.parametrize("path", [THESIS3D, THREE3D])
+def test_the_plate_belt_files_have_a_steady_reference(path):
+    """The steady belt of a plate-belt file (the belt_drives chapter tabulates every
+    example's): its tensions balance each pulley's torque, (T_in - T_out) R."""
+    from ancf.belts.drive_steady import steady_reference
+    desc = load(path)
+    ref = steady_reference(desc)
+    assert len(ref["spans"]) == len(desc.pulleys) == len(ref["pulleys"])
+    assert all(s["tension_N"] > 0 for s in ref["spans"])

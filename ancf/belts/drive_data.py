@@ -322,8 +322,9 @@ def laid_factor(belt: dict) -> float:
     length s = x / (1 + prestretch) (x the stress-free length): the slope |r'| = (1 +
     prestretch) |r_x|, so its force EA (|r'| - 1 - prestretch) is E A (1 + prestretch)
     (|r_x| - 1); its energies and damping per ds, with its curvature and strain rates,
-    are those per dx times 1 + prestretch alike."""
-    return 1.0 + belt["prestretch"] if belt["strain_reference"] == "laid" else 1.0
+    are those per dx times 1 + prestretch alike.  A plate belt (``plate36``) has no
+    ``strain_reference``: its membrane is on the stress-free length (1)."""
+    return 1.0 + belt["prestretch"] if belt.get("strain_reference") == "laid" else 1.0
 
 
 def element_modulus(belt: dict) -> float:
