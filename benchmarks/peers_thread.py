@@ -23,7 +23,7 @@ with keys ``schema``, ``started``, ``command``, ``machine``, ``settings``, ``our
 ``exudyn`` (per side: ``cpu_s``, driven ``omega_driven`` at t_end and
 ``omega_driven_mean``, ``driver_torque_mean_Nm``, ``tension_tight_N`` and
 ``tension_slack_N`` at t_end (ours: the belt's force N |r_x| of
-:func:`ancf.checks.thread.true_force`, its axial force N beside it), the run's counts), ``ratio`` = ours / Exudyn CPU, and the
+:func:`ancf.checks.thread.real_force` under the file's strain law, its axial force N beside it), the run's counts), ``ratio`` = ours / Exudyn CPU, and the
 markdown table beside it.
 """
 from __future__ import annotations
@@ -39,7 +39,7 @@ from pathlib import Path
 import numpy as np
 
 from ancf.belts.drive_file import load
-from ancf.checks.thread import stiffness, true_force
+from ancf.checks.thread import real_force
 from benchmarks import peers
 from benchmarks.peers_thread_exudyn import N_ELEMENTS, SEGMENTS, STEP, T_END, WINDOW
 
@@ -83,7 +83,7 @@ def _ours(path: Path, t_end: float, extra: list, env: dict) -> dict:
     win = t >= t[-1] - window - 1e-9
     tight = next(s for s in r["spans"] if s["to"] == driver)
     slack = next(s for s in r["spans"] if s["from"] == driver)
-    force = partial(true_force, EA_alpha1=stiffness(load(path, sets)))  # N |r_x|, as Exudyn's
+    force = partial(real_force, desc=load(path, sets))  # the belt's force, as Exudyn's
     return {"sets": sets, "converged": True, "cpu_s": out["cpu_time_s"],
             "compile_cpu_s": out["compile_cpu_s"], "warnings": out["warnings"],
             "omega_driven": p[driven]["omega"][-1], "omega_driven_mean": p[driven]["omega_mean"],
