@@ -309,10 +309,9 @@ BAD = [  # (overrides, or an edit of the thesis file's data; the one line it giv
 ]
 
 
-@pytest.mark.parametrize("bad, message", BAD, ids=[m.split(":")[0].split(" ")[0] + f"-{i}"
-                                                   for i, (_, m) in enumerate(BAD)])
-def test_bad_input_is_one_line_naming_the_key(bad, message):
-    data = read(THESIS)
+def _one_line(path, bad, message):
+    """``bad`` (overrides, or an edit of the file's data) gives one line matching ``message``."""
+    data = read(path)
     with pytest.raises(InputError, match=message) as exc:
         if callable(bad):
             bad(data)
@@ -320,6 +319,12 @@ def test_bad_input_is_one_line_naming_the_key(bad, message):
         else:
             describe(override(data, bad))
     assert "\n" not in str(exc.value) and "allowed:" in str(exc.value)
+
+
+@pytest.mark.parametrize("bad, message", BAD, ids=[m.split(":")[0].split(" ")[0] + f"-{i}"
+                                                   for i, (_, m) in enumerate(BAD)])
+def test_bad_input_is_one_line_naming_the_key(bad, message):
+    _one_line(THESIS, bad, message)
 
 
 PLATE = EXAMPLES / "three_pulleys_3d.toml"
@@ -360,14 +365,7 @@ BAD_PLATE = [  # (overrides, or an edit of the 3D example's data; the one line i
                          ids=[m.split(" ")[0].rstrip(":") + f"-{i}"
                               for i, (_, m) in enumerate(BAD_PLATE)])
 def test_bad_plate_belt_input_is_one_line_naming_the_key(bad, message):
-    data = read(PLATE)
-    with pytest.raises(InputError, match=message) as exc:
-        if callable(bad):
-            bad(data)
-            describe(data)
-        else:
-            describe(override(data, bad))
-    assert "\n" not in str(exc.value) and "allowed:" in str(exc.value)
+    _one_line(PLATE, bad, message)
 
 
 def test_a_tensioner_pivot_at_its_centre_is_refused():
