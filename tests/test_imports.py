@@ -44,13 +44,36 @@ def test_help_loads_no_numerics(argv):
 
 def test_static_run_loads_no_sparse_matrices():
     """``ancf run cantilever`` numbers its band system from the elimination's selection
-    (:class:`ancf.core.constraints.Selection`): scipy.sparse is never loaded (numba loads
-    scipy.linalg itself, for its BLAS, on its first kernel), nor threadpoolctl (the BLAS
+    (:class:`ancf.core.constraints.Selection`): scipy.sparse is never loaded, nor threadpoolctl (the BLAS
     pool is pinned by the environment before numpy loads)."""
     loaded = _loaded_after(["run", "cantilever", "--json"], ("scipy.sparse", "pandas",
                                                              "matplotlib", "sympy", "dask",
                                                              "threadpoolctl"))
     assert loaded == []
+
+
+def test_static_run_loads_blas_without_scipy_linalg():
+    """Numba's BLAS check takes scipy's BLAS module alone (:mod:`ancf.common.blas`): not the
+    scipy.linalg package, whose import also loads numpy.f2py and numpy.testing (0.09 s)."""
+    loaded = _loaded_after(["run", "cantilever", "--json"],
+                           ("scipy.linalg", "numpy.f2py", "numpy.testing"))
+    assert loaded == ["scipy.linalg.cython_blas"]
+
+
+def test_the_preloaded_blas_serves_numba_and_scipy_linalg():
+    """After the preload, a kernel's matrix product runs on it, and a later ``import
+    scipy.linalg`` is the usual package, with the same BLAS module."""
+    code = ("import sys, numpy as np\nfrom ancf.common.blas import preload_cython_blas\n"
+            "assert preload_cython_blas()\nblas = sys.modules['scipy.linalg.cython_blas']\n"
+            "import numba\nf = numba.njit(lambda a: a @ a)\n"
+            "a = np.arange(9.0).reshape(3, 3)\nassert np.allclose(f(a), a @ a)\n"
+            "import scipy.linalg\nfrom scipy.linalg import cython_blas\n"
+            "assert cython_blas is blas and 'scipy.linalg' in sys.modules\n"
+            "assert np.allclose(scipy.linalg.solve(a + np.eye(3) * 9, a[0]),\n"
+            "                   np.linalg.solve(a + np.eye(3) * 9, a[0]))\n")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
+                       timeout=300)
+    assert p.returncode == 0, p.stderr
 
 
 def test_run_loads_its_scene_only():
