@@ -314,3 +314,31 @@ def test_the_time_limit_counts_cpu_without_compilation(monkeypatch):
         numba.core.event.unregister("numba:compiler_lock", listener)
     assert [json.loads(line) for line in out.getvalue().splitlines()] == [
         {"compiling": True}, {"compiling": False}]
+
+
+def test_the_other_workers_start_after_the_pilot_compiled(monkeypatch):
+    """Workers started together on an empty kernel cache each compile the same kernels: the
+    pilot starts alone, the others once it returned a row, died, or ran PILOT_CPU seconds
+    of its first run outside compilation."""
+    from types import SimpleNamespace
+    from ancf.study import sweep
+
+    wall, cpu = [0.0], [0.0]
+    monkeypatch.setattr(sweep.time, "monotonic", lambda: wall[0])
+    monkeypatch.setattr(sweep, "process_cpu", lambda pid: cpu[0])
+    alive = SimpleNamespace(poll=lambda: None)
+    pilot = SimpleNamespace(proc=alive, clock=None)
+    assert not sweep._pilot_done(pilot, 0)        # starting up: no run yet
+    pilot.clock = sweep._RunClock(pid=0)
+    pilot.clock.note(True)
+    wall[0], cpu[0] = 60.0, 60.0                  # a minute of compiling
+    assert not sweep._pilot_done(pilot, 0)
+    pilot.clock.note(False)
+    cpu[0] = 60.0 + 0.9 * sweep.PILOT_CPU
+    assert not sweep._pilot_done(pilot, 0)
+    cpu[0] = 60.0 + sweep.PILOT_CPU
+    assert sweep._pilot_done(pilot, 0)            # its kernels are in the cache by now
+    pilot.clock = None
+    assert sweep._pilot_done(pilot, 1)            # a row came back
+    pilot.proc = SimpleNamespace(poll=lambda: -9)
+    assert sweep._pilot_done(pilot, 0)            # it died: the others go on without it

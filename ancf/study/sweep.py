@@ -61,6 +61,7 @@ STATUSES = ("ok", "not-converged", "failed", "timeout", "invalid", "worker-died"
 RETRY = ("failed", "timeout", "worker-died")
 COMPILE_LIMIT = 1800.0  # s of wall time one compilation (or cache load) of a kernel may take
 HANG_FACTOR = 10.0      # wall time beyond this many times the (CPU) time limit: a hang
+PILOT_CPU = 2.0  # s of its first run's CPU (compiling left out) before the pilot's peers start
 _ENV = {**BLAS_ENV, "PYTHONWARNINGS": "ignore"}
 
 
@@ -511,11 +512,26 @@ class _Runner:
             sel.close()
 
 
+def _pilot_done(pilot, rows: int) -> bool:
+    """May the other workers start?  One worker, the pilot, starts first: workers started
+    together on an empty kernel cache would each compile the same kernels (numba writes a
+    kernel to the cache once compiled), which in a fresh clone doubled the compile seconds
+    of every sweep.  The others start, loading what the pilot compiled, once it has
+    returned a row, died, or run :data:`PILOT_CPU` seconds of its first run outside
+    compilation (a run's kernels compile as it starts)."""
+    if rows or pilot.proc.poll() is not None:
+        return True
+    clock = pilot.clock
+    return clock is not None and clock.compiling is None and clock.cpu() >= PILOT_CPU
+
+
 def _run_local(todo: list[dict], workers: int, time_limit: float):
-    """Yield one row per task, running ``workers`` worker processes at a time."""
+    """Yield one row per task, running ``workers`` worker processes at a time (the first
+    of them alone at the start: :func:`_pilot_done`)."""
     pending = deque(todo)
     sel = selectors.DefaultSelector()
     runners: list[_Runner] = []
+    rows = 0
 
     def spawn():
         r = _Runner()
@@ -528,9 +544,13 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
         (r.kill if kill else r.close)()
 
     try:
-        for _ in range(max(1, min(workers, len(todo)))):
-            spawn()
+        spawn()
+        pilot, waiting = runners[0], max(1, min(workers, len(todo))) - 1
         while pending or any(r.task is not None for r in runners):
+            if waiting and _pilot_done(pilot, rows):
+                for _ in range(waiting):
+                    spawn()
+                waiting = 0
             for r in runners:
                 if r.ready and r.task is None and pending:
                     r.send(pending.popleft())
@@ -548,6 +568,7 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
                         raise RuntimeError("sweep worker failed to start" + tail)
                     spawn()
                     if row is not None:
+                        rows += 1
                         yield row
                     continue
                 for m in msgs:
@@ -555,6 +576,7 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
                         r.ready = True
                     elif "key" in m:
                         r.task = None
+                        rows += 1
                         yield m
                     elif "compiling" in m and r.clock is not None:
                         r.clock.note(m["compiling"])
@@ -565,6 +587,7 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
                 row = r.timeout_row(reason)
                 retire(r, kill=True)
                 spawn()
+                rows += 1
                 yield row
     finally:
         for r in list(runners):
