@@ -111,7 +111,7 @@ def contact_points3d(lengths, widths, rule):
     return S0, W[None, :] * A * B
 
 
-@njit(cache=True)
+@leaf
 def _sides(S0, w, e):
     """Element sides a, b (m) from its rule: sum w = a b, sum w S_1 = a^2 b m_x,
     sum w S_2 = a b^2 m_y (exact for every supported rule)."""
@@ -123,7 +123,7 @@ def _sides(S0, w, e):
     return sx / (_MOMENTS[0] * area), sy / (_MOMENTS[1] * area)
 
 
-@njit(cache=True)
+@leaf
 def _control_points(E, e, a, b, P):
     """P (16, 3): the Bernstein control points of element e (sides a, b, m); the mid
     surface lies in their convex hull (see ``_bernstein_controls``)."""
@@ -137,7 +137,7 @@ def _control_points(E, e, a, b, P):
                     P[i, c] += ck * E[e, k, c]
 
 
-@njit(cache=True)
+@leaf
 def _may_touch(P, o, p, R, X):
     """False only if the element's mid surface provably stays outside the pulley's
     cylinder |N| < R.  N = (I - p p^T)(r - o) is affine in r, so it maps the convex
@@ -161,14 +161,14 @@ def _may_touch(P, o, p, R, X):
     return dist - rb <= R + BOUND_MARGIN * scale
 
 
-@njit(cache=True)
+@leaf
 def _unit_axis(axes, p, out):
     s = np.sqrt(axes[p, 0] ** 2 + axes[p, 1] ** 2 + axes[p, 2] ** 2)
     for c in range(3):
         out[c] = axes[p, c] / s
 
 
-@njit(cache=True)
+@leaf
 def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
     """Contact law at one point, a = r - o (m), vr = rdot - odot (m/s), unit axis p.
     Fills n, t, v_s, f_t (3,) and returns |N|, d, F_n, |v_s| and the branch:
@@ -203,10 +203,10 @@ def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
     return rho, d, Fn, vsn, friction.force((vs[0], vs[1], vs[2]), vsn, Fn, prm, ft)
 
 
-@njit(cache=True)
-def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, G, D):
+@leaf
+def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, gF, G, D):
     """D (4, 7): derivatives of (f_0, f_1, f_2, tau = -|N| t . f_t) with respect to
-    (r, rdot, omega) on the active branch (F_n > 0); G (3, 7) scratch.
+    (r, rdot, omega) on the active branch (F_n > 0); gF (7,), G (3, 7) scratch.
 
     dn/dr = t t^T / |N|, dt/dr = -n t^T / |N|, d|N|/dr = n^T;
     dF_n = -(k_p n + c_p (t . vr) t / |N|) . dr - c_p n . drdot;
@@ -215,10 +215,10 @@ def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, G, D)
     tv = t[0] * vr[0] + t[1] * vr[1] + t[2] * vr[2]
     nw = n[0] * vr[0] + n[1] * vr[1] + n[2] * vr[2]
     tw = tv - om * R
-    gF = np.zeros(7)
     for c in range(3):
         gF[c] = -kp * n[c] - cp * tv * t[c] / rho
         gF[3 + c] = -cp * n[c]
+    gF[6] = 0.0
     # G = dv_s / d(r, rdot, omega)
     for i in range(3):
         for c in range(3):
@@ -266,17 +266,25 @@ def _mid_velocity(V, S0, e, q, v):
 
 
 @leaf
-def _penetrates(E, S0, e, q, centres, j, p, R, r):
-    """False if point q of element e is outside pulley j's cylinder (d = R - |N| < 0;
-    unit axis p): the position r (into r) and penetration of :func:`_mid_surface` and
-    :func:`_point_law` with the same arithmetic, without the velocities, so the contact
-    kernel skips such a point (it has no force)."""
-    r[:] = 0.0
-    for k in range(S0.shape[2]):
-        s = S0[e, q, k]
-        for c in range(3):
-            r[c] += s * E[e, k, c]
-    a0, a1, a2 = r[0] - centres[j, 0], r[1] - centres[j, 1], r[2] - centres[j, 2]
+def _positions(E, S0, e, rq):
+    """rq (nq, 3): the mid-surface positions (m) of element e's contact points, with the
+    arithmetic of :func:`_mid_surface`."""
+    for q in range(S0.shape[1]):
+        r0 = r1 = r2 = 0.0
+        for k in range(S0.shape[2]):
+            s = S0[e, q, k]
+            r0 += s * E[e, k, 0]
+            r1 += s * E[e, k, 1]
+            r2 += s * E[e, k, 2]
+        rq[q, 0], rq[q, 1], rq[q, 2] = r0, r1, r2
+
+
+@leaf
+def _penetrates(rq, q, centres, j, p, R):
+    """False if point q (position rq[q], :func:`_positions`) is outside pulley j's cylinder
+    (d = R - |N| < 0; unit axis p), with the arithmetic of :func:`_point_law`, so the
+    contact kernel skips such a point (it has no force)."""
+    a0, a1, a2 = rq[q, 0] - centres[j, 0], rq[q, 1] - centres[j, 1], rq[q, 2] - centres[j, 2]
     ap = a0 * p[0] + a1 * p[1] + a2 * p[2]
     n0, n1, n2 = a0 - ap * p[0], a1 - ap * p[1], a2 - ap * p[2]
     rho = 0.0
@@ -286,7 +294,7 @@ def _penetrates(E, S0, e, q, centres, j, p, R, r):
     return not R - np.sqrt(rho) < 0.0
 
 
-@njit(cache=True)
+@leaf
 def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
     """Add point q's terms to the omega and moment derivatives, and its shape-function
     products to the pair's buffer A (18, 78): for k <= m (pair index km),
@@ -310,7 +318,7 @@ def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
     dTw[p] += ww * D[3, 6]
 
 
-@njit(cache=True)
+@leaf
 def _flush(A, e, ns, Kq, Cv):
     """Add a pair's buffer A (see :func:`_add_jacobians`) to Kq[e], Cv[e] and zero it."""
     km = 0
@@ -326,6 +334,17 @@ def _flush(A, e, ns, Kq, Cv):
                         Cv[e, 3 * m + d, 3 * k + c] += cv
             km += 1
     A[:, :] = 0.0
+
+
+@leaf
+def _add_force(S0, e, q, ww, Fn, n, ft, Q):
+    """Q[e] += w S_q^T f of point q (weight ww, m^2): f = F_n n + f_t, N/m^2."""
+    f0, f1, f2 = Fn * n[0] + ft[0], Fn * n[1] + ft[1], Fn * n[2] + ft[2]
+    for k in range(S0.shape[2]):
+        sk = ww * S0[e, q, k]
+        Q[e, 3 * k] += sk * f0
+        Q[e, 3 * k + 1] += sk * f1
+        Q[e, 3 * k + 2] += sk * f2
 
 
 @njit(cache=True)
@@ -345,7 +364,7 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     """
     nel, nq = w.shape
     D, G, P, X = np.zeros((4, 7)), np.zeros((3, 7)), np.zeros((16, 3)), np.zeros((16, 3))
-    r, v, a, vr = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    v, a, vr, gF, rq = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(7), np.zeros((nq, 3))
     n, t, vs, ft, pax = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
     ns = S0.shape[2]
     SS, A = np.zeros(ns * (ns + 1) // 2), np.zeros((18, ns * (ns + 1) // 2))
@@ -353,32 +372,33 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     for e in range(nel):
         sa, sb = _sides(S0, w, e)
         _control_points(E, e, sa, sb, P)
+        placed = False  # rq holds element e's points
         for p in range(radii.shape[0]):
             _unit_axis(axes, p, pax)
             R, om = radii[p], omegas[p]
             if not _may_touch(P, centres[p], pax, R, X):
                 continue
             pairs += 1
+            if not placed:
+                _positions(E, S0, e, rq)
+                placed = True
             touched = False
             for q in range(nq):
-                if not _penetrates(E, S0, e, q, centres, p, pax, R, r):
+                if not _penetrates(rq, q, centres, p, pax, R):
                     continue
                 _mid_velocity(V, S0, e, q, v)
                 for c in range(3):
-                    a[c] = r[c] - centres[p, c]
+                    a[c] = rq[q, c] - centres[p, c]
                     vr[c] = v[c] - centre_velocities[p, c]
                 rho, _, Fn, vsn, branch = _point_law(a, vr, pax, R, om, prm, n, t, vs, ft)
                 if Fn <= 0.0:
                     continue
                 ww = w[e, q]
-                for k in range(S0.shape[2]):
-                    sk = ww * S0[e, q, k]
-                    for c in range(3):
-                        Q[e, 3 * k + c] += sk * (Fn * n[c] + ft[c])
+                _add_force(S0, e, q, ww, Fn, n, ft, Q)
                 T[p] -= ww * rho * (t[0] * ft[0] + t[1] * ft[1] + t[2] * ft[2])
                 if want_J:
                     _point_jacobian(vr, pax, R, om, rho, Fn, vsn, branch, n, t, vs, ft,
-                                    prm, G, D)
+                                    prm, gF, G, D)
                     _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, SS, A)
                     touched = True
             if touched:

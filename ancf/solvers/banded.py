@@ -65,22 +65,27 @@ def lu(AB, kl, piv, pivoting):
 
 @leaf
 def solve(AB, kl, piv, b):
-    """Solve in place with the factors of :func:`lu`."""
+    """Solve in place with the factors of :func:`lu`.  Without row interchanges the
+    fill columns are untouched (zero in storage assembled from zero), so the backward
+    pass stops at column k + kl: the terms it leaves out are exact zeros."""
     n, w = AB.shape
     flat, step = AB.reshape(-1), uintp(w - 1)  # unsigned offsets, as in lu
+    swapped = False
     for k in range(n):
         p = piv[k]
         if p != k:
             b[k], b[p] = b[p], b[k]
+            swapped = True
         bk = b[k]
         if bk != 0.0:
             o, r0 = uintp((k + 1) * w - 1 + kl), uintp(k + 1)  # AB[k + 1, kl - 1]
             for t in range(uintp(min(n - 1, k + kl) - k)):  # rows k + 1 ... k + kl
                 b[r0 + t] -= flat[o + t * step] * bk
+    upper = 2 * kl if swapped else kl
     for k in range(n - 1, -1, -1):
         s = b[k]
         o, c0 = uintp(k * w + kl + 1), uintp(k + 1)  # AB[k, kl + 1]
-        for t in range(uintp(min(n - 1, k + 2 * kl) - k)):  # columns k + 1 ... k + 2 kl
+        for t in range(uintp(min(n - 1, k + upper) - k)):  # columns k + 1 ... k + upper
             s -= flat[o + t] * b[c0 + t]
         b[k] = s / AB[k, kl]
 
@@ -103,18 +108,39 @@ def count_below(AB, kl, shift):
     return neg
 
 
+@leaf
+def _row_dot(flat, w, kl, n, x, i):
+    """Row i of the band matrix (flat storage, width w) times x, summed by column."""
+    s = 0.0
+    j0 = max(0, i - kl)
+    o, x0 = uintp(i * w + j0 - i + kl), uintp(j0)
+    for t in range(uintp(min(n - 1, i + kl) + 1 - j0)):  # columns j0 ... i + kl
+        s += flat[o + t] * x[x0 + t]
+    return s
+
+
 @njit(cache=True)
 def matvec(AB, kl, x):
+    """A x, each row summed by column as :func:`_row_dot`; the rows with a full band
+    four at a time (four independent sums in flight)."""
     n, w = AB.shape
     flat = AB.reshape(-1)  # unsigned offsets, as in lu
     y = np.zeros(n)
-    for i in range(n):
-        s = 0.0
-        j0 = max(0, i - kl)
-        o, x0 = uintp(i * w + j0 - i + kl), uintp(j0)
-        for t in range(uintp(min(n - 1, i + kl) + 1 - j0)):  # columns j0 ... i + kl
-            s += flat[o + t] * x[x0 + t]
-        y[i] = s
+    i = 0
+    while i < n:
+        if i < kl or i + 3 > n - 1 - kl:
+            y[i] = _row_dot(flat, w, kl, n, x, i)
+            i += 1
+            continue
+        s0 = s1 = s2 = s3 = 0.0
+        o, x0 = uintp(i * w), uintp(i - kl)  # AB[i, 0], column i - kl
+        for t in range(uintp(2 * kl + 1)):
+            s0 += flat[o + t] * x[x0 + t]
+            s1 += flat[o + w + t] * x[x0 + 1 + t]
+            s2 += flat[o + 2 * w + t] * x[x0 + 2 + t]
+            s3 += flat[o + 3 * w + t] * x[x0 + 3 + t]
+        y[i], y[i + 1], y[i + 2], y[i + 3] = s0, s1, s2, s3
+        i += 4
     return y
 
 
