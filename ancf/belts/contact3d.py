@@ -49,7 +49,7 @@ from numba import njit
 
 from ancf.belts import friction
 from ancf.common.leaf import leaf
-from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_rows, positive_lengths
+from ancf.belts.contact_common import BOUND_MARGIN, positive_lengths
 from ancf.elements._generated import plate36_S
 from ancf.core.quadrature import gauss01
 
@@ -257,12 +257,14 @@ def _mid_surface(E, V, S0, e, q, r, v):
 
 @leaf
 def _mid_velocity(V, S0, e, q, v):
-    """The velocity part of :func:`_mid_surface`."""
-    v[:] = 0.0
+    """The velocity part of :func:`_mid_surface` (its arithmetic, summed in registers)."""
+    v0 = v1 = v2 = 0.0
     for k in range(S0.shape[2]):
         s = S0[e, q, k]
-        for c in range(3):
-            v[c] += s * V[e, k, c]
+        v0 += s * V[e, k, 0]
+        v1 += s * V[e, k, 1]
+        v2 += s * V[e, k, 2]
+    v[0], v[1], v[2] = v0, v1, v2
 
 
 @leaf
@@ -294,28 +296,59 @@ def _penetrates(rq, q, centres, j, p, R):
     return not R - np.sqrt(rho) < 0.0
 
 
+#: contact points whose Jacobian terms are buffered before they are added to a pair's A
+BATCH = 4
+
+
 @leaf
-def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
-    """Add point q's terms to the omega and moment derivatives, and its shape-function
-    products to the pair's buffer A (18, 78): for k <= m (pair index km),
-    A[3 d + c, km] += w S_k S_m dF_d/dr_c and A[9 + 3 d + c, km] += w S_k S_m dF_d/drdot_c
-    (the 3 x 3 blocks (k, m) and (m, k) of dQ/de, dQ/dedot are equal; :func:`_flush`).
-    P (78,) scratch."""
+def _add_jacobians(S0, e, q, ww, D, Qwe, dTqe, dTve, PB, DB, b):
+    """Add point q's terms (weight ww, derivatives D) to the pair's omega and moment
+    derivatives Qwe = Qw[e, p], dTqe = dTq[p, e], dTve = dTv[p, e], and put its
+    shape-function products (for k <= m, pair index km, w S_k S_m) in PB[b] and its
+    force derivatives in DB[b]: dF_d/dr_c at 3 d + c, dF_d/drdot_c at 9 + 3 d + c
+    (:func:`_add_batch` adds them to the pair's buffer A)."""
+    w0, w1, w2 = D[0, 6], D[1, 6], D[2, 6]
+    r0, r1, r2, v0, v1, v2 = D[3, 0], D[3, 1], D[3, 2], D[3, 3], D[3, 4], D[3, 5]
     ns = S0.shape[2]
     km = 0
     for k in range(ns):
         sk = ww * S0[e, q, k]
-        add_pulley_rows(e, p, k, sk, D, 3, Qw, dTq, dTv)
+        Qwe[3 * k] += sk * w0
+        Qwe[3 * k + 1] += sk * w1
+        Qwe[3 * k + 2] += sk * w2
+        dTqe[3 * k] += sk * r0
+        dTqe[3 * k + 1] += sk * r1
+        dTqe[3 * k + 2] += sk * r2
+        dTve[3 * k] += sk * v0
+        dTve[3 * k + 1] += sk * v1
+        dTve[3 * k + 2] += sk * v2
         for m in range(k, ns):
-            P[km] = sk * S0[e, q, m]
+            PB[b, km] = sk * S0[e, q, m]
             km += 1
     for d in range(3):
-        for c in range(6):
-            dj = D[d, c]
-            j = 3 * d + c if c < 3 else 6 + 3 * d + c
-            for i in range(km):
-                A[j, i] += P[i] * dj
-    dTw[p] += ww * D[3, 6]
+        for c in range(3):
+            DB[b, 3 * d + c] = D[d, c]
+            DB[b, 9 + 3 * d + c] = D[d, 3 + c]
+
+
+@leaf
+def _add_batch(PB, DB, nb, A):
+    """A[j] += PB[b] DB[b, j] for the nb buffered points b in order (one pass over A
+    for a full batch): A (18, 78) is the pair's sum over its points of the 3 x 3 blocks
+    (k, m) of dQ/de and dQ/dedot, (k, m) and (m, k) being equal (:func:`_flush`)."""
+    nk = PB.shape[1]
+    if nb == BATCH:
+        for j in range(A.shape[0]):
+            d0, d1, d2, d3 = DB[0, j], DB[1, j], DB[2, j], DB[3, j]
+            for i in range(nk):
+                A[j, i] = (((A[j, i] + PB[0, i] * d0) + PB[1, i] * d1) + PB[2, i] * d2) \
+                    + PB[3, i] * d3
+        return
+    for b in range(nb):
+        for j in range(A.shape[0]):
+            dj = DB[b, j]
+            for i in range(nk):
+                A[j, i] += PB[b, i] * dj
 
 
 @leaf
@@ -367,7 +400,8 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     v, a, vr, gF, rq = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(7), np.zeros((nq, 3))
     n, t, vs, ft, pax = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
     ns = S0.shape[2]
-    SS, A = np.zeros(ns * (ns + 1) // 2), np.zeros((18, ns * (ns + 1) // 2))
+    PB, DB = np.zeros((BATCH, ns * (ns + 1) // 2)), np.zeros((BATCH, 18))
+    A = np.zeros((18, ns * (ns + 1) // 2))
     pairs = 0
     for e in range(nel):
         sa, sb = _sides(S0, w, e)
@@ -382,6 +416,7 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
             if not placed:
                 _positions(E, S0, e, rq)
                 placed = True
+            nb = 0  # points in the batch
             touched = False
             for q in range(nq):
                 if not _penetrates(rq, q, centres, p, pax, R):
@@ -399,9 +434,15 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
                 if want_J:
                     _point_jacobian(vr, pax, R, om, rho, Fn, vsn, branch, n, t, vs, ft,
                                     prm, gF, G, D)
-                    _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, SS, A)
+                    _add_jacobians(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], PB, DB, nb)
+                    dTw[p] += ww * D[3, 6]
+                    nb += 1
+                    if nb == BATCH:
+                        _add_batch(PB, DB, nb, A)
+                        nb = 0
                     touched = True
             if touched:
+                _add_batch(PB, DB, nb, A)
                 _flush(A, e, ns, Kq, Cv)
     return pairs
 
