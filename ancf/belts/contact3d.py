@@ -173,34 +173,36 @@ def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
     """Contact law at one point, a = r - o (m), vr = rdot - odot (m/s), unit axis p.
     Fills n, t, v_s, f_t (3,) and returns |N|, d, F_n, |v_s| and the branch:
     0 out (d < 0), 1 clamped (F_n = 0), else the friction law's (creep-rate: 2 linear,
-    3 saturated)."""
+    3 saturated).  Computed in registers, stored once."""
     kp, cp = prm[0], prm[1]
     ap = a[0] * p[0] + a[1] * p[1] + a[2] * p[2]
+    n0, n1, n2 = a[0] - ap * p[0], a[1] - ap * p[1], a[2] - ap * p[2]
     rho = 0.0
-    for c in range(3):
-        n[c] = a[c] - ap * p[c]
-        rho += n[c] * n[c]
+    rho += n0 * n0
+    rho += n1 * n1
+    rho += n2 * n2
     rho = np.sqrt(rho)
-    for c in range(3):
-        n[c] /= rho
-    t[0] = p[1] * n[2] - p[2] * n[1]
-    t[1] = p[2] * n[0] - p[0] * n[2]
-    t[2] = p[0] * n[1] - p[1] * n[0]
+    n0, n1, n2 = n0 / rho, n1 / rho, n2 / rho
+    t0, t1, t2 = p[1] * n2 - p[2] * n1, p[2] * n0 - p[0] * n2, p[0] * n1 - p[1] * n0
     d = R - rho
-    vn = n[0] * vr[0] + n[1] * vr[1] + n[2] * vr[2]
-    wn = vn  # w = vr - omega R t and t . n = 0
+    wn = n0 * vr[0] + n1 * vr[1] + n2 * vr[2]  # w = vr - omega R t and t . n = 0
+    vs0 = vr[0] - om * R * t0 - wn * n0
+    vs1 = vr[1] - om * R * t1 - wn * n1
+    vs2 = vr[2] - om * R * t2 - wn * n2
     vsn = 0.0
-    for c in range(3):
-        vs[c] = vr[c] - om * R * t[c] - wn * n[c]
-        vsn += vs[c] * vs[c]
+    vsn += vs0 * vs0
+    vsn += vs1 * vs1
+    vsn += vs2 * vs2
     vsn = np.sqrt(vsn)
+    n[0], n[1], n[2], t[0], t[1], t[2] = n0, n1, n2, t0, t1, t2
+    vs[0], vs[1], vs[2] = vs0, vs1, vs2
     ft[:] = 0.0
     if d < 0.0:
         return rho, d, 0.0, vsn, 0
-    Fn = kp * d - cp * vn
+    Fn = kp * d - cp * wn
     if Fn <= 0.0:
         return rho, d, 0.0, vsn, 1
-    return rho, d, Fn, vsn, friction.force((vs[0], vs[1], vs[2]), vsn, Fn, prm, ft)
+    return rho, d, Fn, vsn, friction.force((vs0, vs1, vs2), vsn, Fn, prm, ft)
 
 
 @leaf
@@ -370,14 +372,29 @@ def _flush(A, e, ns, Kq, Cv):
 
 
 @leaf
-def _add_force(S0, e, q, ww, Fn, n, ft, Q):
-    """Q[e] += w S_q^T f of point q (weight ww, m^2): f = F_n n + f_t, N/m^2."""
+def _swap_forces(Q, e, Qt, back):
+    """Qt[d, k] = Q[e, 3 k + d] (the element's forces by component), or back."""
+    for k in range(Qt.shape[1]):
+        for d in range(3):
+            if back:
+                Q[e, 3 * k + d] = Qt[d, k]
+            else:
+                Qt[d, k] = Q[e, 3 * k + d]
+
+
+@leaf
+def _add_force(S0, e, q, ww, Fn, n, ft, sk, Qt):
+    """Qt += w S_q^T f of point q (weight ww, m^2; sk scratch), Qt by component
+    (:func:`_swap_forces`): f = F_n n + f_t, N/m^2."""
     f0, f1, f2 = Fn * n[0] + ft[0], Fn * n[1] + ft[1], Fn * n[2] + ft[2]
-    for k in range(S0.shape[2]):
-        sk = ww * S0[e, q, k]
-        Q[e, 3 * k] += sk * f0
-        Q[e, 3 * k + 1] += sk * f1
-        Q[e, 3 * k + 2] += sk * f2
+    for k in range(sk.size):
+        sk[k] = ww * S0[e, q, k]
+    for k in range(sk.size):
+        Qt[0, k] += sk[k] * f0
+    for k in range(sk.size):
+        Qt[1, k] += sk[k] * f1
+    for k in range(sk.size):
+        Qt[2, k] += sk[k] * f2
 
 
 @njit(cache=True)
@@ -402,6 +419,7 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     ns = S0.shape[2]
     PB, DB = np.zeros((BATCH, ns * (ns + 1) // 2)), np.zeros((BATCH, 18))
     A = np.zeros((18, ns * (ns + 1) // 2))
+    sk, Qt = np.zeros(ns), np.zeros((3, ns))
     pairs = 0
     for e in range(nel):
         sa, sb = _sides(S0, w, e)
@@ -418,6 +436,7 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
                 placed = True
             nb = 0  # points in the batch
             touched = False
+            _swap_forces(Q, e, Qt, False)
             for q in range(nq):
                 if not _penetrates(rq, q, centres, p, pax, R):
                     continue
@@ -429,7 +448,7 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
                 if Fn <= 0.0:
                     continue
                 ww = w[e, q]
-                _add_force(S0, e, q, ww, Fn, n, ft, Q)
+                _add_force(S0, e, q, ww, Fn, n, ft, sk, Qt)
                 T[p] -= ww * rho * (t[0] * ft[0] + t[1] * ft[1] + t[2] * ft[2])
                 if want_J:
                     _point_jacobian(vr, pax, R, om, rho, Fn, vsn, branch, n, t, vs, ft,
@@ -441,6 +460,7 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
                         _add_batch(PB, DB, nb, A)
                         nb = 0
                     touched = True
+            _swap_forces(Q, e, Qt, True)
             if touched:
                 _add_batch(PB, DB, nb, A)
                 _flush(A, e, ns, Kq, Cv)
