@@ -116,8 +116,10 @@ def _swap_gradient(ge, gt, back):
 
 
 @leaf
-def _add_tangent(Bq, ww, nd, H, Ke, T):
-    """Ke += ww J^T H J, J = dv/de (sparse in Bq); T (15, 36) scratch."""
+def _add_tangent(Bq, ww, nd, H, Kp, T):
+    """Kp += ww J^T H J, J = dv/de (sparse in Bq), with the columns by component: Kp[:,
+    ns c + k] is column 3 k + c (:func:`_swap_columns`; T (15, 36) scratch, its columns
+    in that order), so that both products run over contiguous rows."""
     ns = Bq.shape[1]
     T[: 3 * nd] = 0.0  # the rows read below
     for i in range(3 * nd):
@@ -126,13 +128,26 @@ def _add_tangent(Bq, ww, nd, H, Ke, T):
                 h = ww * H[i, 3 * d2 + c2]
                 if h != 0.0:
                     for ll in range(ns):
-                        T[i, 3 * ll + c2] += h * Bq[d2, ll]
+                        T[i, ns * c2 + ll] += h * Bq[d2, ll]
     for d in range(nd):
         for kk in range(ns):
             bk = Bq[d, kk]
             for c in range(3):
                 for j in range(3 * ns):
-                    Ke[3 * kk + c, j] += bk * T[3 * d + c, j]
+                    Kp[3 * kk + c, j] += bk * T[3 * d + c, j]
+
+
+@leaf
+def _swap_columns(Ke, Kp, back):
+    """Kp[:, ns c + k] = Ke[:, 3 k + c] (ns = Ke's columns / 3), or back."""
+    ns = Ke.shape[1] // 3
+    for r in range(Ke.shape[0]):
+        for kk in range(ns):
+            for c in range(3):
+                if back:
+                    Ke[r, 3 * kk + c] = Kp[r, ns * c + kk]
+                else:
+                    Kp[r, ns * c + kk] = Ke[r, 3 * kk + c]
 
 
 @njit(cache=True)
@@ -145,15 +160,20 @@ def gradient_tangent(E, data, want_K, g, K):
     v, gw, gb = np.empty(15), np.empty(15), np.empty(15)
     H, Hb = np.empty((15, 15)), np.empty((15, 15))
     T, gt = np.empty((15, 3 * E.shape[1])), np.empty((3, E.shape[1]))
+    Kp = np.empty((3 * E.shape[1], 3 * E.shape[1]))
     for e in range(nel):
         _swap_gradient(g[e], gt, False)
+        if want_K:
+            _swap_columns(K[e], Kp, False)
         for q in range(nq):
             _point(B, E, e, q, nd, v)
             _density(v, k, bending, want_K, gw, H, gb, Hb)
             _add_gradient(B[e, q], wq[e, q], nd, gw, gt)
             if want_K:
-                _add_tangent(B[e, q], wq[e, q], nd, H, K[e], T)
+                _add_tangent(B[e, q], wq[e, q], nd, H, Kp, T)
         _swap_gradient(g[e], gt, True)
+        if want_K:
+            _swap_columns(K[e], Kp, True)
 
 
 class Plate36(CompiledElement):
