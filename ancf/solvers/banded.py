@@ -121,39 +121,18 @@ def count_below(AB, kl, shift):
     return neg
 
 
-@leaf
-def _row_dot(flat, w, kl, n, x, i):
-    """Row i of the band matrix (flat storage, width w) times x, summed by column."""
-    s = 0.0
-    j0 = max(0, i - kl)
-    o, x0 = uintp(i * w + j0 - i + kl), uintp(j0)
-    for t in range(uintp(min(n - 1, i + kl) + 1 - j0)):  # columns j0 ... i + kl
-        s += flat[o + t] * x[x0 + t]
-    return s
-
-
 @njit(cache=True)
 def matvec(AB, kl, x):
-    """A x, each row summed by column as :func:`_row_dot`; the rows with a full band
-    four at a time (four independent sums in flight)."""
     n, w = AB.shape
     flat = AB.reshape(-1)  # unsigned offsets, as in lu
     y = np.zeros(n)
-    i = 0
-    while i < n:
-        if i < kl or i + 3 > n - 1 - kl:
-            y[i] = _row_dot(flat, w, kl, n, x, i)
-            i += 1
-            continue
-        s0 = s1 = s2 = s3 = 0.0
-        o, x0 = uintp(i * w), uintp(i - kl)  # AB[i, 0], column i - kl
-        for t in range(uintp(2 * kl + 1)):
-            s0 += flat[o + t] * x[x0 + t]
-            s1 += flat[o + w + t] * x[x0 + 1 + t]
-            s2 += flat[o + 2 * w + t] * x[x0 + 2 + t]
-            s3 += flat[o + 3 * w + t] * x[x0 + 3 + t]
-        y[i], y[i + 1], y[i + 2], y[i + 3] = s0, s1, s2, s3
-        i += 4
+    for i in range(n):
+        s = 0.0
+        j0 = max(0, i - kl)
+        o, x0 = uintp(i * w + j0 - i + kl), uintp(j0)
+        for t in range(uintp(min(n - 1, i + kl) + 1 - j0)):  # columns j0 ... i + kl
+            s += flat[o + t] * x[x0 + t]
+        y[i] = s
     return y
 
 
