@@ -49,7 +49,7 @@ from numba import njit
 
 from ancf.belts import friction
 from ancf.common.leaf import leaf
-from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_rows, positive_lengths
+from ancf.belts.contact_common import BOUND_MARGIN, positive_lengths
 from ancf.elements._generated import plate36_S
 from ancf.core.quadrature import gauss01
 
@@ -111,7 +111,7 @@ def contact_points3d(lengths, widths, rule):
     return S0, W[None, :] * A * B
 
 
-@njit(cache=True)
+@leaf
 def _sides(S0, w, e):
     """Element sides a, b (m) from its rule: sum w = a b, sum w S_1 = a^2 b m_x,
     sum w S_2 = a b^2 m_y (exact for every supported rule)."""
@@ -123,7 +123,7 @@ def _sides(S0, w, e):
     return sx / (_MOMENTS[0] * area), sy / (_MOMENTS[1] * area)
 
 
-@njit(cache=True)
+@leaf
 def _control_points(E, e, a, b, P):
     """P (16, 3): the Bernstein control points of element e (sides a, b, m); the mid
     surface lies in their convex hull (see ``_bernstein_controls``)."""
@@ -137,7 +137,7 @@ def _control_points(E, e, a, b, P):
                     P[i, c] += ck * E[e, k, c]
 
 
-@njit(cache=True)
+@leaf
 def _may_touch(P, o, p, R, X):
     """False only if the element's mid surface provably stays outside the pulley's
     cylinder |N| < R.  N = (I - p p^T)(r - o) is affine in r, so it maps the convex
@@ -161,52 +161,54 @@ def _may_touch(P, o, p, R, X):
     return dist - rb <= R + BOUND_MARGIN * scale
 
 
-@njit(cache=True)
+@leaf
 def _unit_axis(axes, p, out):
     s = np.sqrt(axes[p, 0] ** 2 + axes[p, 1] ** 2 + axes[p, 2] ** 2)
     for c in range(3):
         out[c] = axes[p, c] / s
 
 
-@njit(cache=True)
+@leaf
 def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
     """Contact law at one point, a = r - o (m), vr = rdot - odot (m/s), unit axis p.
     Fills n, t, v_s, f_t (3,) and returns |N|, d, F_n, |v_s| and the branch:
     0 out (d < 0), 1 clamped (F_n = 0), else the friction law's (creep-rate: 2 linear,
-    3 saturated)."""
+    3 saturated).  Computed in registers, stored once."""
     kp, cp = prm[0], prm[1]
     ap = a[0] * p[0] + a[1] * p[1] + a[2] * p[2]
+    n0, n1, n2 = a[0] - ap * p[0], a[1] - ap * p[1], a[2] - ap * p[2]
     rho = 0.0
-    for c in range(3):
-        n[c] = a[c] - ap * p[c]
-        rho += n[c] * n[c]
+    rho += n0 * n0
+    rho += n1 * n1
+    rho += n2 * n2
     rho = np.sqrt(rho)
-    for c in range(3):
-        n[c] /= rho
-    t[0] = p[1] * n[2] - p[2] * n[1]
-    t[1] = p[2] * n[0] - p[0] * n[2]
-    t[2] = p[0] * n[1] - p[1] * n[0]
+    n0, n1, n2 = n0 / rho, n1 / rho, n2 / rho
+    t0, t1, t2 = p[1] * n2 - p[2] * n1, p[2] * n0 - p[0] * n2, p[0] * n1 - p[1] * n0
     d = R - rho
-    vn = n[0] * vr[0] + n[1] * vr[1] + n[2] * vr[2]
-    wn = vn  # w = vr - omega R t and t . n = 0
+    wn = n0 * vr[0] + n1 * vr[1] + n2 * vr[2]  # w = vr - omega R t and t . n = 0
+    vs0 = vr[0] - om * R * t0 - wn * n0
+    vs1 = vr[1] - om * R * t1 - wn * n1
+    vs2 = vr[2] - om * R * t2 - wn * n2
     vsn = 0.0
-    for c in range(3):
-        vs[c] = vr[c] - om * R * t[c] - wn * n[c]
-        vsn += vs[c] * vs[c]
+    vsn += vs0 * vs0
+    vsn += vs1 * vs1
+    vsn += vs2 * vs2
     vsn = np.sqrt(vsn)
+    n[0], n[1], n[2], t[0], t[1], t[2] = n0, n1, n2, t0, t1, t2
+    vs[0], vs[1], vs[2] = vs0, vs1, vs2
     ft[:] = 0.0
     if d < 0.0:
         return rho, d, 0.0, vsn, 0
-    Fn = kp * d - cp * vn
+    Fn = kp * d - cp * wn
     if Fn <= 0.0:
         return rho, d, 0.0, vsn, 1
-    return rho, d, Fn, vsn, friction.force((vs[0], vs[1], vs[2]), vsn, Fn, prm, ft)
+    return rho, d, Fn, vsn, friction.force((vs0, vs1, vs2), vsn, Fn, prm, ft)
 
 
-@njit(cache=True)
-def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, G, D):
+@leaf
+def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, gF, G, D):
     """D (4, 7): derivatives of (f_0, f_1, f_2, tau = -|N| t . f_t) with respect to
-    (r, rdot, omega) on the active branch (F_n > 0); G (3, 7) scratch.
+    (r, rdot, omega) on the active branch (F_n > 0); gF (7,), G (3, 7) scratch.
 
     dn/dr = t t^T / |N|, dt/dr = -n t^T / |N|, d|N|/dr = n^T;
     dF_n = -(k_p n + c_p (t . vr) t / |N|) . dr - c_p n . drdot;
@@ -215,10 +217,10 @@ def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, G, D)
     tv = t[0] * vr[0] + t[1] * vr[1] + t[2] * vr[2]
     nw = n[0] * vr[0] + n[1] * vr[1] + n[2] * vr[2]
     tw = tv - om * R
-    gF = np.zeros(7)
     for c in range(3):
         gF[c] = -kp * n[c] - cp * tv * t[c] / rho
         gF[3 + c] = -cp * n[c]
+    gF[6] = 0.0
     # G = dv_s / d(r, rdot, omega)
     for i in range(3):
         for c in range(3):
@@ -257,26 +259,36 @@ def _mid_surface(E, V, S0, e, q, r, v):
 
 @leaf
 def _mid_velocity(V, S0, e, q, v):
-    """The velocity part of :func:`_mid_surface`."""
-    v[:] = 0.0
+    """The velocity part of :func:`_mid_surface` (its arithmetic, summed in registers)."""
+    v0 = v1 = v2 = 0.0
     for k in range(S0.shape[2]):
         s = S0[e, q, k]
-        for c in range(3):
-            v[c] += s * V[e, k, c]
+        v0 += s * V[e, k, 0]
+        v1 += s * V[e, k, 1]
+        v2 += s * V[e, k, 2]
+    v[0], v[1], v[2] = v0, v1, v2
 
 
 @leaf
-def _penetrates(E, S0, e, q, centres, j, p, R, r):
-    """False if point q of element e is outside pulley j's cylinder (d = R - |N| < 0;
-    unit axis p): the position r (into r) and penetration of :func:`_mid_surface` and
-    :func:`_point_law` with the same arithmetic, without the velocities, so the contact
-    kernel skips such a point (it has no force)."""
-    r[:] = 0.0
-    for k in range(S0.shape[2]):
-        s = S0[e, q, k]
-        for c in range(3):
-            r[c] += s * E[e, k, c]
-    a0, a1, a2 = r[0] - centres[j, 0], r[1] - centres[j, 1], r[2] - centres[j, 2]
+def _positions(E, S0, e, rq):
+    """rq (nq, 3): the mid-surface positions (m) of element e's contact points, with the
+    arithmetic of :func:`_mid_surface`."""
+    for q in range(S0.shape[1]):
+        r0 = r1 = r2 = 0.0
+        for k in range(S0.shape[2]):
+            s = S0[e, q, k]
+            r0 += s * E[e, k, 0]
+            r1 += s * E[e, k, 1]
+            r2 += s * E[e, k, 2]
+        rq[q, 0], rq[q, 1], rq[q, 2] = r0, r1, r2
+
+
+@leaf
+def _penetrates(rq, q, centres, j, p, R):
+    """False if point q (position rq[q], :func:`_positions`) is outside pulley j's cylinder
+    (d = R - |N| < 0; unit axis p), with the arithmetic of :func:`_point_law`, so the
+    contact kernel skips such a point (it has no force)."""
+    a0, a1, a2 = rq[q, 0] - centres[j, 0], rq[q, 1] - centres[j, 1], rq[q, 2] - centres[j, 2]
     ap = a0 * p[0] + a1 * p[1] + a2 * p[2]
     n0, n1, n2 = a0 - ap * p[0], a1 - ap * p[1], a2 - ap * p[2]
     rho = 0.0
@@ -286,31 +298,62 @@ def _penetrates(E, S0, e, q, centres, j, p, R, r):
     return not R - np.sqrt(rho) < 0.0
 
 
-@njit(cache=True)
-def _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, P, A):
-    """Add point q's terms to the omega and moment derivatives, and its shape-function
-    products to the pair's buffer A (18, 78): for k <= m (pair index km),
-    A[3 d + c, km] += w S_k S_m dF_d/dr_c and A[9 + 3 d + c, km] += w S_k S_m dF_d/drdot_c
-    (the 3 x 3 blocks (k, m) and (m, k) of dQ/de, dQ/dedot are equal; :func:`_flush`).
-    P (78,) scratch."""
+#: contact points whose Jacobian terms are buffered before they are added to a pair's A
+BATCH = 4
+
+
+@leaf
+def _add_jacobians(S0, e, q, ww, D, Qwe, dTqe, dTve, PB, DB, b):
+    """Add point q's terms (weight ww, derivatives D) to the pair's omega and moment
+    derivatives Qwe = Qw[e, p], dTqe = dTq[p, e], dTve = dTv[p, e], and put its
+    shape-function products (for k <= m, pair index km, w S_k S_m) in PB[b] and its
+    force derivatives in DB[b]: dF_d/dr_c at 3 d + c, dF_d/drdot_c at 9 + 3 d + c
+    (:func:`_add_batch` adds them to the pair's buffer A)."""
+    w0, w1, w2 = D[0, 6], D[1, 6], D[2, 6]
+    r0, r1, r2, v0, v1, v2 = D[3, 0], D[3, 1], D[3, 2], D[3, 3], D[3, 4], D[3, 5]
     ns = S0.shape[2]
     km = 0
     for k in range(ns):
         sk = ww * S0[e, q, k]
-        add_pulley_rows(e, p, k, sk, D, 3, Qw, dTq, dTv)
+        Qwe[3 * k] += sk * w0
+        Qwe[3 * k + 1] += sk * w1
+        Qwe[3 * k + 2] += sk * w2
+        dTqe[3 * k] += sk * r0
+        dTqe[3 * k + 1] += sk * r1
+        dTqe[3 * k + 2] += sk * r2
+        dTve[3 * k] += sk * v0
+        dTve[3 * k + 1] += sk * v1
+        dTve[3 * k + 2] += sk * v2
         for m in range(k, ns):
-            P[km] = sk * S0[e, q, m]
+            PB[b, km] = sk * S0[e, q, m]
             km += 1
     for d in range(3):
-        for c in range(6):
-            dj = D[d, c]
-            j = 3 * d + c if c < 3 else 6 + 3 * d + c
-            for i in range(km):
-                A[j, i] += P[i] * dj
-    dTw[p] += ww * D[3, 6]
+        for c in range(3):
+            DB[b, 3 * d + c] = D[d, c]
+            DB[b, 9 + 3 * d + c] = D[d, 3 + c]
 
 
-@njit(cache=True)
+@leaf
+def _add_batch(PB, DB, nb, A):
+    """A[j] += PB[b] DB[b, j] for the nb buffered points b in order (one pass over A
+    for a full batch): A (18, 78) is the pair's sum over its points of the 3 x 3 blocks
+    (k, m) of dQ/de and dQ/dedot, (k, m) and (m, k) being equal (:func:`_flush`)."""
+    nk = PB.shape[1]
+    if nb == BATCH:
+        for j in range(A.shape[0]):
+            d0, d1, d2, d3 = DB[0, j], DB[1, j], DB[2, j], DB[3, j]
+            for i in range(nk):
+                A[j, i] = (((A[j, i] + PB[0, i] * d0) + PB[1, i] * d1) + PB[2, i] * d2) \
+                    + PB[3, i] * d3
+        return
+    for b in range(nb):
+        for j in range(A.shape[0]):
+            dj = DB[b, j]
+            for i in range(nk):
+                A[j, i] += PB[b, i] * dj
+
+
+@leaf
 def _flush(A, e, ns, Kq, Cv):
     """Add a pair's buffer A (see :func:`_add_jacobians`) to Kq[e], Cv[e] and zero it."""
     km = 0
@@ -326,6 +369,32 @@ def _flush(A, e, ns, Kq, Cv):
                         Cv[e, 3 * m + d, 3 * k + c] += cv
             km += 1
     A[:, :] = 0.0
+
+
+@leaf
+def _swap_forces(Q, e, Qt, back):
+    """Qt[d, k] = Q[e, 3 k + d] (the element's forces by component), or back."""
+    for k in range(Qt.shape[1]):
+        for d in range(3):
+            if back:
+                Q[e, 3 * k + d] = Qt[d, k]
+            else:
+                Qt[d, k] = Q[e, 3 * k + d]
+
+
+@leaf
+def _add_force(S0, e, q, ww, Fn, n, ft, sk, Qt):
+    """Qt += w S_q^T f of point q (weight ww, m^2; sk scratch), Qt by component
+    (:func:`_swap_forces`): f = F_n n + f_t, N/m^2."""
+    f0, f1, f2 = Fn * n[0] + ft[0], Fn * n[1] + ft[1], Fn * n[2] + ft[2]
+    for k in range(sk.size):
+        sk[k] = ww * S0[e, q, k]
+    for k in range(sk.size):
+        Qt[0, k] += sk[k] * f0
+    for k in range(sk.size):
+        Qt[1, k] += sk[k] * f1
+    for k in range(sk.size):
+        Qt[2, k] += sk[k] * f2
 
 
 @njit(cache=True)
@@ -345,43 +414,55 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     """
     nel, nq = w.shape
     D, G, P, X = np.zeros((4, 7)), np.zeros((3, 7)), np.zeros((16, 3)), np.zeros((16, 3))
-    r, v, a, vr = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    v, a, vr, gF, rq = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(7), np.zeros((nq, 3))
     n, t, vs, ft, pax = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
     ns = S0.shape[2]
-    SS, A = np.zeros(ns * (ns + 1) // 2), np.zeros((18, ns * (ns + 1) // 2))
+    PB, DB = np.zeros((BATCH, ns * (ns + 1) // 2)), np.zeros((BATCH, 18))
+    A = np.zeros((18, ns * (ns + 1) // 2))
+    sk, Qt = np.zeros(ns), np.zeros((3, ns))
     pairs = 0
     for e in range(nel):
         sa, sb = _sides(S0, w, e)
         _control_points(E, e, sa, sb, P)
+        placed = False  # rq holds element e's points
         for p in range(radii.shape[0]):
             _unit_axis(axes, p, pax)
             R, om = radii[p], omegas[p]
             if not _may_touch(P, centres[p], pax, R, X):
                 continue
             pairs += 1
+            if not placed:
+                _positions(E, S0, e, rq)
+                placed = True
+            nb = 0  # points in the batch
             touched = False
+            _swap_forces(Q, e, Qt, False)
             for q in range(nq):
-                if not _penetrates(E, S0, e, q, centres, p, pax, R, r):
+                if not _penetrates(rq, q, centres, p, pax, R):
                     continue
                 _mid_velocity(V, S0, e, q, v)
                 for c in range(3):
-                    a[c] = r[c] - centres[p, c]
+                    a[c] = rq[q, c] - centres[p, c]
                     vr[c] = v[c] - centre_velocities[p, c]
                 rho, _, Fn, vsn, branch = _point_law(a, vr, pax, R, om, prm, n, t, vs, ft)
                 if Fn <= 0.0:
                     continue
                 ww = w[e, q]
-                for k in range(S0.shape[2]):
-                    sk = ww * S0[e, q, k]
-                    for c in range(3):
-                        Q[e, 3 * k + c] += sk * (Fn * n[c] + ft[c])
+                _add_force(S0, e, q, ww, Fn, n, ft, sk, Qt)
                 T[p] -= ww * rho * (t[0] * ft[0] + t[1] * ft[1] + t[2] * ft[2])
                 if want_J:
                     _point_jacobian(vr, pax, R, om, rho, Fn, vsn, branch, n, t, vs, ft,
-                                    prm, G, D)
-                    _add_jacobians(S0, e, q, p, ww, D, Qw, dTq, dTv, dTw, SS, A)
+                                    prm, gF, G, D)
+                    _add_jacobians(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], PB, DB, nb)
+                    dTw[p] += ww * D[3, 6]
+                    nb += 1
+                    if nb == BATCH:
+                        _add_batch(PB, DB, nb, A)
+                        nb = 0
                     touched = True
+            _swap_forces(Q, e, Qt, True)
             if touched:
+                _add_batch(PB, DB, nb, A)
                 _flush(A, e, ns, Kq, Cv)
     return pairs
 

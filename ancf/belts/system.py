@@ -56,6 +56,7 @@ class BeltSystem(NamedTuple):
 
     drive: tuple         # Drive2D or Drive3D (ancf.belts.forces)
     Mb: np.ndarray       # belt mass matrix, band storage, kg
+    mass_rows: tuple     # its nonzeros by row (mass_rows): row pointers, columns, values
     kl: int              # half-bandwidth
     tabs: np.ndarray     # pulley laws at the step times (nlaws, nts)
     steps: np.ndarray    # (nts,) the step ending at each step time, s (0 at the first)
@@ -84,12 +85,37 @@ def belt_system(drive, ts, nslots: int = 0, mean_from: float = np.inf) -> BeltSy
     n, k = drive.n, drive.k
     kernel = drive.kernel()
     shape = (0, 0, 0, 0) if kernel.z is None else (nslots, *kernel.z.shape[1:])
-    return BeltSystem(kernel, drive.Mb, drive.pattern.kl, drive.laws(ts), steps(ts),
+    return BeltSystem(kernel, drive.Mb, mass_rows(drive.Mb, drive.pattern.kl), drive.pattern.kl,
+                      drive.laws(ts), steps(ts),
                       np.zeros(shape), np.zeros(shape[0]), window_weights(ts, mean_from),
                       np.zeros(1), np.zeros((3, kernel.radii.size)),
                       drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros((k, n)),
                       np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)), np.zeros((k, k)),
                       np.zeros(k, dtype=np.int64))
+
+
+def mass_rows(Mb, kl: int) -> tuple:
+    """The nonzeros of a band matrix (storage of :mod:`ancf.solvers.banded`) by row, each
+    row's by ascending column: (ptr (n + 1,), col, val), CSR.  The consistent mass of the
+    belt elements couples the components of a vector only with themselves, so most of
+    its band is zero (a plate's: 18 of 2 kl + 1 entries per row)."""
+    n = Mb.shape[0]
+    i, t = np.nonzero(Mb[:, : 2 * kl + 1])  # row-major: by row, then by column
+    ptr = np.searchsorted(i, np.arange(n + 1))
+    return ptr, (i + t - kl).astype(np.int64), Mb[i, t].copy()
+
+
+@njit(cache=True)
+def add_mass_times(rows, x, r):
+    """r += M x, M by its nonzeros (:func:`mass_rows`): each row's product summed from
+    zero by ascending column, as :func:`ancf.solvers.banded.matvec` sums the band (the
+    exact zeros it adds change nothing but, at most, the sign of a zero sum)."""
+    ptr, col, val = rows
+    for i in range(ptr.size - 1):
+        s = 0.0
+        for k in range(ptr[i], ptr[i + 1]):
+            s += val[k] * x[col[k]]
+        r[i] += s
 
 
 @njit(cache=True)
@@ -209,7 +235,7 @@ def _residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r):
     n = x1.size - inertia.size
     count[PAIRS] += evaluate(x1, v1, system.tabs[:, k], system.drive, want_J, bp, gp, r,
                              system.S, system.col, system.row, system.corner)
-    r[:n] += banded.matvec(system.Mb, system.kl, acc1[:n])
+    add_mass_times(system.mass_rows, acc1, r)
     for j in range(inertia.size):
         r[n + j] += inertia[j] * acc1[n + j]
 

@@ -38,11 +38,14 @@ _DERIVS = ("x", "y", "xx", "xy", "yy")  # point variables: r_x, r_y, r_xx, r_xy,
 @leaf
 def _point(B, E, e, q, nd, v):
     """v[3 d + c] = (r_d)_c, d over the first nd of (x, y, xx, xy, yy), at point q of element e."""
-    v[:] = 0.0
     for d in range(nd):
+        v0 = v1 = v2 = 0.0
         for k in range(E.shape[1]):
-            for c in range(3):
-                v[3 * d + c] += B[e, q, d, k] * E[e, k, c]
+            b = B[e, q, d, k]
+            v0 += b * E[e, k, 0]
+            v1 += b * E[e, k, 1]
+            v2 += b * E[e, k, 2]
+        v[3 * d], v[3 * d + 1], v[3 * d + 2] = v0, v1, v2
 
 
 @njit(cache=True)
@@ -91,15 +94,33 @@ def _density(v, k, bending, want_K, gw, H, gb, Hb):
 
 
 @leaf
-def _add_point(Bq, ww, nd, gw, H, want_K, ge, Ke, T):
-    """ge += ww J^T gw and, if want_K, Ke += ww J^T H J, J = dv/de (sparse in Bq)."""
-    ns = Bq.shape[1]
+def _add_gradient(Bq, ww, nd, gw, gt):
+    """gt += ww J^T gw, J = dv/de (sparse in Bq), gt by component: gt[c, k] is the
+    element coordinate 3 k + c (:func:`_swap_gradient`)."""
     for d in range(nd):
-        for kk in range(ns):
-            for c in range(3):
-                ge[3 * kk + c] += ww * Bq[d, kk] * gw[3 * d + c]
-    if not want_K:
-        return
+        for c in range(3):
+            gd = gw[3 * d + c]
+            for kk in range(Bq.shape[1]):
+                gt[c, kk] += ww * Bq[d, kk] * gd
+
+
+@leaf
+def _swap_gradient(ge, gt, back):
+    """gt[c, k] = ge[3 k + c], or back."""
+    for kk in range(gt.shape[1]):
+        for c in range(3):
+            if back:
+                ge[3 * kk + c] = gt[c, kk]
+            else:
+                gt[c, kk] = ge[3 * kk + c]
+
+
+@leaf
+def _add_tangent(Bq, ww, nd, H, Kp, T):
+    """Kp += ww J^T H J, J = dv/de (sparse in Bq), with the columns by component: Kp[:,
+    ns c + k] is column 3 k + c (:func:`_swap_columns`; T (15, 36) scratch, its columns
+    in that order), so that both products run over contiguous rows."""
+    ns = Bq.shape[1]
     T[: 3 * nd] = 0.0  # the rows read below
     for i in range(3 * nd):
         for d2 in range(nd):
@@ -107,13 +128,26 @@ def _add_point(Bq, ww, nd, gw, H, want_K, ge, Ke, T):
                 h = ww * H[i, 3 * d2 + c2]
                 if h != 0.0:
                     for ll in range(ns):
-                        T[i, 3 * ll + c2] += h * Bq[d2, ll]
+                        T[i, ns * c2 + ll] += h * Bq[d2, ll]
     for d in range(nd):
         for kk in range(ns):
             bk = Bq[d, kk]
             for c in range(3):
                 for j in range(3 * ns):
-                    Ke[3 * kk + c, j] += bk * T[3 * d + c, j]
+                    Kp[3 * kk + c, j] += bk * T[3 * d + c, j]
+
+
+@leaf
+def _swap_columns(Ke, Kp, back):
+    """Kp[:, ns c + k] = Ke[:, 3 k + c] (ns = Ke's columns / 3), or back."""
+    ns = Ke.shape[1] // 3
+    for r in range(Ke.shape[0]):
+        for kk in range(ns):
+            for c in range(3):
+                if back:
+                    Ke[r, 3 * kk + c] = Kp[r, ns * c + kk]
+                else:
+                    Kp[r, ns * c + kk] = Ke[r, 3 * kk + c]
 
 
 @njit(cache=True)
@@ -125,12 +159,21 @@ def gradient_tangent(E, data, want_K, g, K):
     nd = 5 if bending else 2
     v, gw, gb = np.empty(15), np.empty(15), np.empty(15)
     H, Hb = np.empty((15, 15)), np.empty((15, 15))
-    T = np.empty((15, 3 * E.shape[1]))
+    T, gt = np.empty((15, 3 * E.shape[1])), np.empty((3, E.shape[1]))
+    Kp = np.empty((3 * E.shape[1], 3 * E.shape[1]))
     for e in range(nel):
+        _swap_gradient(g[e], gt, False)
+        if want_K:
+            _swap_columns(K[e], Kp, False)
         for q in range(nq):
             _point(B, E, e, q, nd, v)
             _density(v, k, bending, want_K, gw, H, gb, Hb)
-            _add_point(B[e, q], wq[e, q], nd, gw, H, want_K, g[e], K[e] if want_K else H, T)
+            _add_gradient(B[e, q], wq[e, q], nd, gw, gt)
+            if want_K:
+                _add_tangent(B[e, q], wq[e, q], nd, H, Kp, T)
+        _swap_gradient(g[e], gt, True)
+        if want_K:
+            _swap_columns(K[e], Kp, True)
 
 
 class Plate36(CompiledElement):

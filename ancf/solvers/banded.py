@@ -19,17 +19,26 @@ from numba import njit, uintp
 from ancf.common.leaf import leaf
 
 
+@leaf
+def _last_nonzero(AB, kl, i, j):
+    """The last column <= j of row i with a nonzero entry (i if none past the diagonal)."""
+    while j > i and AB[i, j - i + kl] == 0.0:
+        j -= 1
+    return j
+
+
 @njit(cache=True)
 def lu(AB, kl, piv, pivoting):
     """Factor in place; returns 0, or k + 1 if the pivot of column k is zero.  The
-    last nonzero column of each row is tracked, so the fill columns are only worked
-    on where row interchanges put something there."""
+    last nonzero column of each row is tracked (from the matrix's own, within the
+    band), so the zeros past it, and the fill columns, are only worked on where
+    eliminations or row interchanges put something there."""
     n, w = AB.shape
     flat = AB.reshape(-1)  # the row updates index it with unsigned offsets: no negative-
     #                        index test in the loop, which then runs on vector instructions
     last = np.empty(n, dtype=np.int64)
     for i in range(n):
-        last[i] = min(n - 1, i + kl)
+        last[i] = _last_nonzero(AB, kl, i, min(n - 1, i + kl))
     for k in range(n):
         end = min(n - 1, k + kl)
         p = k
@@ -65,22 +74,31 @@ def lu(AB, kl, piv, pivoting):
 
 @leaf
 def solve(AB, kl, piv, b):
-    """Solve in place with the factors of :func:`lu`."""
+    """Solve in place with the factors of :func:`lu`.  Each pass stops at the last
+    nonzero of its column of L or row of U, leaving out only exact zeros; without row
+    interchanges the fill columns are untouched (zero in storage assembled from zero),
+    so the backward pass looks for it from column k + kl."""
     n, w = AB.shape
     flat, step = AB.reshape(-1), uintp(w - 1)  # unsigned offsets, as in lu
+    swapped = False
     for k in range(n):
         p = piv[k]
         if p != k:
             b[k], b[p] = b[p], b[k]
+            swapped = True
         bk = b[k]
         if bk != 0.0:
             o, r0 = uintp((k + 1) * w - 1 + kl), uintp(k + 1)  # AB[k + 1, kl - 1]
-            for t in range(uintp(min(n - 1, k + kl) - k)):  # rows k + 1 ... k + kl
+            m = min(n - 1, k + kl) - k
+            while m > 0 and flat[o + uintp(m - 1) * step] == 0.0:
+                m -= 1
+            for t in range(uintp(m)):  # rows k + 1 ... k + m
                 b[r0 + t] -= flat[o + t * step] * bk
+    upper = 2 * kl if swapped else kl
     for k in range(n - 1, -1, -1):
         s = b[k]
         o, c0 = uintp(k * w + kl + 1), uintp(k + 1)  # AB[k, kl + 1]
-        for t in range(uintp(min(n - 1, k + 2 * kl) - k)):  # columns k + 1 ... k + 2 kl
+        for t in range(uintp(_last_nonzero(AB, kl, k, min(n - 1, k + upper)) - k)):
             s -= flat[o + t] * b[c0 + t]
         b[k] = s / AB[k, kl]
 
