@@ -302,6 +302,9 @@ def _point_measure(m, want_J, a0, a1, c0, c1, s, sx, gm, Hm):
 @njit(cache=True)
 def _damping(E, V, data, d, want_K, want_C, g, K, C):
     """:func:`damping_forces` with dQ_d/de (want_K) and dQ_d/de' (want_C) apart."""
+    if d[1] == 0.0 and not want_K:
+        _axial_damping(E, V, data, d[0], want_C, g, C)
+        return
     BX, BXX, xi, wq, lengths, k = data
     nel, nq = wq.shape
     nd = 2 * E.shape[1]
@@ -325,6 +328,34 @@ def _damping(E, V, data, d, want_K, want_C, g, K, C):
                 _point_measure(m, want_K, a0, a1, c0, c1, s, sx, gm, Hm)
                 _add_damping(e, ww, d[m], Jv, gm, Hm, ve, want_K, want_C, g, K, C, hI, hJ,
                              inv_l, z, Hs, HJ, G, live)
+
+
+@njit(cache=True)
+def _axial_damping(E, V, data, dEA, want_C, g, C):
+    """:func:`_damping` of the axial strain alone (dEI = 0) without dQ_d/de: its gradient
+    deps/de = Jv^T deps/dv has a (Jv's rows 0, 1) alone, so dm/de[2 k + d] = BX_k deps/da_d,
+    the sums of :func:`_add_damping` bit for bit (they add exact zeros besides) without the
+    point Jacobian and the nodal shear sines."""
+    BX, BXX, xi, wq, lengths, k = data
+    nel, nq = wq.shape
+    ns = E.shape[1]
+    gm, G = np.empty(7), np.empty(2 * ns)
+    for e in range(nel):
+        for q in range(nq):
+            a0, a1, c0, c1 = _centre_line(E, BX, BXX, e, q)
+            gen.axial_strain_grad(a0, a1, c0, c1, 0.0, 0.0, 0.0, gm)
+            rate = 0.0
+            for m in range(ns):
+                for d in range(2):
+                    G[2 * m + d] = 0.0 + BX[e, q, m] * gm[d]
+                    rate += G[2 * m + d] * V[e, m, d]
+            f = wq[e, q] * dEA
+            for a in range(2 * ns):
+                g[e, a] += f * rate * G[a]
+            if want_C:
+                for a in range(2 * ns):
+                    for b in range(2 * ns):
+                        C[e, a, b] += f * G[a] * G[b]
 
 
 @njit(cache=True)
