@@ -60,9 +60,10 @@ from numba import njit
 
 from ancf.elements import _dufva_generated as gen
 from ancf.elements import _generated as shape_gen
-from ancf.elements.compiled_element import BeltElement, add_point_tangent, check
+from ancf.elements.compiled_element import BeltElement, check
 
 _NODE = 6  # coordinates per node: r, r_x, r_y
+_SHAPES = 6  # shape functions per element (cubic2d), each with 2 coordinates
 AXIAL_LAWS = ("green", "engineering")  # the axial strain laws (module docstring)
 
 
@@ -192,13 +193,19 @@ def gradient_tangent(E, data, want_K, g, K):
             if k[6] != 0.0:
                 _add_engineering(k[6], a0, a1, c0, c1, s, sx, want_K, gw, H, ge, He)
             _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
-            for b in range(nd):
-                acc = 0.0
-                for i in range(7):
-                    acc += Jv[i, b] * gw[i]
-                g[e, b] += ww * acc
+            for m in range(_SHAPES):
+                for d in range(2):
+                    b = 2 * m + d
+                    acc = 0.0 + Jv[d, b] * gw[d]
+                    acc += Jv[2 + d, b] * gw[2 + d]
+                    if m % 3 != 0:
+                        acc += Jv[4, b] * gw[4]
+                        acc += Jv[5, b] * gw[5]
+                        if m % 3 == 2:
+                            acc += Jv[6, b] * gw[6]
+                    g[e, b] += ww * acc
             if want_K:
-                add_point_tangent(Ke, ww, Jv, H, HJ)
+                _add_point_tangent(Ke, ww, Jv, H, HJ)
                 bI += ww * ((1.0 - z) * gw[4] - inv_l * gw[5])
                 bJ += ww * (z * gw[4] + inv_l * gw[5])
                 wI += ww * (1.0 - z) * gw[6]
@@ -212,9 +219,43 @@ def gradient_tangent(E, data, want_K, g, K):
 
 
 @njit(cache=True)
+def _add_point_tangent(Ke, ww, Jv, H, HJ):
+    """Ke += ww Jv^T H Jv (upper triangle): the sums of
+    :func:`ancf.elements.compiled_element.add_point_tangent` bit for bit, over the rows of
+    Jv (:func:`_point_jacobian`) that may be nonzero in column 2 m + d, in increasing order
+    from 0.0: a (row d) and c (row 2 + d) of every shape function m, s and s_x (rows 4, 5)
+    of the nodal slopes r_x, r_y (m % 3 = 1, 2), eps_yy (row 6) of r_y (the terms left
+    out are products with an exact zero; half the products, loops of known length)."""
+    for i in range(7):
+        for m in range(_SHAPES):
+            for d in range(2):
+                b = 2 * m + d
+                acc = 0.0 + H[i, d] * Jv[d, b]
+                acc += H[i, 2 + d] * Jv[2 + d, b]
+                if m % 3 != 0:
+                    acc += H[i, 4] * Jv[4, b]
+                    acc += H[i, 5] * Jv[5, b]
+                    if m % 3 == 2:
+                        acc += H[i, 6] * Jv[6, b]
+                HJ[i, b] = ww * acc
+    for m in range(_SHAPES):
+        for d in range(2):
+            a = 2 * m + d
+            for b in range(a, 2 * _SHAPES):
+                acc = 0.0 + Jv[d, a] * HJ[d, b]
+                acc += Jv[2 + d, a] * HJ[2 + d, b]
+                if m % 3 != 0:
+                    acc += Jv[4, a] * HJ[4, b]
+                    acc += Jv[5, a] * HJ[5, b]
+                    if m % 3 == 2:
+                        acc += Jv[6, a] * HJ[6, b]
+                Ke[a, b] += acc
+
+
+@njit(cache=True)
 def _live_tangent(Hs, Jv, Hm, HJ, live):
-    """Hs += Jv^T Hm Jv (upper triangle) as ``add_point_tangent(Hs, 1.0, Jv, Hm, HJ)``,
-    over the point variables with a nonzero row of the symmetric Hm only (live: (7,) int
+    """Hs += Jv^T Hm Jv (upper triangle) as
+    ``compiled_element.add_point_tangent(Hs, 1.0, Jv, Hm, HJ)``, over the point variables with a nonzero row of the symmetric Hm only (live: (7,) int
     work): the terms left out are products with an exact zero, so the sums are the same
     (the axial strain's Hessian has 2 live rows of 7: a seventh of the work)."""
     nv, nd = Jv.shape

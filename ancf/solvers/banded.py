@@ -65,9 +65,16 @@ def lu(AB, kl, piv, pivoting):
 
 @leaf
 def solve(AB, kl, piv, b):
-    """Solve in place with the factors of :func:`lu`."""
+    """Solve in place with the factors of :func:`lu`.  Without a row interchange the fill
+    columns stay as stored (empty: a band matrix of half-bandwidth kl), so U is read up to
+    kl columns past the diagonal, else 2 kl (the sums skip exact zeros only)."""
     n, w = AB.shape
     flat, step = AB.reshape(-1), uintp(w - 1)  # unsigned offsets, as in lu
+    ku = kl
+    for k in range(n):
+        if piv[k] != k:
+            ku = 2 * kl
+            break
     for k in range(n):
         p = piv[k]
         if p != k:
@@ -80,7 +87,7 @@ def solve(AB, kl, piv, b):
     for k in range(n - 1, -1, -1):
         s = b[k]
         o, c0 = uintp(k * w + kl + 1), uintp(k + 1)  # AB[k, kl + 1]
-        for t in range(uintp(min(n - 1, k + 2 * kl) - k)):  # columns k + 1 ... k + 2 kl
+        for t in range(uintp(min(n - 1, k + ku) - k)):  # columns k + 1 ... k + ku
             s -= flat[o + t] * b[c0 + t]
         b[k] = s / AB[k, kl]
 
