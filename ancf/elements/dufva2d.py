@@ -192,19 +192,9 @@ def gradient_tangent(E, data, want_K, g, K):
                 gen.density_grad(a0, a1, c0, c1, s, sx, ey, k, gw)
             if k[6] != 0.0:
                 _add_engineering(k[6], a0, a1, c0, c1, s, sx, want_K, gw, H, ge, He)
-            _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
-            for m in range(_SHAPES):
-                for d in range(2):
-                    b = 2 * m + d
-                    acc = 0.0 + Jv[d, b] * gw[d]
-                    acc += Jv[2 + d, b] * gw[2 + d]
-                    if m % 3 != 0:
-                        acc += Jv[4, b] * gw[4]
-                        acc += Jv[5, b] * gw[5]
-                        if m % 3 == 2:
-                            acc += Jv[6, b] * gw[6]
-                    g[e, b] += ww * acc
+            _add_point_gradient(g, e, q, ww, z, inv_l, BX, BXX, gI, gJ, E, gw)
             if want_K:
+                _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
                 _add_point_tangent(Ke, ww, Jv, H, HJ)
                 bI += ww * ((1.0 - z) * gw[4] - inv_l * gw[5])
                 bJ += ww * (z * gw[4] + inv_l * gw[5])
@@ -216,6 +206,31 @@ def gradient_tangent(E, data, want_K, g, K):
                     Ke[b, a] = Ke[a, b]
             _add_nodal_curvature(Ke, bI, bJ, hI, hJ, wI, wJ)
             K[e] += Ke
+
+
+@njit(cache=True)
+def _add_point_gradient(g, e, q, ww, z, inv_l, BX, BXX, gI, gJ, E, gw):
+    """g[e] += ww Jv^T gw at point q (z = x/l) with the entries of Jv
+    (:func:`_point_jacobian`) formed as there, over the rows that may be nonzero in each
+    column 2 m + d (:func:`_add_point_tangent`): the dense sums bit for bit, without Jv."""
+    for m in range(_SHAPES):
+        node, slot = m // 3, m % 3
+        for d in range(2):
+            acc = 0.0 + BX[e, q, m] * gw[d]
+            acc += BXX[e, q, m] * gw[2 + d]
+            if slot != 0:
+                i = 2 * (slot - 1) + d
+                if node == 0:
+                    acc += ((1.0 - z) * gI[i]) * gw[4]
+                    acc += (-gI[i] * inv_l) * gw[5]
+                    if slot == 2:
+                        acc += ((1.0 - z) * E[e, 2, d]) * gw[6]
+                else:
+                    acc += (z * gJ[i]) * gw[4]
+                    acc += (gJ[i] * inv_l) * gw[5]
+                    if slot == 2:
+                        acc += (z * E[e, 5, d]) * gw[6]
+            g[e, 2 * m + d] += ww * acc
 
 
 @njit(cache=True)
