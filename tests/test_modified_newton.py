@@ -3,7 +3,8 @@
 file's ``run.refresh_ratio``, ``run.newton_accept`` and ``run.refresh`` give them (``once``
 factors fewer matrices than ``contraction``): each converged step lies within
 the Newton tolerance of the step converged far tighter, from the same state (the THREAD
-drive, bristle friction with its state, coarse), and the defaults are the march's.  The
+drive, bristle friction with its state, coarse; ``once`` within the default setting's
+bound), and the defaults are the march's.  The
 belt damping's cheaper iteration-matrix part (``run.damping_jacobian = "rate"``,
 :func:`ancf.elements.dufva2d.damping_forces_rate`) gives the exact kernel's forces and
 dQ_d/de', bit for bit.
@@ -48,6 +49,15 @@ def _one_step(m, st, k, z, zstate):
     return s[0]
 
 
+def _bound_ratio(setting: dict) -> float:
+    """The contraction ratio the setting's error bound takes: its refresh ratio; with
+    refresh once, a matrix kept after the step's refresh while increments merely shrink
+    does not guarantee it, so such a step is held to the default setting's bound."""
+    if setting.get("refresh") == "once":
+        return REFRESH_RATIO
+    return setting.get("refresh_ratio", REFRESH_RATIO)
+
+
 def test_every_setting_reaches_the_tightly_converged_step():
     """The THREAD belt (30 elements) settled on its pulleys, set running along itself at
     0.2 m/s over the resting pulleys (its bristles stick, then slip): 12 steps, each taken
@@ -76,7 +86,7 @@ def test_every_setting_reaches_the_tightly_converged_step():
                        1e9)[0] == DONE
         scale = TOL * (1 + np.max(np.abs(st[0][: drive.n])))
         for name, xk in got.items():
-            ratio = SETTINGS[name].get("refresh_ratio", REFRESH_RATIO)
+            ratio = _bound_ratio(SETTINGS[name])
             worst[name] = max(worst[name], np.max(np.abs(xk - st[0])) / (scale / (1 - ratio)))
     assert max(worst.values()) <= 1.0, worst
     assert worst["evaluated"] > 0  # the settings change the iterates (not one code path)

@@ -270,9 +270,10 @@ def _add_point_tangent(Ke, ww, Jv, H, HJ):
 @njit(cache=True)
 def _live_tangent(Hs, Jv, Hm, HJ, live):
     """Hs += Jv^T Hm Jv (upper triangle) as
-    ``compiled_element.add_point_tangent(Hs, 1.0, Jv, Hm, HJ)``, over the point variables with a nonzero row of the symmetric Hm only (live: (7,) int
-    work): the terms left out are products with an exact zero, so the sums are the same
-    (the axial strain's Hessian has 2 live rows of 7: a seventh of the work)."""
+    ``compiled_element.add_point_tangent(Hs, 1.0, Jv, Hm, HJ)``, over the point variables
+    with a nonzero row of the symmetric Hm only (live: (7,) int work): the terms left out
+    are products with an exact zero, so the sums are the same (the axial strain's Hessian
+    has 2 live rows of 7: a seventh of the work)."""
     nv, nd = Jv.shape
     nl = 0
     for i in range(nv):
