@@ -9,7 +9,8 @@ Ours: ``ancf run belt-drive --file examples/thread_benchmark.toml`` at the same 
 count and step (``--set belt.n_elements=240 --set run.dt=1e-4``; the file's contact
 quadrature, friction and generalised-alpha otherwise) and the same end time, with the
 solver settings :data:`SOLVER` (``run.newton_accept=evaluated``,
-``run.damping_jacobian=rate``: the same equations, a cheaper Newton iteration).
+``run.damping_jacobian=rate``, ``run.refresh_ratio=0.2``, ``run.refresh=once``: the same
+equations, a cheaper Newton iteration).
 
 Measurement as in :mod:`benchmarks.peers`: one BLAS thread, OPENBLAS_CORETYPE /
 OPENBLAS_L2_SIZE unset, each side in a fresh process, one run each, ours first then
@@ -45,17 +46,22 @@ from benchmarks.peers_thread_exudyn import N_ELEMENTS, SEGMENTS, STEP, T_END, WI
 
 FILE = peers.ROOT / "examples" / "thread_benchmark.toml"
 #: our solver settings of the race: modified Newton accepting the last evaluated iterate,
-#: the belt damping's strain-rate part of the iteration matrix only (the residual, the
-#: physics, are the file's; ancf.solvers.alpha_march, ancf.belts.forces)
-SOLVER = ("run.newton_accept=evaluated", "run.damping_jacobian=rate")
+#: refactoring when an increment exceeds 0.2 of the one before, at most once per step
+#: unless an increment grows or is damped, the belt damping's strain-rate part of the iteration
+#: matrix only (the residual, the physics, are the file's; ancf.solvers.alpha_march,
+#: ancf.belts.forces)
+SOLVER = ("run.newton_accept=evaluated", "run.damping_jacobian=rate", "run.refresh_ratio=0.2",
+          "run.refresh=once")
 OURS = ("belt.n_elements=%d" % N_ELEMENTS, "run.dt=%g" % STEP, *SOLVER)
 SETTINGS = {
     "ours": f"ancf run belt-drive --file FILE --set belt.n_elements={N_ELEMENTS} "
             f"--set run.dt={STEP:g} " + " ".join(f"--set {s}" for s in SOLVER) +
             " (the file's 5 contact Gauss points per element, friction law, damping, "
             "generalised-alpha rho_inf and Newton tolerance 1e-7; modified Newton keeping "
-            "its factors across steps, the last evaluated iterate accepted, the damping's "
-            "strain-rate Jacobian only in the iteration matrix; frictionless settling first)",
+            "its factors across steps, refactored when an increment exceeds 0.2 of the one "
+            "before, at most once per step unless an increment grows or is damped, the last "
+            "evaluated iterate accepted, the damping's strain-rate Jacobian only in the "
+            "iteration matrix; frictionless settling first)",
     "exudyn": f"benchmarks/peers_thread_exudyn.py: beltDriveReevingSystem.py's model, "
               f"{N_ELEMENTS} ANCFCable2D elements, {SEGMENTS} contact segments per element, "
               f"TrapezoidalIndex2 h = {STEP:g} s, modified Newton, EigenSparse, one thread, "

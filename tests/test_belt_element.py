@@ -23,6 +23,8 @@ from analytic import dufva_belt, reissner, timoshenko
 from ancf.checks.belt_element import (CIRCLE_H_FOUR, MODEL1, REISSNER_TOL, SECTION1, cantilever,
                                       circle_gap)
 from ancf.elements import _generated as shape_gen
+from ancf.elements import dufva2d
+from ancf.elements.compiled_element import add_point_tangent
 from ancf.elements.dufva2d import DufvaBelt2D
 from ancf.core.forces import EndMoment
 from ancf.core.mesh import BeamMesh
@@ -243,3 +245,21 @@ def test_bad_lengths_and_reference_raise():
         DufvaBelt2D([1.0, -1.0], e0, SECTION1, E=2e11, nu=0.3)
     with pytest.raises(ValueError, match="^e0 size must be"):
         DufvaBelt2D(m.lengths, e0[:, :6], SECTION1, E=2e11, nu=0.3)
+
+
+def test_point_tangent_over_nonzero_rows_is_the_dense_one_bit_for_bit():
+    """dufva2d's point tangent sums over the rows of the point Jacobian that may be nonzero:
+    the dense product's sums bit for bit, at random points of random elements."""
+    rng = np.random.default_rng(11)
+    for _ in range(20):
+        BX, BXX = rng.standard_normal((1, 1, 6)), rng.standard_normal((1, 1, 6))
+        E, gI, gJ = rng.standard_normal((1, 6, 2)), rng.standard_normal(4), rng.standard_normal(4)
+        Jv = np.empty((7, 12))
+        dufva2d._point_jacobian(BX, BXX, 0, 0, rng.random(), 1.0 + rng.random(), gI, gJ, E, Jv)
+        H = rng.standard_normal((7, 7))
+        H += H.T
+        K1, K2 = rng.standard_normal((12, 12)), np.empty((12, 12))
+        K2[:] = K1
+        add_point_tangent(K1, 0.3, Jv, H, np.empty((7, 12)))
+        dufva2d._add_point_tangent(K2, 0.3, Jv, H, np.empty((7, 12)))
+        assert K1.tobytes() == K2.tobytes()

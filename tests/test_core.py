@@ -56,6 +56,25 @@ def test_band_lu_solves_like_dense(n, kl):
     np.testing.assert_allclose(x, np.linalg.solve(A, b), rtol=1e-9, atol=1e-12)
 
 
+@pytest.mark.parametrize("n,kl", [(7, 2), (40, 5), (200, 7)])
+def test_band_solve_without_interchanges_reads_kl_columns_of_u(n, kl):
+    """Factors without a row interchange (unpivoted, diagonally dominant) solve like dense,
+    and garbage in the fill columns, which such factors never write, changes nothing:
+    the solve reads U up to kl columns past the diagonal only."""
+    A = _random_band(n, kl, seed=n) + 4.0 * (kl + 1) * np.eye(n)
+    b = np.arange(n, dtype=float) + 1.0
+    AB = _band_of(A, kl)
+    piv = np.empty(n, dtype=np.int64)
+    assert banded.lu(AB, kl, piv, False) == 0
+    x = b.copy()
+    banded.solve(AB, kl, piv, x)
+    np.testing.assert_allclose(x, np.linalg.solve(A, b), rtol=1e-9, atol=1e-12)
+    AB[:, 2 * kl + 1:] = np.nan
+    y = b.copy()
+    banded.solve(AB, kl, piv, y)
+    assert y.tobytes() == x.tobytes()
+
+
 @pytest.mark.parametrize("seed", range(4))
 def test_inertia_counts_match_eigenvalues(seed):
     A = _random_band(60, 4, seed, symmetric=True)

@@ -51,7 +51,7 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
 * ``[contact]``: the penalty ``k_p`` (N/m^2), ``c_p`` (N s/m^2) and ``gauss_points``.
 * ``[run]``: ``t_end``, ``dt``, ``output_dt``, ``steady_window`` (s: the averaging window
   before t_end), ``start`` (``settled`` or ``laid``), ``rho_inf``, ``newton_tol``,
-  ``max_steps``, modified Newton's ``refresh_ratio`` and ``newton_accept``
+  ``max_steps``, modified Newton's ``refresh_ratio``, ``newton_accept`` and ``refresh``
   (:mod:`ancf.solvers.alpha_march`; their defaults are the march's defaults) and the belt
   damping's part of the iteration matrix ``damping_jacobian``
   (:data:`ancf.belts.forces.DAMPING_JACOBIANS`).
@@ -73,7 +73,7 @@ from ancf.belts.path import PulleyPath
 from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS
 from ancf.common.inputs import MAX_STEPS
 from ancf.common.params import InputError, Param
-from ancf.solvers.alpha_march import ACCEPT, REFRESH_RATIO
+from ancf.solvers.alpha_march import ACCEPT, REFRESH, REFRESH_RATIO
 
 REQUIRED = None  # the default of a key that must be given (Param's "no default")
 BOUND = 1e3      # m: coordinates of centres and pivots within +-BOUND
@@ -284,6 +284,10 @@ RUN = _keys(
           "iterate after the last increment; 'evaluated', the last evaluated iterate once the "
           "increment from it is below newton_tol (one residual evaluation fewer per step)",
           choices=ACCEPT),
+    Param("refresh", REFRESH[0], str, doc="modified Newton: 'contraction', an increment above "
+          "refresh_ratio of the one before refactors the iteration matrix; 'once', only if it "
+          "was not refactored within the step yet (a growing or damped increment always does)",
+          choices=REFRESH),
     Param("damping_jacobian", DAMPING_JACOBIANS[0], str, doc="the belt damping's part of the "
           "iteration matrix: 'exact', or 'rate' (dQ_d/dz' only, dQ_d/dz left out: the same "
           "residual, a cheaper matrix)", choices=DAMPING_JACOBIANS),

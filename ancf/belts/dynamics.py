@@ -38,6 +38,7 @@ class BeltOptions:
     newton_tol: float = 1e-7     # beta' |d acc|_inf <= tol (1 + |z|_inf)
     refresh_ratio: float = REFRESH_RATIO  # modified Newton: refactor when |d_k| > it |d_k-1|
     newton_accept: str = "applied"  # the converged state (ancf.solvers.alpha_march.ACCEPT)
+    refresh: str = "contraction"  # when it refactors (ancf.solvers.alpha_march.REFRESH)
     max_iter: int = 12
     max_halvings: int = 4
     max_steps: int = 400_000
@@ -78,7 +79,7 @@ class _March:
 
     def run(self, st, k, k_stop, slot, out_x, out_v, limit):
         o = self.opt
-        newton = newton_settings(o.newton_tol, o.refresh_ratio, o.newton_accept)
+        newton = newton_settings(o.newton_tol, o.refresh_ratio, o.newton_accept, o.refresh)
         return march(self.ts, k, k_stop, st, self.system, self.hf, self.cf, self.count, newton,
                      o.max_iter, limit, o.max_steps, slot, out_x, out_v)
 

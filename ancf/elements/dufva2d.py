@@ -60,9 +60,10 @@ from numba import njit
 
 from ancf.elements import _dufva_generated as gen
 from ancf.elements import _generated as shape_gen
-from ancf.elements.compiled_element import BeltElement, add_point_tangent, check
+from ancf.elements.compiled_element import BeltElement, check
 
 _NODE = 6  # coordinates per node: r, r_x, r_y
+_SHAPES = 6  # shape functions per element (cubic2d), each with 2 coordinates
 AXIAL_LAWS = ("green", "engineering")  # the axial strain laws (module docstring)
 
 
@@ -191,14 +192,10 @@ def gradient_tangent(E, data, want_K, g, K):
                 gen.density_grad(a0, a1, c0, c1, s, sx, ey, k, gw)
             if k[6] != 0.0:
                 _add_engineering(k[6], a0, a1, c0, c1, s, sx, want_K, gw, H, ge, He)
-            _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
-            for b in range(nd):
-                acc = 0.0
-                for i in range(7):
-                    acc += Jv[i, b] * gw[i]
-                g[e, b] += ww * acc
+            _add_point_gradient(g, e, q, ww, z, inv_l, BX, BXX, gI, gJ, E, gw)
             if want_K:
-                add_point_tangent(Ke, ww, Jv, H, HJ)
+                _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
+                _add_point_tangent(Ke, ww, Jv, H, HJ)
                 bI += ww * ((1.0 - z) * gw[4] - inv_l * gw[5])
                 bJ += ww * (z * gw[4] + inv_l * gw[5])
                 wI += ww * (1.0 - z) * gw[6]
@@ -212,11 +209,71 @@ def gradient_tangent(E, data, want_K, g, K):
 
 
 @njit(cache=True)
+def _add_point_gradient(g, e, q, ww, z, inv_l, BX, BXX, gI, gJ, E, gw):
+    """g[e] += ww Jv^T gw at point q (z = x/l) with the entries of Jv
+    (:func:`_point_jacobian`) formed as there, over the rows that may be nonzero in each
+    column 2 m + d (:func:`_add_point_tangent`): the dense sums bit for bit, without Jv."""
+    for m in range(_SHAPES):
+        node, slot = m // 3, m % 3
+        for d in range(2):
+            acc = 0.0 + BX[e, q, m] * gw[d]
+            acc += BXX[e, q, m] * gw[2 + d]
+            if slot != 0:
+                i = 2 * (slot - 1) + d
+                if node == 0:
+                    acc += ((1.0 - z) * gI[i]) * gw[4]
+                    acc += (-gI[i] * inv_l) * gw[5]
+                    if slot == 2:
+                        acc += ((1.0 - z) * E[e, 2, d]) * gw[6]
+                else:
+                    acc += (z * gJ[i]) * gw[4]
+                    acc += (gJ[i] * inv_l) * gw[5]
+                    if slot == 2:
+                        acc += (z * E[e, 5, d]) * gw[6]
+            g[e, 2 * m + d] += ww * acc
+
+
+@njit(cache=True)
+def _add_point_tangent(Ke, ww, Jv, H, HJ):
+    """Ke += ww Jv^T H Jv (upper triangle): the sums of
+    :func:`ancf.elements.compiled_element.add_point_tangent` bit for bit, over the rows of
+    Jv (:func:`_point_jacobian`) that may be nonzero in column 2 m + d, in increasing order
+    from 0.0: a (row d) and c (row 2 + d) of every shape function m, s and s_x (rows 4, 5)
+    of the nodal slopes r_x, r_y (m % 3 = 1, 2), eps_yy (row 6) of r_y (the terms left
+    out are products with an exact zero; half the products, loops of known length)."""
+    for i in range(7):
+        for m in range(_SHAPES):
+            for d in range(2):
+                b = 2 * m + d
+                acc = 0.0 + H[i, d] * Jv[d, b]
+                acc += H[i, 2 + d] * Jv[2 + d, b]
+                if m % 3 != 0:
+                    acc += H[i, 4] * Jv[4, b]
+                    acc += H[i, 5] * Jv[5, b]
+                    if m % 3 == 2:
+                        acc += H[i, 6] * Jv[6, b]
+                HJ[i, b] = ww * acc
+    for m in range(_SHAPES):
+        for d in range(2):
+            a = 2 * m + d
+            for b in range(a, 2 * _SHAPES):
+                acc = 0.0 + Jv[d, a] * HJ[d, b]
+                acc += Jv[2 + d, a] * HJ[2 + d, b]
+                if m % 3 != 0:
+                    acc += Jv[4, a] * HJ[4, b]
+                    acc += Jv[5, a] * HJ[5, b]
+                    if m % 3 == 2:
+                        acc += Jv[6, a] * HJ[6, b]
+                Ke[a, b] += acc
+
+
+@njit(cache=True)
 def _live_tangent(Hs, Jv, Hm, HJ, live):
-    """Hs += Jv^T Hm Jv (upper triangle) as ``add_point_tangent(Hs, 1.0, Jv, Hm, HJ)``,
-    over the point variables with a nonzero row of the symmetric Hm only (live: (7,) int
-    work): the terms left out are products with an exact zero, so the sums are the same
-    (the axial strain's Hessian has 2 live rows of 7: a seventh of the work)."""
+    """Hs += Jv^T Hm Jv (upper triangle) as
+    ``compiled_element.add_point_tangent(Hs, 1.0, Jv, Hm, HJ)``, over the point variables
+    with a nonzero row of the symmetric Hm only (live: (7,) int work): the terms left out
+    are products with an exact zero, so the sums are the same (the axial strain's Hessian
+    has 2 live rows of 7: a seventh of the work)."""
     nv, nd = Jv.shape
     nl = 0
     for i in range(nv):
@@ -302,6 +359,9 @@ def _point_measure(m, want_J, a0, a1, c0, c1, s, sx, gm, Hm):
 @njit(cache=True)
 def _damping(E, V, data, d, want_K, want_C, g, K, C):
     """:func:`damping_forces` with dQ_d/de (want_K) and dQ_d/de' (want_C) apart."""
+    if d[1] == 0.0 and not want_K:
+        _axial_damping(E, V, data, d[0], want_C, g, C)
+        return
     BX, BXX, xi, wq, lengths, k = data
     nel, nq = wq.shape
     nd = 2 * E.shape[1]
@@ -325,6 +385,34 @@ def _damping(E, V, data, d, want_K, want_C, g, K, C):
                 _point_measure(m, want_K, a0, a1, c0, c1, s, sx, gm, Hm)
                 _add_damping(e, ww, d[m], Jv, gm, Hm, ve, want_K, want_C, g, K, C, hI, hJ,
                              inv_l, z, Hs, HJ, G, live)
+
+
+@njit(cache=True)
+def _axial_damping(E, V, data, dEA, want_C, g, C):
+    """:func:`_damping` of the axial strain alone (dEI = 0) without dQ_d/de: its gradient
+    deps/de = Jv^T deps/dv has a (Jv's rows 0, 1) alone, so dm/de[2 k + d] = BX_k deps/da_d,
+    the sums of :func:`_add_damping` bit for bit (they add exact zeros besides) without the
+    point Jacobian and the nodal shear sines."""
+    BX, BXX, xi, wq, lengths, k = data
+    nel, nq = wq.shape
+    ns = E.shape[1]
+    gm, G = np.empty(7), np.empty(2 * ns)
+    for e in range(nel):
+        for q in range(nq):
+            a0, a1, c0, c1 = _centre_line(E, BX, BXX, e, q)
+            gen.axial_strain_grad(a0, a1, c0, c1, 0.0, 0.0, 0.0, gm)
+            rate = 0.0
+            for m in range(ns):
+                for d in range(2):
+                    G[2 * m + d] = 0.0 + BX[e, q, m] * gm[d]
+                    rate += G[2 * m + d] * V[e, m, d]
+            f = wq[e, q] * dEA
+            for a in range(2 * ns):
+                g[e, a] += f * rate * G[a]
+            if want_C:
+                for a in range(2 * ns):
+                    for b in range(2 * ns):
+                        C[e, a, b] += f * G[a] * G[b]
 
 
 @njit(cache=True)

@@ -174,6 +174,7 @@ def run(p: dict) -> SceneResult:
     x0, pre = settle(drive) if r["start"] == "settled" else (None, None)
     opt = BeltOptions(dt=r["dt"], rho_inf=r["rho_inf"], newton_tol=r["newton_tol"],
                       refresh_ratio=r["refresh_ratio"], newton_accept=r["newton_accept"],
+                      refresh=r["refresh"],
                       max_steps=r["max_steps"])
     res = simulate(drive, bc.times(r), opt, x0=x0 if pre is None or pre.converged else None,
                    progress=bc.progress("belt-drive", r, PROGRESS_STEPS),

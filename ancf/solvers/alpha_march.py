@@ -16,7 +16,10 @@ residual r(acc1) = M acc1 + f(q_{n+1}, q'_{n+1}, t_{n+1}):
 * the iteration matrix and its factors are kept across iterations and steps; they are
   refreshed (new matrix, new factors) when there are none, the step size changed, an
   increment fails to contract (|d_k| > refresh_ratio |d_{k-1}|, :data:`REFRESH_RATIO`
-  unless the settings say otherwise) or was damped;
+  unless the settings say otherwise) or was damped; with ``refresh`` ``once``
+  (:data:`REFRESH`) an increment that contracts too slowly refreshes them only if they
+  were not refreshed within the step yet (a growing or a damped one always does): where
+  contact states switch within a step, a second fresh matrix contracts little better;
 * converged when beta' |d|_inf <= tol (1 + |q|_inf) over the system's first m
   coordinates, q at the step's start or at the last full evaluation as the system
   says, and beta' lam |d_i| <= tol for the others (a position increment);
@@ -65,17 +68,23 @@ REFRESH_RATIO = 0.5
 MAX_BACKTRACKS = 8  # trial lengths 1, 1/2, ... 1/128 of a Newton increment
 #: the state a converged step takes (module docstring), the first the default
 ACCEPT = ("applied", "evaluated")
+#: when an increment that contracts too slowly refreshes the kept matrix (module
+#: docstring): always, or once per step; the first the default
+REFRESH = ("contraction", "once")
 
 
 def newton_settings(tol: float, refresh_ratio: float = REFRESH_RATIO,
-                    accept: str = ACCEPT[0]) -> np.ndarray:
-    """The march's Newton settings [tol, refresh_ratio, accept's index in ACCEPT]
-    (module docstring); ValueError naming a setting out of its range."""
+                    accept: str = ACCEPT[0], refresh: str = REFRESH[0]) -> np.ndarray:
+    """The march's Newton settings [tol, refresh_ratio, accept's index in ACCEPT,
+    refresh's index in REFRESH] (module docstring); ValueError naming a setting out of its
+    range."""
     if not 0.0 < refresh_ratio < 1.0:
         raise ValueError(f"refresh_ratio must be in (0, 1) (got {refresh_ratio!r})")
-    if accept not in ACCEPT:
-        raise ValueError(f"accept must be one of {', '.join(ACCEPT)} (got {accept!r})")
-    return np.array([tol, refresh_ratio, float(ACCEPT.index(accept))])
+    for name, value, allowed in (("accept", accept, ACCEPT), ("refresh", refresh, REFRESH)):
+        if value not in allowed:
+            raise ValueError(f"{name} must be one of {', '.join(allowed)} (got {value!r})")
+    return np.array([tol, refresh_ratio, float(ACCEPT.index(accept)),
+                     float(REFRESH.index(refresh))])
 
 
 def system_prepare(system, k):
@@ -182,7 +191,7 @@ def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
     """One step of size h ending at step time index k; True on convergence."""
     x, v, acc, a = st
     am, af, gamma, beta = cf
-    tol, ratio, evaluated = newton[0], newton[1], newton[2] == 1.0
+    tol, ratio, evaluated, once = newton[0], newton[1], newton[2] == 1.0, newton[3] == 1.0
     bp = h * h * beta * (1 - af) / (1 - am)
     gp = h * gamma * (1 - af) / (1 - am)
     system_prepare(system, k)
@@ -192,7 +201,7 @@ def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
     evaluated = evaluated and damped
     refresh = fresh or hf[0] != h
     x1, v1, a1 = np.empty(acc.size), v.copy(), np.empty(acc.size)  # at the last evaluation
-    have_r, d_prev = False, np.inf
+    have_r, d_prev, refreshed = False, np.inf, False
     for _ in range(max_iter):
         if not have_r:
             _evaluate(system, acc1, st, h, k, cf, bp, gp, refresh, count, r, moving, x1, v1, a1)
@@ -203,7 +212,7 @@ def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
                 hf[0] = np.nan
                 return False
             hf[0] = h
-            refresh = False
+            refresh, refreshed = False, True
         d = -r
         system_solve(system, d)
         count[3] += 1
@@ -229,7 +238,7 @@ def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
                           a1)
             _take(acc1, st, h, cf, x1, v1, a1)
             return True
-        if dn > ratio * d_prev or lam < 1.0:
+        if (dn > ratio * d_prev and not (once and refreshed and dn <= d_prev)) or lam < 1.0:
             refresh = True
             if have_r:
                 _evaluate(system, acc1, st, h, k, cf, bp, gp, True, count, r, moving, x1, v1, a1)
