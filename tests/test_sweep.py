@@ -30,9 +30,12 @@ SAME = ["key", "element", "integration", "n_elements", "h", "nu", "F", "status",
 
 
 def _cli(*argv, **env_extra):
+    """The CLI in a process whose Ctrl-C is Python's, even where this one ignores SIGINT (a
+    shell's background job does: Python then never turns SIGINT into KeyboardInterrupt)."""
     env = dict(os.environ, **env_extra)
     return subprocess.Popen([sys.executable, "-m", "ancf.cli", *argv], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=env)
+                            stderr=subprocess.PIPE, text=True, env=env,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
 
 
 @pytest.fixture(scope="module")
@@ -316,10 +319,10 @@ def test_the_time_limit_counts_cpu_without_compilation(monkeypatch):
         {"compiling": True}, {"compiling": False}]
 
 
-def test_the_other_workers_start_after_the_pilot_compiled(monkeypatch):
-    """Workers started together on an empty kernel cache each compile the same kernels: the
-    pilot starts alone, the others once it returned a row, died, or ran PILOT_CPU seconds
-    of its first run outside compilation."""
+def test_the_other_workers_take_runs_after_the_pilot_compiled(monkeypatch):
+    """Workers running together on an empty kernel cache each compile the same kernels: the
+    pilot runs alone, the others take runs once it returned a row, died, or ran PILOT_CPU
+    seconds of its first run outside compilation."""
     from types import SimpleNamespace
     from ancf.study import sweep
 

@@ -513,12 +513,13 @@ class _Runner:
 
 
 def _pilot_done(pilot, rows: int) -> bool:
-    """May the other workers start?  One worker, the pilot, starts first: workers started
+    """May the other workers take runs?  One worker, the pilot, runs first: workers running
     together on an empty kernel cache would each compile the same kernels (numba writes a
     kernel to the cache once compiled): ``python -m ancf.reports --quick`` from an empty
-    cache took 768 CPU seconds that way, 582 with a pilot.  The others start, loading what
-    the pilot compiled, once it has returned a row, died, or run :data:`PILOT_CPU` seconds
-    of its first run outside compilation (a run's kernels compile as it starts)."""
+    cache took 768 CPU seconds that way, 582 with a pilot.  The others (started, and
+    ready, meanwhile) take runs, loading what the pilot compiled, once it has returned a
+    row, died, or run :data:`PILOT_CPU` seconds of its first run outside compilation (a
+    run's kernels compile as it starts)."""
     if rows or pilot.proc.poll() is not None:
         return True
     clock = pilot.clock
@@ -527,7 +528,7 @@ def _pilot_done(pilot, rows: int) -> bool:
 
 def _run_local(todo: list[dict], workers: int, time_limit: float):
     """Yield one row per task, running ``workers`` worker processes at a time (the first
-    of them alone at the start: :func:`_pilot_done`)."""
+    of them alone until :func:`_pilot_done`)."""
     pending = deque(todo)
     sel = selectors.DefaultSelector()
     runners: list[_Runner] = []
@@ -544,15 +545,13 @@ def _run_local(todo: list[dict], workers: int, time_limit: float):
         (r.kill if kill else r.close)()
 
     try:
-        spawn()
-        pilot, waiting = runners[0], max(1, min(workers, len(todo))) - 1
+        for _ in range(max(1, min(workers, len(todo)))):
+            spawn()
+        pilot, released = runners[0], False
         while pending or any(r.task is not None for r in runners):
-            if waiting and _pilot_done(pilot, rows):
-                for _ in range(waiting):
-                    spawn()
-                waiting = 0
+            released = released or _pilot_done(pilot, rows)
             for r in runners:
-                if r.ready and r.task is None and pending:
+                if r.ready and r.task is None and pending and (released or r is pilot):
                     r.send(pending.popleft())
             busy = [r for r in runners if r.task is not None]
             wait = min([r.clock.wait(time_limit) for r in busy] + [1.0])
