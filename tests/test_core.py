@@ -44,15 +44,21 @@ def _random_band(n, kl, seed, symmetric=False):
     return A + A.T if symmetric else A
 
 
+def _factor_and_solve(A, kl, b, pivoting):
+    """(band factors, pivots, solution) of A x = b by banded.lu and banded.solve."""
+    AB = _band_of(A, kl)
+    piv = np.empty(A.shape[0], dtype=np.int64)
+    assert banded.lu(AB, kl, piv, pivoting) == 0
+    x = b.copy()
+    banded.solve(AB, kl, piv, x)
+    return AB, piv, x
+
+
 @pytest.mark.parametrize("n,kl", [(1, 0), (7, 2), (40, 5), (200, 7)])
 def test_band_lu_solves_like_dense(n, kl):
     A = _random_band(n, kl, seed=n)  # general, needs row interchanges
     b = np.arange(n, dtype=float) + 1.0
-    AB = _band_of(A, kl)
-    piv = np.empty(n, dtype=np.int64)
-    assert banded.lu(AB, kl, piv, True) == 0
-    x = b.copy()
-    banded.solve(AB, kl, piv, x)
+    _, _, x = _factor_and_solve(A, kl, b, True)
     np.testing.assert_allclose(x, np.linalg.solve(A, b), rtol=1e-9, atol=1e-12)
 
 
@@ -63,11 +69,7 @@ def test_band_solve_without_interchanges_reads_kl_columns_of_u(n, kl):
     the solve reads U up to kl columns past the diagonal only."""
     A = _random_band(n, kl, seed=n) + 4.0 * (kl + 1) * np.eye(n)
     b = np.arange(n, dtype=float) + 1.0
-    AB = _band_of(A, kl)
-    piv = np.empty(n, dtype=np.int64)
-    assert banded.lu(AB, kl, piv, False) == 0
-    x = b.copy()
-    banded.solve(AB, kl, piv, x)
+    AB, piv, x = _factor_and_solve(A, kl, b, False)
     np.testing.assert_allclose(x, np.linalg.solve(A, b), rtol=1e-9, atol=1e-12)
     AB[:, 2 * kl + 1:] = np.nan
     y = b.copy()
