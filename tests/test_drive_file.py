@@ -256,7 +256,7 @@ BAD = [  # (overrides, or an edit of the thesis file's data; the one line it giv
     (["belt.n_elements=many"], r"belt.n_elements: 'many' is not valid; allowed: an integer "
      r"in \[4, 2000\]"),
     (["contact.gauss_points=6"], "contact.gauss_points = 6 is out of range; allowed: one of "
-     "5, 7, 11"),
+     "3, 4, 5, 7, 11"),
     (["belt.EA=1e4"], "belt.E, belt.EA: both given; allowed: exactly one"),
     (_without(("belt", "E")), r"belt.E: missing \(or belt.EA\); allowed: a number in "
      r"\(0, 1e\+12\] Pa"),

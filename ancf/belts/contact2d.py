@@ -57,8 +57,9 @@ from ancf.elements._generated import cubic2d_S
 from ancf.core.quadrature import gauss01
 
 #: Gauss rules along the element the contact is integrated with (the force is not
-#: smooth, so more points than the stiffness needs; Eq 3.27 discussion).
-SUPPORTED_POINTS = (5, 7, 11)
+#: smooth, so more points than the stiffness needs; Eq 3.27 discussion); 3 and 4 for
+#: fine meshes, as THREAD's 4 contact segments per element and Exudyn's 2.
+SUPPORTED_POINTS = (3, 4, 5, 7, 11)
 
 
 def contact_points(lengths, gauss_points):

@@ -60,7 +60,7 @@ class Belt2DSpec(DriveSpec):
     k_p: float                  # penalty stiffness per unit length, N/m^2
     c_p: float                  # penalty damping per unit length, N s/m^2
     friction: tuple             # (law, its parameters): a row of ancf.belts.friction.ALL_PARAMS
-    gauss_points: int           # contact Gauss points per element (5, 7, 11)
+    gauss_points: int           # contact Gauss points per element (3, 4, 5, 7, 11)
     axial: str = field(default="green", kw_only=True)  # axial strain law (dufva2d.AXIAL_LAWS)
 
 
