@@ -319,6 +319,17 @@ def test_heartbeat_speaks_after_silence_and_ends_with_its_input():
     assert all("test: still running belt3d: Model 2" in line for line in lines)
 
 
+def test_a_process_done_with_its_chapters_stops_its_heartbeat():
+    """A report process that idles until the other one is done (a pool's worker) says so
+    no more: its heartbeat ends, not 'still running' its last step."""
+    from ancf.reports import output
+    output.heartbeat("test", 0.5)
+    beat = output._BEAT[0]
+    output.progress("belt3d: Model 1")
+    output.heartbeat_stop()
+    assert beat.poll() is not None and not output._BEAT
+
+
 def test_no_chapter_page_holds_a_timing(quick):
     """CPU times vary per run: no table column and no plot of them on a chapter page (they
     belong on its timing page), so a regeneration leaves the pages as they were."""

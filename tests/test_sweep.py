@@ -345,3 +345,27 @@ def test_the_other_workers_take_runs_after_the_pilot_compiled(monkeypatch):
     assert sweep._pilot_done(pilot, 1)            # a row came back
     pilot.proc = SimpleNamespace(poll=lambda: -9)
     assert sweep._pilot_done(pilot, 0)            # it died: the others go on without it
+
+
+def test_a_finished_sweeps_workers_serve_the_next_sweep(workdir, monkeypatch):
+    """The idle workers of a finished sweep wait for the next sweep of this process (a
+    worker's start costs about 1.6 CPU-s); not across a change of the environment a worker
+    would get, and not past an interrupted sweep; the rows are a fresh worker's."""
+    from ancf.study import sweep
+
+    sweep._close_parked()
+    grids = [{"n_elements": [1, 2, 3, 4]}]
+    first = run_sweep("cantilever", grids, out=workdir / "a.csv", workers=2, progress=False)
+    pids = sorted(r.proc.pid for r in sweep._PARKED)
+    assert len(pids) == 2 and all(r.proc.poll() is None for r in sweep._PARKED)
+    again = run_sweep("cantilever", grids, out=workdir / "b.csv", workers=2, progress=False)
+    assert sorted(r.proc.pid for r in sweep._PARKED) == pids
+    cols = ["key", "status", "error", "res_tip_x", "res_tip_y", "iterations"]
+    pd.testing.assert_frame_equal(first[cols], again[cols])
+    monkeypatch.setenv("ANCF_TEST_OTHER_ENV", "1")
+    run_sweep("cantilever", grids, out=workdir / "c.csv", workers=2, progress=False)
+    assert not set(pids) & {r.proc.pid for r in sweep._PARKED}  # the old ones were ended
+    rows = sweep._run_local(sweep.make_tasks("cantilever", expand(grids)), 2, 60.0)
+    next(rows)
+    rows.close()  # the consumer stops early: an interrupted sweep
+    assert not sweep._PARKED

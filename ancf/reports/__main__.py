@@ -28,8 +28,8 @@ from ancf.reports import published as pub
 from ancf.reports.dynamics import dynamics_chapter
 from ancf.reports.elements3d import elements3d_chapter
 from ancf.reports import studies, tables
-from ancf.reports.output import (configure, heartbeat, markdown_table, progress, run,
-                                 take_timing, timing_note, write_csv)
+from ancf.reports.output import (configure, heartbeat, heartbeat_stop, markdown_table,
+                                 progress, run, take_timing, timing_note, write_csv)
 from ancf.reports.speed_accuracy import speed_accuracy_chapter
 from ancf.reports.speed_accuracy_frequencies import frequency_speed_accuracy_chapter
 from ancf.checks import belt3d as belt3d_checks
@@ -316,6 +316,8 @@ def _write_group(root: str, quick: bool, names: tuple, ahead: tuple = ()) -> dic
         if stored(scene, overrides) is None:
             progress(f"ahead for the other process: {scene} {overrides}")
             keep(scene, overrides, SCENES[scene].execute(dict(overrides))[0])
+    progress(f"{names[0].removesuffix('.md')}{' + ...' if len(names) > 1 else ''}: done")
+    heartbeat_stop()  # the process idles until the other one is done
     return written
 
 

@@ -168,6 +168,18 @@ def heartbeat(label: str, every: float = HEARTBEAT_S) -> None:
                                        str(every)], stdin=subprocess.PIPE))
 
 
+def heartbeat_stop() -> None:
+    """End this process's heartbeat (its work is done; the process may live on idle, as a
+    pool's worker does until the pool shuts down)."""
+    if _BEAT:
+        beat = _BEAT.pop()
+        try:
+            beat.stdin.close()
+        except OSError:
+            pass
+        beat.wait()
+
+
 @lru_cache(maxsize=None)
 def _run_cached(registry: str, name: str, items: tuple):
     from ancf.scenes.analytic import REFERENCES
