@@ -330,6 +330,17 @@ def test_a_process_done_with_its_chapters_stops_its_heartbeat():
     assert beat.poll() is not None and not output._BEAT
 
 
+def test_the_3d_belt_chapter_comes_after_its_sweep():
+    """Two report processes: the speed-accuracy sweeps in one, the 3D belt's first; every
+    other chapter in the other, the 3D belt's last (its Model 2 runs are that sweep's)."""
+    from ancf.reports.__main__ import GROUPS
+    from ancf.reports.speed_accuracy import FIRST
+    assert sorted(c for g in GROUPS for c in g) == sorted(CHAPTERS)
+    sweeps, other = GROUPS
+    assert sweeps == ("speed_accuracy.md",) and other[-1] == "belt3d.md"
+    assert FIRST == ("belt3d",)
+
+
 def test_no_chapter_page_holds_a_timing(quick):
     """CPU times vary per run: no table column and no plot of them on a chapter page (they
     belong on its timing page), so a regeneration leaves the pages as they were."""

@@ -32,9 +32,7 @@ from ancf.reports.output import (configure, heartbeat, heartbeat_stop, markdown_
                                  progress, run, take_timing, timing_note, write_csv)
 from ancf.reports.speed_accuracy import speed_accuracy_chapter
 from ancf.reports.speed_accuracy_frequencies import frequency_speed_accuracy_chapter
-from ancf.checks import belt3d as belt3d_checks
-from ancf.scenes import SCENES
-from ancf.scenes.store import ENV as STORE_ENV, keep, stored
+from ancf.scenes.store import ENV as STORE_ENV
 from ancf.study.schemas import schemas_markdown
 
 
@@ -294,28 +292,21 @@ def write_chapters(root: Path, only: str | None = None) -> dict:
 
 
 #: the two processes of a full generation, each writing its chapters in this order: the
-#: speed-accuracy sweeps (two sweep workers of their own) and then the 3D belt, whose Model 2
-#: runs the belt3d sweep has made and kept (``ancf.scenes.store``); every other chapter
-GROUPS = (("speed_accuracy.md", "belt3d.md"),
-          tuple(c for c in CHAPTERS if c not in ("speed_accuracy.md", "belt3d.md")))
+#: speed-accuracy sweeps (two sweep workers of their own; the 3D belt's first,
+#: ancf.reports.speed_accuracy.FIRST), and every other chapter, the 3D belt's last: its
+#: Model 2 runs are the belt3d sweep's, made and kept by then (``ancf.scenes.store``; a run
+#: not found there is made where it is needed)
+GROUPS = (("speed_accuracy.md",),
+          tuple(c for c in CHAPTERS if c not in ("speed_accuracy.md", "belt3d.md"))
+          + ("belt3d.md",))
 
 
-#: runs the second process makes once its chapters are written, for the 3D belt chapter of
-#: the first (kept in the run store; the first makes any it does not find there yet)
-AHEAD = (("belt3d", belt3d_checks.MODEL1_RUN),)
-
-
-def _write_group(root: str, quick: bool, names: tuple, ahead: tuple = ()) -> dict:
-    """Write the chapters ``names`` (in a process of its own), then make the runs ``ahead``
-    (scene, overrides) not yet in the run store; {chapter: statuses}."""
+def _write_group(root: str, quick: bool, names: tuple) -> dict:
+    """Write the chapters ``names`` (in a process of its own); {chapter: statuses}."""
     configure(root, quick)
     heartbeat(" + ".join(n.removesuffix(".md") for n in names[:2])
               + (" + ..." if len(names) > 2 else ""))
     written = {n: write_chapters(Path(root), n) for n in names}
-    for scene, overrides in () if quick else ahead:
-        if stored(scene, overrides) is None:
-            progress(f"ahead for the other process: {scene} {overrides}")
-            keep(scene, overrides, SCENES[scene].execute(dict(overrides))[0])
     progress(f"{names[0].removesuffix('.md')}{' + ...' if len(names) > 1 else ''}: done")
     heartbeat_stop()  # the process idles until the other one is done
     return written
@@ -336,8 +327,7 @@ def write_all(root: Path, quick: bool, jobs: int = 2) -> dict:
                 from ancf.reports.__main__ import _write_group as target
                 ctx = multiprocessing.get_context("spawn")
                 with ProcessPoolExecutor(len(GROUPS), mp_context=ctx) as ex:
-                    futures = [ex.submit(target, str(root), quick, g, ahead)
-                               for g, ahead in zip(GROUPS, ((), AHEAD))]
+                    futures = [ex.submit(target, str(root), quick, g) for g in GROUPS]
                     per = {k: v for f in futures for k, v in f.result().items()}
         finally:
             os.environ.pop(STORE_ENV, None)
@@ -379,8 +369,8 @@ def main(argv=None) -> int:
                     help="reduced configuration (smaller grids and element counts, shorter "
                          "simulated times): a smoke run of every chapter, not the published data")
     ap.add_argument("--jobs", type=int, choices=(1, 2), default=2,
-                    help="processes writing chapters (default 2: the speed-accuracy sweeps and "
-                         "the 3D belt in one, every other chapter in the other)")
+                    help="processes writing chapters (default 2: the speed-accuracy sweeps in "
+                         "one, every other chapter in the other)")
     ap.add_argument("--chapter", choices=CHAPTERS,
                     help="write this chapter only; README.md keeps the acceptance rows it "
                          "has and takes this chapter's")
