@@ -3,6 +3,7 @@ imports one that imports it back (at module level or inside a function)."""
 from __future__ import annotations
 
 import ast
+import os
 import subprocess
 import re
 import sys
@@ -190,3 +191,33 @@ def test_scenes_listing_is_kept_for_the_sources(tmp_path):
     assert "ancf.scenes.cantilever" in first.stderr.splitlines()[-1]
     assert second.stderr.strip().splitlines()[-1] == "[]"
     assert list(tmp_path.glob("ancf-bench/*/scenes.txt"))
+
+
+def test_run_loads_numba_without_yaml_unless_numba_has_a_config_file(tmp_path):
+    """numba imports PyYAML (10-15 ms) only to read a .numba_config.yaml in the working
+    directory: `ancf run` loads numba without it where there is none (after it, `import
+    yaml` works), and with it where there is one."""
+    code = ("import sys\nfrom ancf import cli\ncli.main(['run', 'cantilever', '--json'])\n"
+            "print('yaml' in sys.modules, file=sys.stderr)\nimport yaml\n"
+            "print(yaml.safe_load('a: 1'), file=sys.stderr)\n")
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    for cwd, loaded in ((ROOT, "False"), (tmp_path, "True")):
+        if cwd == tmp_path:
+            (tmp_path / ".numba_config.yaml").write_text("# read by numba\n")
+        p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                           cwd=cwd, env=env, timeout=300)
+        assert p.returncode == 0, p.stderr
+        assert p.stderr.strip().splitlines()[-2:] == [loaded, "{'a': 1}"]
+
+
+def test_a_run_process_ends_at_once_with_its_output_whole(monkeypatch):
+    """`ancf run` ends with os._exit after flushing (no interpreter shutdown: 25 ms): the
+    JSON on a pipe is whole and the exit code the run's (3: the solver failed)."""
+    import json
+    from ancf.common.process_start import end_process
+    p = subprocess.run([sys.executable, "-m", "ancf.cli", "run", "cantilever", "--json", "--set",
+                        "F=-5e6", "--set", "load_steps=1", "--set", "max_iterations=1"],
+                       capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert p.returncode == 3 and json.loads(p.stdout)["converged"] is False
+    monkeypatch.setenv("NUMBA_CHROME_TRACE", "trace.json")  # written at exit: the usual end
+    assert end_process(0) is None

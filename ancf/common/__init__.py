@@ -2,7 +2,8 @@
 (``params``), the input-error type, shared input rules (``inputs``), strict JSON,
 floating-point warnings as one line, the CPU time spent compiling or loading numba kernels
 (``compile_time``), the BLAS thread pin, numba's BLAS module loaded without the rest of
-scipy.linalg (``blas``), the machine record, the checkout's folders
+scipy.linalg (``blas``), numba loaded without PyYAML and a run's process ended without
+the interpreter's shutdown (``process_start``), the machine record, the checkout's folders
 (``paths``), the layer rule (``layers``), compile-time dispatch on a record's type
 for compiled code with records as struct references (``dispatch``) and the compiled
 leaf functions that skip reference counting (``leaf``).  Imports nothing of the project.
