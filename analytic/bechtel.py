@@ -34,7 +34,7 @@ Defaults: Table 4.1 Model 2 (R, mu, omega_0, rhoA = rho w h = 0.02 kg/m), k = 0.
 (Figs 4.11-4.18; = E w h with the E = 1.6667e6 Pa of the plate model), T_i = 50 N (thesis,
 after Fig. 4.10), T_a = 2 N m (Eq. 4.47 at steady state).  The thesis's "approximately
 14.6 %" slower driven pulley (k = 0.2 kN, read off Fig. 4.14) is not reproduced: this
-model gives 15.16 % (capstan 14.71 %); see tests/test_bechtel.py.
+model gives 15.16 % (capstan 14.71 %); see tests/scenes/test_bechtel.py.
 """
 from __future__ import annotations
 

@@ -35,7 +35,7 @@ and a value where the belt is too short.  A tensioner's arm rotation psi (rad, i
 belt) is found by Brent's method on its moment balance, preload - stiffness psi = the
 belt's moment on arm and pulley about the pivot, out of the belt (a slack belt's is 0).
 For two equal pulleys, a wrap of pi each, this is :mod:`analytic.bechtel`
-(tests/test_belt_steady.py).
+(tests/analytic/test_belt_steady.py).
 """
 from __future__ import annotations
 

@@ -27,13 +27,13 @@ EVERYWHERE = "ancf/ analytic/"   # every .py file of the package
 PACKAGE = ("ancf", "analytic")
 TIME_LIMIT = 900  # s per mutation (all its tests)
 WORK = Path(tempfile.gettempdir()) / "ancf-mutations"
-TD, TP = "tests/test_dynamics.py::", "tests/test_published_tables.py::"
-TA = "tests/test_analytic.py::"
-TB = "tests/test_belt_drive.py::"
-T3 = "tests/test_contact3d.py::"
-TM = "tests/test_modes.py::"
-TPIN = "tests/test_pinned.py::"
-TW = "tests/test_belt_wiring.py::"
+TD, TP = "tests/scenes/test_dynamics.py::", "tests/scenes/test_published_tables.py::"
+TA = "tests/analytic/test_analytic.py::"
+TB = "tests/belts/test_belt_drive.py::"
+T3 = "tests/belts/test_contact3d.py::"
+TM = "tests/scenes/test_modes.py::"
+TPIN = "tests/scenes/test_pinned.py::"
+TW = "tests/belts/test_belt_wiring.py::"
 
 
 def plus_1_percent(before: str, value: str, after: str = "") -> tuple[str, str]:
@@ -87,7 +87,7 @@ MUTATIONS = [
      plus_1_percent("R1, R2, X_CENTRE = ", "0.08125"), TB + "test_table_3_1_span_and_path_length"),
     ("creep slope nu_s halved in the linear branch", "ancf/belts/friction.py",
      ("f[i] = -nu * v[i]", "f[i] = -0.5 * nu * v[i]"),
-     "tests/test_contact.py::test_rotating_ring_slides_by_the_tri_linear_law"),
+     "tests/belts/test_contact.py::test_rotating_ring_slides_by_the_tri_linear_law"),
     ("3D creep slope nu_s halved in the linear branch", "ancf/belts/friction.py",
      ("f[i] = -nu * v[i]", "f[i] = -0.5 * nu * v[i]"),
      T3 + "test_sliding_strip_follows_the_creep_rate_law"),
@@ -100,7 +100,7 @@ MUTATIONS = [
     ("saturated friction without df/dF_n", "ancf/belts/friction.py",
      ("D[i, c] = -mu * (v[i] / s) * gF[c] - g * (G[i, c] - v[i] / s * ug)",
       "D[i, c] = -g * (G[i, c] - v[i] / s * ug)"),
-     "tests/test_friction.py::test_chain_matches_central_differences_of_the_force"),
+     "tests/belts/test_friction.py::test_chain_matches_central_differences_of_the_force"),
     ("3D Jacobian without the turning of n", "ancf/belts/contact3d.py",
      ("D[i, c] += Fn * t[i] * t[c] / rho", "D[i, c] += 0.0"),
      T3 + "test_jacobians_match_central_differences"),
@@ -118,13 +118,13 @@ MUTATIONS = [
      TM + "test_the_sturm_check_tells_a_repeated_pair_from_a_missed_mode"),
     ("tip moment's torque split evenly (unweighted fit)", "ancf/models/beam3d.py",
      ('SectionMoment(m.n_dofs, dofs, M, (moments["Q2_0"],', 'SectionMoment(m.n_dofs, dofs, M, (1.0,'),
-     "tests/test_beam3d_benchmarks.py::test_tip_moment_small_deflection_is_the_closed_form"),
+     "tests/models/test_beam3d_benchmarks.py::test_tip_moment_small_deflection_is_the_closed_form"),
     ("section moment's Jacobian without the turning of the slopes", "ancf/core/forces.py",
      ("J[3 * k:3 * k + 3, 3 * k:3 * k + 3] += wk * _skew(m)", "J[3 * k:3 * k + 3, 3 * k:3 * k + 3] += 0.0"),
-     "tests/test_beam3d_benchmarks.py::test_section_moment_jacobian_matches_differences"),
+     "tests/models/test_beam3d_benchmarks.py::test_section_moment_jacobian_matches_differences"),
     ("Princeton beam's torsion factor from h only", "ancf/scenes/princeton_beam.py",
      ('torsion_factor(v["h"], v["b"])', 'torsion_factor(v["h"], v["h"])'),
-     "tests/test_beam3d_benchmarks.py::test_princeton_linear3d_and_belt3d_against_ansys"),
+     "tests/models/test_beam3d_benchmarks.py::test_princeton_linear3d_and_belt3d_against_ansys"),
     # issue 22: constants changed consistently in scenes and references alike
     ("g 9.81 -> 9.71 everywhere in the package", EVERYWHERE, ("9.81", "9.71"),
      (TPIN + "test_pendulum_defaults_are_the_thesis_problem_as_printed",

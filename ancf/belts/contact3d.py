@@ -38,7 +38,7 @@ component d), 36 per element; E, V are (nel, 12, 3).  Forces are per unit area o
 the reference rectangle (the weights w).  A point exactly on a pulley axis has no
 normal; the penalty regime (d << R) never reaches it.  With a plane motion about an
 axis along z, the law per unit width is the planar one of :mod:`ancf.belts.contact2d` with
-k_p, c_p, nu_s divided by the width (tests/test_contact3d.py).
+k_p, c_p, nu_s divided by the width (tests/belts/test_contact3d.py).
 """
 from __future__ import annotations
 

@@ -28,7 +28,7 @@ which choose the law at run time by its code prm[2] (its index in :data:`ALL_PAR
 if-chain compiled into the kernels: one comparison per contact point), so one compiled
 kernel runs every law.  :data:`LAW` names the thesis's law (belt2d, belt3d).  A new law
 is one more pair of functions, one more row of :data:`LAWS` and :data:`PARAMS`, and one
-more branch of :func:`force` and :func:`chain`; tests/test_friction.py checks every
+more branch of :func:`force` and :func:`chain`; tests/belts/test_friction.py checks every
 row's derivatives and that the dispatch reaches it.
 
 A law with a state per contact point (:data:`STATE_LAWS`: the bristle law, a spring
@@ -271,7 +271,7 @@ def _has_state(prm):
 @njit(cache=True, inline="always")
 def force(v, s, Fn, prm, f):
     """The force of the law whose code is prm[2] (a row of LAWS: every row is a branch
-    here, tests/test_friction.py; a law with a state is :func:`state_force`'s)."""
+    here, tests/belts/test_friction.py; a law with a state is :func:`state_force`'s)."""
     if prm[2] == _CREEP_RATE:
         return creep_rate_force(v, s, Fn, prm, f)
     return coulomb_force(v, s, Fn, prm, f)

@@ -27,7 +27,7 @@ pulley 0's wrap (for two pulleys the point of pulley 1 farthest from pulley 2, p
 Fig. 3.4), runs along span 0 -> 1, around pulley 1, ..., along span N-1 -> 0 and back
 over the other half of pulley 0.  For two pulleys on the inner side (Fig. 3.6, Table
 3.1: l = 0.382882 m, P = 1.27627 m) this is the arithmetic of the thesis drive's path,
-bit for bit (tests/test_pulley_path.py).
+bit for bit (tests/belts/test_pulley_path.py).
 
 A layout can be wrapped when it has at least two pulleys, no two of them overlap, the
 belt wraps every pulley (theta_k > 0), the wraps turn the belt once counter-clockwise

@@ -21,7 +21,7 @@ A drive names its driver's speed law and its load torque law (``driver_law``,
 ``torque_law`` of its spec); :data:`SPEED_LAWS` and :data:`TORQUE_LAWS` map the names
 to functions ``law(t, final, t0, t1)`` of the time (s, an array) that are 0 up to
 ``t0`` and ``final`` from ``t1`` on.  A new law is one function and one row here;
-tests/test_pulley_laws.py holds every row to that contract.
+tests/belts/test_pulley_laws.py holds every row to that contract.
 """
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
 """The 3D beam benchmarks (issue 24, item 4) as plain data, shared by
-``tests/test_beam3d_benchmarks.py`` and the report chapter ``beam3d_benchmarks``.
+``tests/models/test_beam3d_benchmarks.py`` and the report chapter ``beam3d_benchmarks``.
 
 Runs go through the scenes ``princeton-beam``, ``beam3d-bending`` and
 ``beam3d-cantilever`` (cached within a process); the published values are those of

@@ -1,5 +1,5 @@
 """Acceptance checks of the 2D belt drive (thesis section 3.3, Figs 3.5-3.21) as plain
-data, shared by ``tests/test_belt_drive.py`` and the report chapter ``belt2d``.
+data, shared by ``tests/belts/test_belt_drive.py`` and the report chapter ``belt2d``.
 
 Every check is a :class:`Check`: a computed ``value``, the ``reference`` it is held
 against, their ``difference`` (as ``measure`` says) and the ``tolerance`` it must not

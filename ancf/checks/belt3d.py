@@ -1,5 +1,5 @@
 """Acceptance checks of the 3D belt drive (thesis 4.6, Table 4.1, Figs 4.10-4.18) as
-plain data, shared by ``tests/test_belt3d_checks.py`` and the report chapter ``belt3d``.
+plain data, shared by ``tests/checks/test_belt3d_checks.py`` and the report chapter ``belt3d``.
 
 Runs go through the scene's public interface, cached per process
 (:func:`ancf.checks.belt2d.run`).  Model 2 is the scene's default (20 plates, 81 contact

@@ -1,6 +1,6 @@
 """Dufva's belt element on its own (thesis 3.1, ref. [54]): a cantilever of the element
 clamped at the root, under a dead tip force or an end moment.  Shared by
-``tests/test_belt_element.py`` and the belt chapter of the reports.
+``tests/elements/test_belt_element.py`` and the belt chapter of the reports.
 
 Clamp: position and r_y (the cross-section) of the root node, as the papers state
 (ancf/scenes/cantilever.py); clamping r_x as well would force sin(gamma) = 0 there.

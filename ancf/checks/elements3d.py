@@ -1,5 +1,5 @@
 """Validation of the thin plate and the 3D beam (issue 13 item 4) as plain data, shared by
-``tests/test_elements3d.py`` and the report chapter ``elements3d``.
+``tests/checks/test_elements3d.py`` and the report chapter ``elements3d``.
 
 Every check is a :class:`~ancf.checks.belt2d.Check` (value, reference, difference,
 tolerance, unit, measure).  The plate runs go through the scenes ``plate-square`` and

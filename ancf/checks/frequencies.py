@@ -1,5 +1,5 @@
 """Frequency studies (issue 24 items 3 and 4) as plain data, shared by
-``tests/test_frequencies.py`` and the report chapter ``frequencies``.
+``tests/checks/test_frequencies.py`` and the report chapter ``frequencies``.
 
 Every frequency comes from ``ancf modes`` (:func:`ancf.api.modes`) or from a ``belt2d`` run;
 the references are computed: Timoshenko's beam (:mod:`analytic.beam_modes`), Navier's plate

@@ -1,7 +1,7 @@
 """The package's layers, bottom to top, and the rule between them.
 
 A module imports only from its own layer and the layers below it, at module level
-and inside functions (``tests/test_layers.py``).  Each layer is a folder whose
+and inside functions (``tests/common/test_layers.py``).  Each layer is a folder whose
 ``__init__.py`` docstring says what it holds; the README's layout table is generated
 from this list and those docstrings: ``python -m ancf.common.layers`` rewrites it.
 """

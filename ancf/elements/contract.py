@@ -1,7 +1,7 @@
 """The element contract: what solvers, forces, energies and scenes may rely on.
 
 Every element in ``CONTRACT_ELEMENTS`` of :mod:`ancf.elements.catalogue` satisfies
-it, and the contract tests (``tests/test_elements.py``: finite-difference gradients
+it, and the contract tests (``tests/elements/test_elements.py``: finite-difference gradients
 and tangents, symmetry, rigid-motion invariance, zero-energy-mode counts, exact
 mass) run over that listing, so a new element gets them by being listed there.
 """

@@ -14,7 +14,7 @@ the 99th percentile of the axial force over them (the contact entries' spikes be
 short run of one driver revolution from rest) and writes ``reports/animations/*.gif``;
 its Markdown lines (a link and a caption stating the run's settings) are what the belt
 pages show.  Pillow writes the same bytes for the same frames, so a rerun on one
-machine reproduces the files; see ``tests/test_animations.py``.
+machine reproduces the files; see ``tests/reports/test_animations.py``.
 """
 from __future__ import annotations
 

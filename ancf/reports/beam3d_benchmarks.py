@@ -2,7 +2,7 @@
 status)``.  Every number comes from :mod:`ancf.checks.beam3d_benchmarks` (the scenes
 ``princeton-beam``, ``beam3d-bending``, ``beam3d-cantilever``), the published values from
 :mod:`ancf.scenes.beam3d_published`; the checks are pinned by
-``tests/test_beam3d_benchmarks.py``.
+``tests/models/test_beam3d_benchmarks.py``.
 """
 from __future__ import annotations
 
@@ -268,6 +268,6 @@ def beam3d_benchmarks_chapter() -> tuple[str, dict]:
         _continuum_text(),
     ]
     parts += checks_section(checks, status, "beam3d_benchmarks",
-                            "a test of `tests/test_beam3d_benchmarks.py`"
+                            "a test of `tests/models/test_beam3d_benchmarks.py`"
                             " (data: `data/beam3d_benchmarks_checks.csv`)")
     return "\n".join(parts), status

@@ -1,7 +1,7 @@
 """Bechtel's analytic steady belt (thesis section 4.1, Model 2 of Table 4.1):
 ``bechtel_chapter() -> (markdown, status)``.  Everything comes from
 :mod:`analytic.bechtel` through its public functions; the checks are pinned by
-``tests/test_bechtel.py``.
+``tests/scenes/test_bechtel.py``.
 """
 from __future__ import annotations
 

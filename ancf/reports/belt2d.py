@@ -340,7 +340,7 @@ def checks_table(checks: list, status: dict) -> list:
     thin, exact = bc.normal_force()
     return ["## Acceptance checks\n",
             "Computed by `ancf/checks/belt2d.py`, each tied to a test of "
-            "`tests/test_belt_drive.py` (data: `data/belt_checks.csv`). Difference: relative "
+            "`tests/belts/test_belt_drive.py` (data: `data/belt_checks.csv`). Difference: relative "
             "unless the measure says otherwise; trend rows give a ratio that must stay below 1.\n",
             markdown_table(df, 4), "",
             f"**F_n against T/R** (status {status[thin.name]}). In the middle of the wraps the "

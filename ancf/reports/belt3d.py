@@ -1,7 +1,7 @@
 """The 3D belt drive of thin plates (thesis 4.6, Table 4.1, Figs 4.10-4.18):
 ``belt3d_chapter() -> (markdown, status)``.  Every run and check comes from
 :mod:`ancf.checks.belt3d` (cached runs of the ``belt3d`` scene), pinned by
-``tests/test_belt3d_checks.py``.  The reduced configuration (``--quick``) skips the
+``tests/checks/test_belt3d_checks.py``.  The reduced configuration (``--quick``) skips the
 chapter's long runs (each Model 2 run simulates 1.2 s at 25 m/s belt speed).
 """
 from __future__ import annotations
@@ -222,7 +222,7 @@ def _checks_table(checks: list) -> tuple[list, dict]:
                        for c in checks])
     write_csv(df, "belt3d_checks")
     return (["## Acceptance checks\n", "Computed by `ancf/checks/belt3d.py`, each tied to a test "
-             "of `tests/test_belt3d_checks.py` (data: `data/belt3d_checks.csv`).\n",
+             "of `tests/checks/test_belt3d_checks.py` (data: `data/belt3d_checks.csv`).\n",
              markdown_table(df, 4), ""], dict(zip(df["check"], df["status"])))
 
 

@@ -355,8 +355,8 @@ def belt_drives_chapter() -> tuple[str, dict]:
               for name in (*THREAD_NAMES, *bd.SERPENTINE_NAMES)}
     if checks:
         parts += checks_section(checks, status, "belt_drives",
-                                "`tests/test_thread.py` (the comparison) and "
-                                "`tests/test_belt_npulley.py` (the serpentine)")
+                                "`tests/belts/test_thread.py` (the comparison) and "
+                                "`tests/belts/test_belt_npulley.py` (the serpentine)")
     parts += ["## Acceptance rows\n", "| check | status |", "|---|---|",
               *(f"| {k} | {v} |" for k, v in status.items()), ""]
     return "\n".join(parts), status

@@ -2,7 +2,7 @@
 status)``.  Every number comes from :mod:`ancf.checks.elements3d` (the scenes
 ``plate-square``, ``plate-strip``, ``beam3d-cantilever`` and the shared solves of
 :mod:`ancf.models.plate` / :mod:`ancf.models.beam3d`); the checks are pinned by
-``tests/test_elements3d.py``.
+``tests/checks/test_elements3d.py``.
 """
 from __future__ import annotations
 
@@ -110,6 +110,6 @@ def elements3d_chapter() -> tuple[str, dict]:
         "reference leaves zero strain energy and force in both elements (rows below).\n",
     ]
     parts += checks_section(checks, status, "elements3d",
-                            "a test of `tests/test_elements3d.py`"
+                            "a test of `tests/checks/test_elements3d.py`"
                             " (data: `data/elements3d_checks.csv`)")
     return "\n".join(parts), status

@@ -1,7 +1,7 @@
 """Natural frequencies (issue 24 items 3 and 4): ``frequencies_chapter() -> (markdown,
 status)``.  Every number comes from :mod:`ancf.checks.frequencies` (``ancf modes`` of the
 static scenes, a ``belt2d`` run, the analytic references); the checks are pinned by
-``tests/test_frequencies.py``.
+``tests/checks/test_frequencies.py``.
 """
 from __future__ import annotations
 
@@ -364,6 +364,6 @@ def frequencies_chapter() -> tuple[str, dict]:
              "on the timing page.\n"]
     parts += _beam_part() + _plate_part() + _axial_part() + _belt_part()
     parts += checks_section(checks, status, "frequencies",
-                            "a test (`tests/test_frequencies.py`, `tests/test_modes.py`; "
+                            "a test (`tests/checks/test_frequencies.py`, `tests/scenes/test_modes.py`; "
                             "data: `data/frequencies_checks.csv`)")
     return "\n".join(parts), status

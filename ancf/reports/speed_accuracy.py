@@ -222,7 +222,7 @@ _INTRO = (
     "one tangent evaluation × steps: the computation's size without the iteration counts "
     "that round-off steers), then the smallest model, then the smallest error, then the "
     "scene's default settings (`ancf/study/selection.py`): on every sweep of this chapter the "
-    "picks stay the same when each run's work moves by ±{scatter:g} % (tests/test_selection.py). "
+    "picks stay the same when each run's work moves by ±{scatter:g} % (tests/study/test_selection.py). "
     "`ancf recommend SCENE --tol TOL` answers the last question of "
     "each section for a given tolerance. The natural frequencies (`--quantity frequency`) "
     "have their own chapter, speed_accuracy_frequencies.md.\n")

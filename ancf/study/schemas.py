@@ -512,7 +512,7 @@ def schemas_markdown() -> str:
              "schema per `ancf run SCENE --json`, `ancf analytic NAME --json` and `ancf modes "
              "SCENE --json`; the suite validates every scene's and reference's default run "
              "(and every scene's modes) against it "
-             "(`tests/test_schemas.py`). Top level: `scene`, `params` (every parameter used), "
+             "(`tests/study/test_schemas.py`). Top level: `scene`, `params` (every parameter used), "
              "`converged`, `message`, `results`, `cpu_time_s` (the run's process CPU seconds "
              "without compiling or loading numba kernels), `compile_cpu_s` (those), "
              "`warnings` (a list of strings, "

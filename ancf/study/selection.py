@@ -29,7 +29,7 @@ work, a run that enters or leaves the group at its far end is rarely the preferr
 so the pick rarely depends on where the group ends.  Guarantee and limit: on every
 committed speed-accuracy sweep (``reports/data/speed_accuracy_*.csv``, every error level
 the reports tabulate, both references), the pick is unchanged when every run's work is
-independently scaled by a factor in [0.9, 1.1] (``tests/test_selection.py``, 200 seeded
+independently scaled by a factor in [0.9, 1.1] (``tests/study/test_selection.py``, 200 seeded
 draws); this holds for the committed data, not for every conceivable sweep: a future sweep
 with a gap near 1.4 between runs whose order matters could still flip, and that test fails
 when such data are committed.  The picks stay within 12 % of the least counted work on

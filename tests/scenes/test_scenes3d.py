@@ -1,6 +1,6 @@
 """The scenes of issue 13 item 4: plate-square, plate-strip, beam3d-cantilever.
 
-Their numbers against the references are checked in tests/test_elements3d.py (the
+Their numbers against the references are checked in tests/checks/test_elements3d.py (the
 checks of reports/elements3d.md); here: the scene contract (results, signs, the 2D
 cantilever reproduced by the 3D beam at 0 degrees, the load rotated at 90 degrees) and
 bad input as one error line naming the field and its range.

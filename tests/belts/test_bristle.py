@@ -53,7 +53,7 @@ def _labels(E, V, S0, centres, radii, omegas, prm, z0, h):
 def test_kernel_jacobians_with_a_state_match_central_differences(z_scale):
     """Kq, Cv, Qw, dTq, dTv, dTw of contact_forces_moving with the bristle law, a random
     state z0 and the step h fixed, equal central differences of (Q, T) column by column
-    (the contract of tests/test_contact.py: RTOL of the column plus round-off); the
+    (the contract of tests/belts/test_contact.py: RTOL of the column plus round-off); the
     states mix sticking and sliding points (small z0) or slide mostly (large z0)."""
     case = CASES["mixed-clamped"]
     E, V, S0, w, centres, radii, omegas, prm0 = _fd_state(case)

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from ancf.common.compile_time import CompileTime, compile_cpu
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_nested_lock_spans_count_once():

@@ -2,7 +2,7 @@
 analytic wrapped strips, the planar reduction to ancf/belts/contact2d.py, the bounding test,
 input.
 
-Finite-difference tolerance as in tests/test_contact.py: within one branch of the law
+Finite-difference tolerance as in tests/belts/test_contact.py: within one branch of the law
 the forces are smooth, linear in the velocities and pulley speeds (linear branch) and
 with curvature ~ 1/|N| ~ 10 m^-1 in the positions, so the central difference with
 H = 1e-6 has truncation ~ 1e-10 relative; each Jacobian column must match to RTOL of
@@ -66,7 +66,7 @@ def _wrap(nel, rho, centre, axis, arc=2 * np.pi, theta0=0.0, width=WIDTH, omega_
     on the cylinder of radius ``rho`` (m) about ``axis`` through ``centre``: x along the
     circumference (counter-clockwise about the axis), y along the axis.  Node slopes
     r_x of magnitude 4 tan(dth/4) rho / l (the Bezier arc closest to the circle, as
-    tests/test_contact.py), r_y = p.  Moving rigidly: rotation omega_b (rad/s) about
+    tests/belts/test_contact.py), r_y = p.  Moving rigidly: rotation omega_b (rad/s) about
     the axis, axial speed (m/s), translation ``drift`` (m/s)."""
     e1, e2, p = _frame(axis)
     th = theta0 + np.linspace(0.0, arc, nel + 1)

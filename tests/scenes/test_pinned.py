@@ -110,7 +110,7 @@ def test_navier_plate_reference_defaults_against_timoshenkos_coefficient():
 def test_modes_scenes_default_density_is_steel():
     """``ancf modes`` of the static beams and plates: rho defaults to steel's 7850 kg/m^3
     (thesis l. 576); the frequencies themselves are checked against Timoshenko's beam with
-    the test's own data in tests/test_modes.py."""
+    the test's own data in tests/scenes/test_modes.py."""
     for name in ("simply-supported", "cantilever", "axial-bar", "plate-strip", "beam3d-cantilever"):
         rho = {p.name: p.default for p in SCENES[name].modal_params}["rho"]
         assert rho == STEEL, name

@@ -13,7 +13,7 @@ import pytest
 
 from ancf.cli import main
 
-DATA = Path(__file__).parent / "data" / "fuzz_cli.json"
+DATA = Path(__file__).parents[1] / "data" / "fuzz_cli.json"
 CASES = json.loads(DATA.read_text())["cases"]
 STDERR_PREFIXES = ("error: ", "warning: ", "sweep ")
 

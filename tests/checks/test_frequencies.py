@@ -2,7 +2,7 @@
 thin plate's eigenvalue ratios against the Ritz series and Exudyn's published values, their
 independence of the plate's scale (the eigen solver's shift with zero-energy modes), and the
 running belt's span frequency against the axially moving string.  The beam, simply
-supported plate and axial-bar acceptance checks are tests/test_modes.py's."""
+supported plate and axial-bar acceptance checks are tests/scenes/test_modes.py's."""
 import math
 
 import numpy as np

@@ -188,7 +188,7 @@ def test_run_with_vtk_loads_meshio_and_without_does_not(tmp_path):
                          (["run", "cantilever", "--set", "n_elements=2", "--vtk",
                            str(tmp_path / "v")], "True")):
         p = subprocess.run([sys.executable, "-c", code % (argv,)], capture_output=True,
-                           text=True, timeout=300, cwd=os.path.dirname(os.path.dirname(__file__)))
+                           text=True, timeout=300, cwd=os.path.dirname(os.path.dirname(os.path.dirname(__file__))))
         assert p.returncode == 0, p.stderr
         assert p.stderr.strip().splitlines()[-1] == loaded
 

@@ -18,7 +18,7 @@ import pytest
 import ancf
 from ancf.cli import main
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _cli_json(capsys, *argv):

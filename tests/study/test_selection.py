@@ -15,7 +15,7 @@ from ancf.study.selection import (WORK_SCATTER, WORK_TIE, cheapest_first, model_
                                   nominal_work, rank, tie_group, tie_keys)
 from ancf.study.sweep import run_sweep
 
-DATA = Path(__file__).resolve().parents[1] / "reports" / "data"
+DATA = Path(__file__).resolve().parents[2] / "reports" / "data"
 
 
 def _runs(work, cpu=None):

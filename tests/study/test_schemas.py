@@ -90,7 +90,7 @@ def test_the_validator_rejects_what_the_schema_forbids():
 
 
 def test_published_schemas_are_the_generated_ones():
-    path = Path(__file__).resolve().parents[1] / "reports" / "schemas.md"
+    path = Path(__file__).resolve().parents[2] / "reports" / "schemas.md"
     assert path.read_text() == schemas_markdown(), "run `python -m ancf.study.schemas`"
 
 

@@ -1,5 +1,5 @@
 """One test per class of issue 15 items 1-10 and 12 (the CLI fuzz replays the
-examples: tests/test_fuzz_cli.py)."""
+examples: tests/interface/test_fuzz_cli.py)."""
 import json
 import math
 import tomllib
@@ -21,7 +21,7 @@ from ancf.scenes.base import SceneResult
 from ancf.common.strict_json import dumps
 from ancf.core.validity import AREA_FACTOR, check_dynamic, check_static, deformation_dets, min_det
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 # ------------------------------------------------------------- 1. inverted elements

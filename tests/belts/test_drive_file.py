@@ -62,7 +62,7 @@ def test_thesis_example_is_belt2d_defaults_key_for_key():
 def test_thread_example_names_the_bristle_law_and_reaches_the_kernel_with_it():
     """The file's [friction] is the bristle law with its point law's parameters in order;
     the model's prm carries its code and values, and its belt the state per contact
-    point (element, Gauss point, pulley) the march steps (tests/test_bristle.py)."""
+    point (element, Gauss point, pulley) the march steps (tests/belts/test_bristle.py)."""
     from ancf.belts.drive_model import build
     d = load(THREAD, ["belt.damping_axial=0"])
     keys = [k for k in read(THREAD)["friction"] if k != "law"]
