@@ -15,6 +15,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.checks import beam3d_benchmarks as bb  # noqa: E402
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (checks_section, markdown_table, progress,  # noqa: E402
                                  save_figure, write_csv)
 from ancf.elements.linear3d import LinearBeam3D  # noqa: E402
@@ -271,3 +272,13 @@ def beam3d_benchmarks_chapter() -> tuple[str, dict]:
                             "a test of `tests/models/test_beam3d_benchmarks.py`"
                             " (data: `data/beam3d_benchmarks_checks.csv`)")
     return "\n".join(parts), status
+
+
+CHAPTER = Chapter(
+    file="beam3d_benchmarks.md", order=90, generate=beam3d_benchmarks_chapter,
+    checks=("ancf.checks.beam3d_benchmarks",),
+    contents="The 3D beam benchmarks: a tip moment on slope coordinates, the "
+             "Princeton beam (F2, F3, every angle) against ANSYS beam and solid "
+             "elements per element and scheme (locking, torsion), mesh convergence; "
+             "Nachbagauer et al.'s 3D general bending against Table 4, the "
+             "continuum's second-order terms; acceptance checks")

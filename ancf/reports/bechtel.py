@@ -14,6 +14,7 @@ import pandas as pd  # noqa: E402
 
 from analytic import bechtel  # noqa: E402
 from ancf.scenes.analytic import REFERENCES  # noqa: E402
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import markdown_table, progress, save_figure, write_csv  # noqa: E402
 
 STIFFNESSES = (0.2e3, 25e3)  # N, the thesis's compliant and stiff belts (Figs 4.11-4.18, 4.4-4.5)
@@ -108,3 +109,11 @@ def bechtel_chapter() -> tuple[str, dict]:
             "(`test_stiff_limit_is_the_inextensible_solution`, `test_capstan_limit_rhoA_to_zero`) |",
             ""]
     return "\n".join(text), status
+
+
+CHAPTER = Chapter(
+    file="bechtel.md", order=60, generate=bechtel_chapter,
+    checks=("ancf.reports.bechtel",),
+    contents="Bechtel's analytic steady belt (thesis 4.1, Model 2): tensions, speeds, "
+             "slip arcs, driven slip and largest torque, full and capstan, "
+             "distributions along the belt; the thesis's 14.6 % slip")

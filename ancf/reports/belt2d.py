@@ -21,6 +21,7 @@ from ancf.checks import belt_element as ec  # noqa: E402
 from ancf.belts.post2d import sample  # noqa: E402
 from ancf.study.extremes import QUICK_SKIPPED  # noqa: E402
 from ancf.reports.animations import report_animation  # noqa: E402
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure,  # noqa: E402
                                  settings, timing_note, write_csv)
 
@@ -485,3 +486,12 @@ def belt2d_chapter() -> tuple[str, dict]:
     parts += report_animation("belt2d")
     timing_note("Chapter", f"CPU time of the chapter: {time.process_time() - t0:.0f} s.\n")
     return "\n".join(parts), status
+
+
+CHAPTER = Chapter(
+    file="belt2d.md", order=50, generate=belt2d_chapter,
+    checks=("ancf.checks.belt2d", "ancf.checks.belt_element"),
+    contents="2D belt drive (thesis 3.3, Figs 3.5-3.21): free belt, element count, "
+             "stiffness and creep-rate trends, span tensions vs torque, contact "
+             "forces, relative velocity, contact points, pulleys of different size; "
+             "acceptance checks")

@@ -20,6 +20,7 @@ from ancf.checks.belt2d import run, run_json  # noqa: E402
 from ancf.elements._generated import plate36_x  # noqa: E402
 from ancf.study.extremes import QUICK_SKIPPED  # noqa: E402
 from ancf.core.quadrature import gauss01  # noqa: E402
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure, settings,  # noqa: E402
                                  write_csv)
 from ancf.reports.animations import report_animation  # noqa: E402
@@ -262,3 +263,13 @@ def belt3d_chapter() -> tuple[str, dict]:
     table, status = _checks_table(checks)
     return "\n".join(text + table), status
 
+
+CHAPTER = Chapter(
+    file="belt3d.md", order=80, generate=belt3d_chapter,
+    checks=("ancf.checks.belt3d",),
+    reads=("speed_accuracy.md",),
+    contents="3D belt drive of thin plates (thesis 4.6): Model 2 vs Bechtel (full and "
+             "capstan), torque balance per strain measure, tension / det F / speed / "
+             "contact forces along the belt (Figs 4.11-4.18), pulley speeds of "
+             "Models 1 and 2 (Figs 4.10, 4.16), contact points and element count; "
+             "acceptance checks")

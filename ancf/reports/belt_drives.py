@@ -25,6 +25,7 @@ from ancf.checks import belt_drives as bd  # noqa: E402
 from ancf.checks import thread as th  # noqa: E402
 from ancf.common.params import InputError  # noqa: E402
 from ancf.common.paths import REPO  # noqa: E402
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (checks_section, markdown_table, progress, save_figure,  # noqa: E402
                                  settings, timing_note, write_csv)
 from ancf.scenes import SCENES  # noqa: E402
@@ -360,3 +361,13 @@ def belt_drives_chapter() -> tuple[str, dict]:
     parts += ["## Acceptance rows\n", "| check | status |", "|---|---|",
               *(f"| {k} | {v} |" for k, v in status.items()), ""]
     return "\n".join(parts), status
+
+
+CHAPTER = Chapter(
+    file="belt_drives.md", order=120, generate=belt_drives_chapter,
+    checks=("ancf.checks.belt_drives", "ancf.checks.thread"),
+    contents="Belt drives of any layout from drive files: the steady reference of "
+             "each example, the THREAD benchmark against its stored Exudyn results "
+             "(axial force, speed and contact forces along the belt, ω₂(t), driver "
+             "torque), the serpentine drive against its steady reference; acceptance "
+             "checks")

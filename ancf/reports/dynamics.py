@@ -19,6 +19,7 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.scenes.analytic import DYNAMIC_REFERENCES  # noqa: E402
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure,  # noqa: E402
                                  settings, timing_note, write_csv)
 from ancf.scenes import pendulum, spinning_beam  # noqa: E402
@@ -421,3 +422,10 @@ def dynamics_chapter() -> tuple[str, dict]:
     parts += cpu_ratio(1 if settings().quick else 5)
     timing_note("Chapter", f"CPU time of the chapter: {time.process_time() - t0:.0f} s.\n")
     return "\n".join(parts), status
+
+
+CHAPTER = Chapter(
+    file="dynamics.md", order=20, generate=dynamics_chapter,
+    checks=("ancf.reports.dynamics",),
+    contents="Flexible pendulum and energy balance (Figs 2.6-2.8), spinning beam "
+             "(Figs 2.10-2.11), constraint forms, integrator trade, Table 2.5")

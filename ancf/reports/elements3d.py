@@ -14,6 +14,7 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.checks import elements3d as ec  # noqa: E402
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (checks_section, count_axis, markdown_table,  # noqa: E402
                                  progress, save_figure, write_csv)
 
@@ -113,3 +114,12 @@ def elements3d_chapter() -> tuple[str, dict]:
                             "a test of `tests/checks/test_elements3d.py`"
                             " (data: `data/elements3d_checks.csv`)")
     return "\n".join(parts), status
+
+
+CHAPTER = Chapter(
+    file="elements3d.md", order=70, generate=elements3d_chapter,
+    checks=("ancf.checks.elements3d",),
+    contents="Thin plate and 3D beam: simply supported plate vs Navier (convergence, "
+             "order), cantilever strip vs Euler–Bernoulli and the Reissner rod, 3D "
+             "beam vs the planar scenes, 45° superposition, torsion vs St-Venant, "
+             "rigid motion; acceptance checks")

@@ -12,6 +12,7 @@ import math
 import pandas as pd
 
 from ancf.study.extremes import AXES, QUICK_SKIPPED, ROUGH, WORKS, Axis, L, run_axis
+from ancf.reports.chapter import Chapter
 
 
 def cell(row) -> str:
@@ -163,3 +164,11 @@ def extremes_chapter(workers=None) -> tuple[str, dict]:
                 "PASS" if st == "timeout" else f"FAIL ({st})")
     parts.append("")
     return "\n".join(parts + body), status
+
+
+CHAPTER = Chapter(
+    file="extremes.md", order=40, generate=extremes_chapter,
+    checks=("ancf.reports.extremes",),
+    contents="Stability maps at the extremes: slenderness, ν, element count, load, "
+             "load steps, time limit, time steps (soft and stiff pendulum), spinning "
+             "speed")

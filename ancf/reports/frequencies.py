@@ -13,6 +13,7 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from ancf.checks import frequencies as fq  # noqa: E402
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (checks_section, count_axis, markdown_table,  # noqa: E402
                                  progress, save_figure, timing_note, write_csv)
 
@@ -367,3 +368,14 @@ def frequencies_chapter() -> tuple[str, dict]:
                             "a test (`tests/checks/test_frequencies.py`, `tests/scenes/test_modes.py`; "
                             "data: `data/frequencies_checks.csv`)")
     return "\n".join(parts), status
+
+
+CHAPTER = Chapter(
+    file="frequencies.md", order=100, generate=frequencies_chapter,
+    checks=("ancf.checks.frequencies",),
+    contents="Natural frequencies: beams per element and integration scheme vs "
+             "Timoshenko (convergence orders, locking from slender to thick), the "
+             "simply supported plate vs Navier, the free-free plate's ratios vs "
+             "Exudyn and the Ritz series, the axial bar's first frequency falling to "
+             "zero at Euler's load, the running belt's span spectra vs the axially "
+             "moving string; acceptance checks")

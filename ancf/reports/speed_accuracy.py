@@ -21,6 +21,7 @@ import pandas as pd  # noqa: E402
 
 from ancf.study.cost import FEATURES, calibrate, with_work  # noqa: E402
 from ancf.study.references import cache_root, rescore, runner, spec, specs  # noqa: E402
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (fmt, markdown_table, progress, save_figure,  # noqa: E402
                                  settings, timing_note, write_csv)
 from ancf.study.sweep import run_sweep  # noqa: E402
@@ -401,6 +402,15 @@ def _self_note(df: pd.DataFrame, kind: str) -> str:
                 "discretisation.")
     return (f" Both references give the same picture (best errors {best:.1e} and "
             f"{best_self:.1e}).")
+
+
+CHAPTER = Chapter(
+    file="speed_accuracy.md", order=30, generate=speed_accuracy_chapter,
+    checks=("ancf.reports.speed_accuracy",),
+    process="sweeps",
+    contents="Error vs counted work per scene, Pareto fronts, cheapest configuration "
+             "per error level (CPU times and the calibration of work to seconds on "
+             "its timing page)")
 
 
 if __name__ == "__main__":

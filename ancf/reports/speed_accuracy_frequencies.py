@@ -22,6 +22,7 @@ import numpy as np  # noqa: E402
 
 import pandas as pd  # noqa: E402
 
+from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import markdown_table, progress, save_figure, timing_note  # noqa: E402
 from ancf.reports.speed_accuracy import (FLOOR, TOLERANCES, _model, scene_section,  # noqa: E402
                                          scene_sweep)
@@ -102,3 +103,13 @@ def frequency_speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
         markdown_table(_finest(frames), 4, timing="Finest run of each element and scheme"), "",
         *sections]
     return "\n".join(parts), status
+
+
+CHAPTER = Chapter(
+    file="speed_accuracy_frequencies.md", order=110, generate=frequency_speed_accuracy_chapter,
+    checks=("ancf.reports.speed_accuracy_frequencies",),
+    contents="Speed versus accuracy of the natural frequencies: error of the lowest "
+             "bending frequencies vs counted work and CPU time per element, scheme "
+             "and mesh (cantilever and simply supported beam vs Timoshenko, the "
+             "simply supported plate vs Navier), cheapest configuration per error "
+             "level")
