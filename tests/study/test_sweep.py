@@ -20,6 +20,7 @@ from ancf.cli import main
 from ancf.common.params import InputError
 from ancf.study.cost import with_work
 from ancf.study.sweep import expand, journal_path, parse_grid, read_rows, run_sweep
+from ancf.study.sweep_tasks import make_tasks
 
 # 2 elements x 2 schemes x 8 element counts x 2 heights x 2 Poisson ratios = 128 runs
 GRID = ["element=linear,omar-shabana", "integration=thesis,exact", "n_elements=1,2,3,4,5,6,7,8",
@@ -197,7 +198,7 @@ def _alive(pid):
 _DRIVER = """
 import time
 from ancf.scenes import SCENES
-from ancf.study.sweep import _Runner
+from ancf.study.sweep_pool import _Runner
 p = SCENES["pendulum"].resolve({"integrator": "generalized-alpha", "dt": "1e-6",
                                 "t_end": "10", "n_elements": "128"})
 task = {"index": 0, "scene": "pendulum", "reference": "none", "ref_values": None,
@@ -281,7 +282,7 @@ def test_the_time_limit_counts_cpu_without_compilation(monkeypatch):
     belt3d runs (120 s CPU) took over their 300 s wall.  The worker says when it compiles."""
     import io
     import numba
-    from ancf.study import sweep
+    from ancf.study import sweep_pool as sweep
 
     wall, cpu = [100.0], [7.0]
     monkeypatch.setattr(sweep.time, "monotonic", lambda: wall[0])
@@ -324,7 +325,7 @@ def test_the_other_workers_take_runs_after_the_pilot_compiled(monkeypatch):
     pilot runs alone, the others take runs once it returned a row, died, or ran PILOT_CPU
     seconds of its first run outside compilation."""
     from types import SimpleNamespace
-    from ancf.study import sweep
+    from ancf.study import sweep_pool as sweep
 
     wall, cpu = [0.0], [0.0]
     monkeypatch.setattr(sweep.time, "monotonic", lambda: wall[0])
@@ -351,7 +352,7 @@ def test_a_finished_sweeps_workers_serve_the_next_sweep(workdir, monkeypatch):
     """The idle workers of a finished sweep wait for the next sweep of this process (a
     worker's start costs about 1.6 CPU-s); not across a change of the environment a worker
     would get, and not past an interrupted sweep; the rows are a fresh worker's."""
-    from ancf.study import sweep
+    from ancf.study import sweep_pool as sweep
 
     sweep._close_parked()
     grids = [{"n_elements": [1, 2, 3, 4]}]
@@ -365,7 +366,7 @@ def test_a_finished_sweeps_workers_serve_the_next_sweep(workdir, monkeypatch):
     monkeypatch.setenv("ANCF_TEST_OTHER_ENV", "1")
     run_sweep("cantilever", grids, out=workdir / "c.csv", workers=2, progress=False)
     assert not set(pids) & {r.proc.pid for r in sweep._PARKED}  # the old ones were ended
-    rows = sweep._run_local(sweep.make_tasks("cantilever", expand(grids)), 2, 60.0)
+    rows = sweep._run_local(make_tasks("cantilever", expand(grids)), 2, 60.0)
     next(rows)
     rows.close()  # the consumer stops early: an interrupted sweep
     assert not sweep._PARKED

@@ -8,7 +8,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from ancf.study.sweep import _Runner
+from ancf.study.sweep_pool import _Runner
 from ancf.common.threads import BLAS_ENV
 
 
