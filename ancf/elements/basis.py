@@ -11,6 +11,8 @@ reference volume element; :meth:`Basis.concat` sets several rules side by side
 (one per energy term) for a single kernel call, ``cidx`` naming each point's term.
 :class:`SectionBasis` is the same for the spatial families (S of x, y, z): its
 section rule is a tensor product over (y, z) and it adds ``BZ`` and ``dZ0``.
+The generated functions themselves are this module's public names (``cubic2d_S``, ...):
+the layers above take them from here, never from the generated module.
 """
 from __future__ import annotations
 
@@ -22,14 +24,24 @@ from ancf.core.quadrature import RectangularSection, gauss01
 def family_shapes(family: str) -> dict:
     """The generated shape-function evaluators of a family (see analytic/shape_functions):
     ``S``, ``x``, ``y`` (and ``z`` for a spatial family; callables of X, Y[, Z], L
-    arrays), ``n`` shape functions, ``mass``."""
+    arrays, a plate's of X, Y, a, b), ``n`` shape functions, ``mass``."""
     from ancf.elements import _generated as gen
 
     fns = {d: getattr(gen, f"{family}_{d}") for d in ("S", "x", "y", "z") if hasattr(gen, f"{family}_{d}")}
-    coords = [np.zeros(1)] * (len(fns) - 1)
-    fns["n"] = fns["S"](*coords, np.ones(1)).shape[-1]
+    fns["n"] = fns["S"](*[np.ones(1)] * fns["S"].__code__.co_argcount).shape[-1]
     fns["mass"] = getattr(gen, f"{family}_mass")
     return fns
+
+
+def __getattr__(name: str):
+    """The generated shape functions of every family, ``<family>_<derivative>`` (e.g.
+    ``cubic2d_S``, ``plate36_x``: callables of the point coordinates and the element's
+    sizes, (..., nshape)), are this module's public names, loaded on first use."""
+    from ancf.elements import _generated as gen
+
+    if name.startswith("_") or not callable(getattr(gen, name, None)):
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(gen, name)
 
 
 def consistent_mass(shapes, section: RectangularSection, lengths, rho: float, dim: int):

@@ -2,7 +2,8 @@
 static solve, shared by the scene ``beam3d-cantilever``, the tests and the report.
 
 :data:`BUILDERS` maps an element name to a function ``p -> element class`` plus
-keyword arguments; a new 3D element is one entry there.  The mesh is a
+keyword arguments, a view of the element registry (:mod:`ancf.elements.registry`): a
+new 3D element is one record there.  The mesh is a
 :class:`~ancf.core.mesh.BeamMesh` with ``dim=3`` (reference r = (x, 0, 0), the slopes the
 unit vectors of their names).
 """
@@ -13,24 +14,15 @@ import numpy as np
 from ancf.core.assembly import Assembly, ElementGroup
 from ancf.core.constraints import Elimination
 from ancf.core.forces import Forces, SectionMoment
-from ancf.elements.belt3d import DufvaBelt3D
-from ancf.elements.linear3d import LinearBeam3D
+from ancf.elements.registry import ELEMENTS
 from ancf.core.mesh import BeamMesh
 from ancf.core.quadrature import RectangularSection
 from ancf.solvers.static import NewtonOptions, solve_static
 
 
-def _linear3d(p: dict):
-    return LinearBeam3D, {"ks": p["ks"], "integration": p["integration"]}
-
-
-def _belt3d(p: dict):
-    return DufvaBelt3D, {"ks": p["ks"], "alpha1": p.get("alpha1", 1.0),
-                         "alpha2": p.get("alpha2", 1.0), "nx": p.get("elastic_points", 5)}
-
-
-#: element name -> (p -> (element class, extra keyword arguments))
-BUILDERS = {"linear3d": _linear3d, "belt3d": _belt3d}
+#: element name -> (p -> (element class, extra keyword arguments)): the registry's 3D
+#: elements of a two-node (beam) mesh
+BUILDERS = {name: t.build for name, t in ELEMENTS.items() if t.dim == 3 and t.nodes == 2}
 
 
 def model(p: dict):

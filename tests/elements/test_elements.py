@@ -35,10 +35,15 @@ CASES = list(CONTRACT_ELEMENTS.values())  # every element, every variant
 IDS = list(CONTRACT_ELEMENTS)
 
 
+def _dim(cls) -> int:
+    """The space dimension of an element class: its own ``dim`` or its strain model's."""
+    return getattr(cls, "dim", None) or cls.strain.dim
+
+
 def _build(cls, kw, n_el=3, nu=0.3, section=SECTION):
     """Mesh, reference and element ``cls(..., **kw)``; kw a dict or an integration scheme."""
     kw = kw if isinstance(kw, dict) else {"integration": kw}
-    m = BeamMesh(L, n_el, cls.slots, dim=getattr(cls, "dim", 2))
+    m = BeamMesh(L, n_el, cls.slots, dim=_dim(cls))
     q0 = m.reference()
     el = cls(m.lengths, q0[m.dofmap], section, E=E_MOD, nu=nu, rho=RHO, **kw)
     return m, q0, el

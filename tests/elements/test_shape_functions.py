@@ -28,6 +28,11 @@ SECTION = RectangularSection(0.1, 0.2)  # b (z) = 0.1 m, h (y) = 0.2 m
 xi, eta, zeta = x / l, y / l, z / l
 
 
+def _dim(cls) -> int:
+    """The space dimension of an element class: its own ``dim`` or its strain model's."""
+    return getattr(cls, "dim", None) or cls.strain.dim
+
+
 @pytest.fixture(scope="module")
 def derived():
     """Scalar shape functions of every family, derived once per module."""
@@ -208,10 +213,10 @@ def _rigid(mesh: BeamMesh, q, R, c):
 @pytest.mark.parametrize("cls,kw", CONTRACT_ELEMENTS.values(), ids=list(CONTRACT_ELEMENTS))
 def test_rigid_body_motion_has_no_strain_energy(cls, kw):
     L = 2.0
-    m = BeamMesh(L, 3, cls.slots, dim=getattr(cls, "dim", 2))
+    m = BeamMesh(L, 3, cls.slots, dim=_dim(cls))
     q0 = m.reference()
     el = cls(m.lengths, q0[m.dofmap], SECTION, E=E_MOD, nu=NU, rho=RHO, **kw)
-    q = _rigid(m, q0, *((_rotation3d(), C3) if getattr(cls, "dim", 2) == 3 else (_rotation2d(), C2)))
+    q = _rigid(m, q0, *((_rotation3d(), C3) if _dim(cls) == 3 else (_rotation2d(), C2)))
     U = el.energy(q[m.dofmap])
     scale = E_MOD * SECTION.area * L
     # brief asked for 1e-6 E A L; the exact value is zero and round-off gives ~1e-30
@@ -245,7 +250,7 @@ def _straight_e0(lengths, slots, dim=2):
 def test_mass_equals_gauss_integration(cls):
     """Consistent mass against 6 x 6 Gauss points over (x, y) times the width b (2D),
     or 6 x 6 x 6 over (x, y, z) (3D elements)."""
-    dim = getattr(cls, "dim", 2)
+    dim = _dim(cls)
     lengths = np.array([0.7, 1.3])
     el = cls(lengths, _straight_e0(lengths, cls.slots, dim), SECTION, E=E_MOD, nu=NU, rho=RHO)
     M = el.mass()
@@ -313,7 +318,7 @@ def test_generated_mass_offset_sections():
 @pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
 def test_total_mass_of_rigid_translation(cls):
     L = 2.0
-    dim = getattr(cls, "dim", 2)
+    dim = _dim(cls)
     m = BeamMesh(L, 4, cls.slots, dim=dim)
     q0 = m.reference()
     el = cls(m.lengths, q0[m.dofmap], SECTION, E=E_MOD, nu=NU, rho=RHO)
