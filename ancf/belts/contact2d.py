@@ -53,7 +53,7 @@ from numba import njit
 
 from ancf.belts import friction
 from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_rows, positive_lengths
-from ancf.elements._generated import cubic2d_S
+from ancf.elements.basis import cubic2d_S
 from ancf.core.quadrature import gauss01
 
 #: Gauss rules along the element the contact is integrated with (the force is not

@@ -50,7 +50,7 @@ from numba import njit
 from ancf.belts import friction
 from ancf.common.leaf import leaf
 from ancf.belts.contact_common import BOUND_MARGIN, positive_lengths
-from ancf.elements._generated import plate36_S
+from ancf.elements.basis import plate36_S
 from ancf.core.quadrature import gauss01
 
 #: n x n Gauss rules over each element's mid surface (the thesis uses 81 points).

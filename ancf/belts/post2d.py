@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ancf.belts.contact2d import contact_state_moving
-from ancf.elements._generated import cubic2d_S
+from ancf.elements.basis import cubic2d_S
 
 
 @dataclass

@@ -25,7 +25,7 @@ from ancf.belts.post2d import _span_coords, spans
 from ancf.belts.strains import DEFAULT_POINTS, measures
 from ancf.belts.contact3d import contact_forces3d, contact_state3d
 from ancf.core.quadrature import gauss01
-from ancf.elements._generated import plate36_S, plate36_x, plate36_y
+from ancf.elements.basis import plate36_S, plate36_x, plate36_y
 
 MEASURES = ("green", "true", "almansi")
 

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf.elements._generated import cubic2d_S, cubic2d_x, cubic2d_y
+from ancf.elements.basis import cubic2d_S, cubic2d_x, cubic2d_y
 
 DEFAULT_POINTS = 20  # sample points per element along the belt
 

@@ -21,7 +21,7 @@ import scipy.sparse.linalg as sla
 
 from ancf.core.assembly import Assembly, ElementGroup
 from ancf.core.constraints import Elimination
-from ancf.elements import _generated as shape_gen
+from ancf.elements.basis import plate36_S
 from ancf.elements.plate36 import Plate36
 from ancf.models.plate_mesh import SLOTS, PlateMesh
 from ancf.core.quadrature import gauss01
@@ -92,7 +92,7 @@ def edge_load(m: PlateMesh, P: float) -> np.ndarray:
     the edge x = a (2-point Gauss rule along y: exact for the cubic shape functions)."""
     t, w = gauss01(2)
     a, b = m.lengths[0], m.widths[0]
-    fe = P / m.b * b * (w @ shape_gen.plate36_S(np.full(2, a), t * b, a, b))
+    fe = P / m.b * b * (w @ plate36_S(np.full(2, a), t * b, a, b))
     f = np.zeros(m.n_dofs)
     np.add.at(f, m.dofmap[m.nx - 1::m.nx, 2::3], np.broadcast_to(fe, (m.ny, 12)))
     return f

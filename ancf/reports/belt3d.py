@@ -17,7 +17,7 @@ from analytic import bechtel  # noqa: E402
 from ancf.checks import belt3d as bc  # noqa: E402
 from ancf.belts.post3d import contact_sample, line_sample  # noqa: E402
 from ancf.checks.belt2d import run, run_json  # noqa: E402
-from ancf.elements._generated import plate36_x  # noqa: E402
+from ancf.elements.basis import plate36_x  # noqa: E402
 from ancf.study.extremes import QUICK_SKIPPED  # noqa: E402
 from ancf.core.quadrature import gauss01  # noqa: E402
 from ancf.reports.chapter import Chapter  # noqa: E402

@@ -27,7 +27,7 @@ import scipy.sparse as sp
 from ancf.core.assembly import Assembly, ElementGroup
 from ancf.belts.path import laid_belt
 from ancf.core.constraints import Elimination
-from ancf.elements._generated import cubic2d_S
+from ancf.elements.basis import cubic2d_S
 from ancf.elements.dufva2d import DufvaBelt2D
 from ancf.core.mesh import BeamMesh
 from ancf.core.pattern import ReducedPattern

@@ -186,7 +186,7 @@ def _belt2d_frames(extra, per_element):
 def _belt3d_frames(extra, per_element):
     from ancf.belts.contact3d import contact_state3d
     from ancf.belts.post3d import _contact_args, membrane_force
-    from ancf.elements._generated import plate36_S, plate36_x, plate36_y
+    from ancf.elements.basis import plate36_S, plate36_x, plate36_y
     drive, res = extra["drive"], extra["result"]
     s, L = drive.spec, drive.lengths
     nel, k = L.size, per_element
