@@ -1,9 +1,12 @@
 """The element contract: what solvers, forces, energies and scenes may rely on.
 
-Every element in ``CONTRACT_ELEMENTS`` of :mod:`ancf.elements.catalogue` satisfies
-it, and the contract tests (``tests/elements/test_elements.py``: finite-difference gradients
-and tangents, symmetry, rigid-motion invariance, zero-energy-mode counts, exact
-mass) run over that listing, so a new element gets them by being listed there.
+Every element of the registry (:mod:`ancf.elements.registry`) satisfies it.  The
+contract tests run over its constructions on a beam mesh (``CONTRACT_ELEMENTS`` of
+:mod:`ancf.elements.catalogue`, derived from the registry; ``tests/elements/test_elements.py``:
+finite-difference gradients and tangents, symmetry, rigid-motion invariance,
+zero-energy-mode counts, exact mass) and over every record
+(``tests/elements/test_registry.py``: the field at points, rigid motion, exact
+tangent), so a new element gets them by being registered.
 """
 from __future__ import annotations
 

@@ -29,6 +29,7 @@ from numba import njit
 from ancf.elements import _generated as shape_gen
 from ancf.common.leaf import leaf
 from ancf.elements import _plate_generated as gen
+from ancf.elements.basis import family_shapes
 from ancf.elements.compiled_element import CompiledElement, check, check_material
 from ancf.core.quadrature import gauss01
 
@@ -201,8 +202,7 @@ class Plate36(CompiledElement):
         self.h, self.E_mod, self.nu, self.rho = float(h), float(E), float(nu), float(rho)
         self.bending, self.ng = bool(bending), int(ng)
         self.section = None  # the thickness h replaces a beam cross-section
-        self.shapes = {d: getattr(shape_gen, f"plate36_{d}") for d in ("S", "x", "y")}
-        self.shapes.update(n=self.nshape, mass=shape_gen.plate36_mass)
+        self.shapes = family_shapes(self.family)
         self.coefficients = np.array([E * h, E * h**3 / 12.0, 0.0]) / (2.0 * (1.0 - nu**2))
         self.coefficients[2] = nu
         self._data = self._kernel_data()
