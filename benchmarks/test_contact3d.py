@@ -14,11 +14,11 @@ import numpy as np
 import pytest
 
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
-from ancf.belts.friction import contact_vector
+from ancf.belts.friction import contact_record
 
 N_ELEMENTS, RULE, ROUNDS = 20, 81, 200
 R, WIDTH, PEN, SPEED = 0.10, 0.08, 1e-3, 2.0          # m, m, m, m/s
-PRM = contact_vector(1.0e7, 2000.0, "creep-rate", 1.2, 1.0e5)  # k_p, c_p; mu, nu_s (Table 4.1)
+PRM = contact_record(1.0e7, 2000.0, "creep-rate", 1.2, 1.0e5)  # k_p, c_p; mu, nu_s (Table 4.1)
 
 
 def _path(s):

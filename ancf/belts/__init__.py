@@ -2,8 +2,9 @@
 belt (``path``), a drive as data (``drive_data``) read from a TOML drive file
 (``drive_file``) and its steady reference (``drive_steady``: ``analytic/belt_steady.py``
 on it), the pulley laws (``pulleys``, Eqs 3.29-3.30, 4.46-4.47), distributed penalty
-contact with creep-rate friction in 2D and 3D (``contact2d``, ``contact3d``),
-a tensioner's arm in 2D (``arm2d``), the assembled drive models (``drive2d``, ``drive3d``), their compiled forces as named
+contact in 2D and 3D (``contact2d``, ``contact3d``) with its friction laws (``friction/``,
+one module each), a tensioner's arm in 2D (``arm2d``), the assembled drive models
+(``drive2d``, ``drive3d``), their compiled forces as named
 records (``forces``) and the bordered system they form for the shared generalised-alpha
 march (``system``), time integration (``dynamics``; ``bdf`` the scipy cross-check), the
 static pre-tension (``pretension``), post-processing (``post2d``, ``post3d``) and the

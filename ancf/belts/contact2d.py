@@ -134,7 +134,7 @@ def _point_law(a0, a1, v0, v1, R, om, prm, f, z0, h, z1):
     F_n, v_t and the friction law's branch (0 out of contact or clamped); fills
     f = [phi] (1,) and, for a law with a state in contact, z1 = [its trial state] (1,);
     z1 None: a stateless law (:func:`ancf.belts.friction.force`)."""
-    kp, cp = prm[0], prm[1]
+    kp, cp = prm.k_p, prm.c_p
     rho = np.hypot(a0, a1)
     n0, n1 = a0 / rho, a1 / rho
     d = R - rho
@@ -154,7 +154,7 @@ def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D
     (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0; the friction state
     z0 and the step h fixed; z1 None: a stateless law); G (1, 5) the derivatives of v_t,
     Dphi (1, 5) those of phi (scratch)."""
-    kp, cp = prm[0], prm[1]
+    kp, cp = prm.k_p, prm.c_p
     n0, n1 = a0 / rho, a1 / rho
     t0, t1 = -n1, n0
     vn, vtt = n0 * v0 + n1 * v1, t0 * v0 + t1 * v1
@@ -221,9 +221,9 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
     E, V (nel, 6, 2) element coordinates (m, slopes -) and velocities; S0, w from
     :func:`contact_points` (the element length is sum_g w); centres (np, 2) m and their
     velocities odot (np, 2) m/s (rdot - odot enters the law: the point's velocity
-    relative to the centre), radii (np,) m, omegas (np,) rad/s; prm = [k_p N/m^2,
-    c_p N s/m^2, the friction law's code and parameters]
-    (:func:`ancf.belts.friction.contact_vector`); z (2, nel, ng, np) the friction law's
+    relative to the centre), radii (np,) m, omegas (np,) rad/s; prm the contact
+    record (k_p N/m^2, c_p N s/m^2, the friction law's code and parameters by name:
+    :func:`ancf.belts.friction.contact_record`); z (2, nel, ng, np) the friction law's
     state at every contact point (m): z[0] at the last converged step, z[1] filled with
     the trial state of the step of h (s) (0 out of contact); None for a stateless law
     (compiled without it).

@@ -174,7 +174,7 @@ def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
     Fills n, t, v_s, f_t (3,) and returns |N|, d, F_n, |v_s| and the branch:
     0 out (d < 0), 1 clamped (F_n = 0), else the friction law's (creep-rate: 2 linear,
     3 saturated).  Computed in registers, stored once."""
-    kp, cp = prm[0], prm[1]
+    kp, cp = prm.k_p, prm.c_p
     ap = a[0] * p[0] + a[1] * p[1] + a[2] * p[2]
     n0, n1, n2 = a[0] - ap * p[0], a[1] - ap * p[1], a[2] - ap * p[2]
     rho = 0.0
@@ -213,7 +213,7 @@ def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, gF, G
     dn/dr = t t^T / |N|, dt/dr = -n t^T / |N|, d|N|/dr = n^T;
     dF_n = -(k_p n + c_p (t . vr) t / |N|) . dr - c_p n . drdot;
     dv_s = -((n . w) t + (t . w) n) t^T / |N| dr + (I - n n^T) drdot - R t domega."""
-    kp, cp = prm[0], prm[1]
+    kp, cp = prm.k_p, prm.c_p
     tv = t[0] * vr[0] + t[1] * vr[1] + t[2] * vr[2]
     nw = n[0] * vr[0] + n[1] * vr[1] + n[2] * vr[2]
     tw = tv - om * R
@@ -405,8 +405,8 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     E, V (nel, 12, 3) element coordinates (m, slopes -) and velocities; S0, w from
     :func:`contact_points3d`; centres (np, 3) m, axes (np, 3) (normalised here),
     radii (np,) m, omegas (np,) rad/s about the axes, centre_velocities (np, 3) m/s;
-    prm = [k_p N/m^3, c_p N s/m^3, the friction law's code and parameters]
-    (:func:`ancf.belts.friction.contact_vector`).  Adds Q (nel, 36) N and
+    prm the contact record (k_p N/m^3, c_p N s/m^3, the friction law's code and
+    parameters by name: :func:`ancf.belts.friction.contact_record`).  Adds Q (nel, 36) N and
     T (np,) N m and, if ``want_J``, their exact derivatives on the active branch:
     Kq, Cv (nel, 36, 36) dQ/de, dQ/dedot; Qw (nel, np, 36) dQ/domega_p; dTq, dTv
     (np, nel, 36) dT_p/de, dT_p/dedot; dTw (np,) dT_p/domega_p.  Returns the number

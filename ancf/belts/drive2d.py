@@ -168,7 +168,7 @@ class PulleyDrive:
         dQ/de (nel, ndof, ndof) N/m or None), ndof = nshape dim."""
         nel, nd, npul = E.shape[0], E.shape[1] * E.shape[2], self.radii.size
         V, pulleys = np.zeros_like(E), self.pulleys_at_rest()
-        prm = friction.contact_vector(self.spec.k_p, 0.0, "creep-rate", 0.0, 0.0)
+        prm = friction.contact_record(self.spec.k_p, 0.0, "creep-rate", 0.0, 0.0)
         d = self.contact_state(E, V, self.S0, *pulleys, prm)[1]
         U = 0.5 * self.spec.k_p * np.einsum("eg,egp->", self.w, np.maximum(d, 0.0) ** 2)
         if not want_J:
@@ -209,7 +209,7 @@ class BeltDrive(PulleyDrive):
                 np.zeros(self.pattern.n), self.Mb, True)
         self.weight = self.pattern.restrict(self._weight(gravity))
         self.S0, self.w, self.xi = contact_points(self.mesh.lengths, s.gauss_points)
-        self.prm = friction.contact_vector(s.k_p, s.c_p, *s.friction)
+        self.prm = friction.contact_record(s.k_p, s.c_p, *s.friction)
         if rig is None:
             self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
             self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")

@@ -123,7 +123,7 @@ class Belt3DDrive(PulleyDrive):
             raise ValueError(f"friction law {s.friction[0]!r}: its state per contact point is "
                              "carried by the 2D drive only; allowed in 3D: "
                              + ", ".join(friction.LAWS))
-        self.prm = friction.contact_vector(s.k_p, s.c_p, *s.friction)
+        self.prm = friction.contact_record(s.k_p, s.c_p, law, *values)
         self.shift = (0.0, T0)  # the driver's displacement u0, m, reached at t0, s
         if rig is None:
             self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")

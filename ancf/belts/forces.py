@@ -59,7 +59,7 @@ class Drive2D(NamedTuple):
     w: np.ndarray        # their weights (nel, ng), m
     centres: np.ndarray  # pulley centres (2, 2), m
     radii: np.ndarray    # pulley radii (2,), m
-    prm: np.ndarray      # [k_p, c_p, friction law code, its parameters] (contact_vector)
+    prm: np.record       # k_p, c_p, friction law code, its parameters (contact_record)
     free: np.ndarray     # (np,) int: the pulley's coordinate j past the belt's, -1: its law
     inertia: np.ndarray  # (k,) the free pulleys' moments of inertia, kg m^2
     damping: np.ndarray  # (k,) their rotational damping, N m s
@@ -84,7 +84,7 @@ class Drive3D(NamedTuple):
     w: np.ndarray        # (nel, ng), m^2
     centres: np.ndarray  # (np, 3), m
     radii: np.ndarray
-    prm: np.ndarray
+    prm: np.record
     free: np.ndarray
     inertia: np.ndarray
     damping: np.ndarray

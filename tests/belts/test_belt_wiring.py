@@ -39,9 +39,8 @@ TABLE_4_1 = {
 
 
 def _friction(prm) -> dict:
-    """k_p, c_p and the creep-rate law's values by name from a kernel's prm vector."""
-    names = [p.name for p in PARAMS["creep-rate"]]
-    return {"k_p": prm[0], "c_p": prm[1], **dict(zip(names, prm[3:3 + len(names)]))}
+    """k_p, c_p and the creep-rate law's values by name from a kernel's contact record."""
+    return {name: prm[name] for name in ("k_p", "c_p", *(p.name for p in PARAMS["creep-rate"]))}
 
 
 def _belt_mass(element, n_per_node: int, dim: int) -> float:

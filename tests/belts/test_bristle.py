@@ -29,7 +29,7 @@ H, RTOL, EPS = 1e-6, 1e-6, np.finfo(float).eps
 
 
 def _bristle(kp, cp, kt=KT, dt=DT, mu=MU):
-    return friction.contact_vector(kp, cp, "bristle", mu, kt, dt)
+    return friction.contact_record(kp, cp, "bristle", mu, kt, dt)
 
 
 def _forces(E, V, S0, w, centres, radii, omegas, prm, z, h, want_J=True):

@@ -60,15 +60,15 @@ def _ring(nel, rho, centre, omega_b=0.0, gauss_points=7):
 
 
 def _creep_rate(mu, nu):
-    return friction.contact_vector(KP, CP, "creep-rate", mu, nu)
+    return friction.contact_record(KP, CP, "creep-rate", mu, nu)
 
 
 def _branches(state, prm):
     """Per point and pulley: 0 out, 1 clamped, 2 linear (or the smooth law's one branch),
     +-3 saturated (sign of v_t)."""
     _, d, Fn, phi, vt = state
-    creep = prm[2] == friction.CODES["creep-rate"]
-    sat = creep & (Fn > 0) & (prm[4] * np.abs(vt) >= prm[3] * Fn)
+    creep = prm.law == friction.CODES["creep-rate"]
+    sat = creep & (Fn > 0) & (prm.nu_s * np.abs(vt) >= prm.mu * Fn)
     return np.where(d < 0, 0, np.where(Fn <= 0, 1, np.where(sat, 3 * np.sign(vt), 2)))
 
 
@@ -84,7 +84,7 @@ def _fd_state(case):
     V = V + case["v_noise"] * rng.standard_normal(V.shape)
     omegas = np.array([case["omega"], 3.0])
     kp, cp, *values = case["prm"]
-    prm = friction.contact_vector(kp, cp, case.get("law", friction.LAW), *values)
+    prm = friction.contact_record(kp, cp, case.get("law", friction.LAW), *values)
     return E, V, S0, w, centres, radii, omegas, prm
 
 
@@ -177,7 +177,7 @@ def test_jacobians_match_central_differences(case):
 def test_point_law_follows_eqs_3_20_to_3_25(case):
     """contact_state against the equations written out in numpy, every branch."""
     E, V, S0, w, centres, radii, omegas, prm = _fd_state(CASES[case])
-    kp, cp, _, mu, q = prm[:5]
+    kp, cp, mu, q = CASES[case]["prm"]
     r, d, Fn, phi, vt = contact_state(E, V, S0, centres, radii, omegas, prm)
     rdot = np.einsum("egk,ekd->egd", S0, V)
     a = np.einsum("egk,ekd->egd", S0, E)[:, :, None, :] - centres

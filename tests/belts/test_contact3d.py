@@ -139,12 +139,12 @@ def _fd_state(case):
     V = V + case["v_noise"] * rng.standard_normal(V.shape)
     omegas = np.array([case["omega"], 3.0])
     kp, cp, *values = case["prm"]
-    prm = friction.contact_vector(kp, cp, case.get("law", friction.LAW), *values)
+    prm = friction.contact_record(kp, cp, case.get("law", friction.LAW), *values)
     return E, V, S0, w, pul, omegas, prm
 
 
 def _creep_rate(mu, nu):
-    return friction.contact_vector(KP, CP, "creep-rate", mu, nu)
+    return friction.contact_record(KP, CP, "creep-rate", mu, nu)
 
 
 # the strip (over -0.3 .. 1.3 rad) at R0 + GAP from a centre off by 2 mm towards -0.5 rad:
@@ -252,7 +252,7 @@ def test_jacobians_match_central_differences(case):
 def test_point_law_follows_eqs_4_43_and_4_44(case):
     """contact_state3d against the equations written out in numpy, every branch."""
     E, V, S0, w, pul, omegas, prm = _fd_state(CASES[case])
-    kp, cp, _, mu, q = prm[:5]
+    kp, cp, mu, q = CASES[case]["prm"]
     r, d, Fn, ft, vs, _ = _state(E, V, S0, pul, omegas, prm)
     p = pul["axes"] / np.linalg.norm(pul["axes"], axis=-1, keepdims=True)
     rdot = np.einsum("eqk,ekd->eqd", S0, V)[:, :, None, :]
@@ -402,8 +402,8 @@ def test_plane_motion_reduces_to_the_2d_law_per_unit_width():
     normal force, friction, sliding speed, moment and nodal forces equal those of
     ancf/belts/contact2d.py for the same centre line, with k_p, c_p, nu_s divided by the width."""
     n, b, nel = 7, 0.04, 6
-    prm2 = friction.contact_vector(1e6, 50.0, "creep-rate", MU, 1e3)  # N/m^2, N s/m^2, kg/(m s)
-    prm3 = friction.contact_vector(1e6 / b, 50.0 / b, "creep-rate", MU, 1e3 / b)  # per metre
+    prm2 = friction.contact_record(1e6, 50.0, "creep-rate", MU, 1e3)  # N/m^2, N s/m^2, kg/(m s)
+    prm3 = friction.contact_record(1e6 / b, 50.0 / b, "creep-rate", MU, 1e3 / b)  # per metre
     rng = np.random.default_rng(11)
     centre = np.array([0.02, -0.01])
     # a 2D arc of the belt: ring nodes of radius R0 off-centre, perturbed, with a velocity field

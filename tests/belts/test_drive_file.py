@@ -69,7 +69,7 @@ def test_thread_example_names_the_bristle_law_and_reaches_the_kernel_with_it():
     assert keys == [q.name for q in friction.STATE_PARAMS["bristle"]]
     drive = build(d)
     f, c = d.friction, d.contact
-    assert np.array_equal(drive.prm, friction.contact_vector(
+    assert np.array_equal(drive.prm, friction.contact_record(
         c["k_p"], c["c_p"], "bristle", f["mu"], f["stiffness"], f["damping"]))
     assert friction.has_state(drive.prm)
     assert drive.kernel().z.shape == (2, d.belt["n_elements"], c["gauss_points"], 2)
@@ -141,7 +141,7 @@ def test_the_friction_law_a_file_names_reaches_the_kernel():
     data["friction"] = {"law": "coulomb", "mu": 0.7, "v_reg": 0.05}
     drive = build(describe(data))
     c = data["contact"]
-    assert np.array_equal(drive.prm, friction.contact_vector(c["k_p"], c["c_p"], "coulomb", 0.7,
+    assert np.array_equal(drive.prm, friction.contact_record(c["k_p"], c["c_p"], "coulomb", 0.7,
                                                              0.05))
     rng = np.random.default_rng(5)
     E = drive.element_coords(drive.q0 * (1 - 1e-3))

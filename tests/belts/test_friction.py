@@ -2,7 +2,8 @@
 the force on a sliding velocity of 1 (planar) or 3 (plate) components, and the
 derivatives its ``chain`` gives, equal to central differences of its ``force`` on each
 branch (points whose branch does not change within the step); and the kernels' dispatch
-(``friction.force``, ``friction.chain`` on the code in prm) reaching every row."""
+(``friction.force``, ``friction.chain`` on the law's code in its contact record) reaching
+every row."""
 from __future__ import annotations
 
 import numpy as np
@@ -15,8 +16,8 @@ RTOL = 1e-7
 MU = 1.2                               # Table 3.1
 FN = 50.0                              # normal force, N/m
 V_REG = 1e-3                           # m/s: the Coulomb law's regularisation speed
-PRM = {"creep-rate": friction.contact_vector(1e7, 10.0, "creep-rate", MU, 1e5),  # Table 3.1
-       "coulomb": friction.contact_vector(1e7, 10.0, "coulomb", MU, V_REG)}
+PRM = {"creep-rate": friction.contact_record(1e7, 10.0, "creep-rate", MU, 1e5),  # Table 3.1
+       "coulomb": friction.contact_record(1e7, 10.0, "coulomb", MU, V_REG)}
 
 
 def _velocities(n, rng):
@@ -79,7 +80,7 @@ def test_the_planar_law_is_the_plate_law_on_a_line(name):
 
 def test_creep_rate_law_is_tri_linear():
     """Eq. 3.23 / Fig. 3.3: -nu_s v below mu F_n / nu_s, -sign(v) mu F_n above."""
-    mu, nu = PRM["creep-rate"][3:5]
+    mu, nu = PRM["creep-rate"].mu, PRM["creep-rate"].nu_s
     v_sat = mu * FN / nu
     for v, expected in ((0.5 * v_sat, -nu * 0.5 * v_sat), (-0.5 * v_sat, nu * 0.5 * v_sat),
                         (3 * v_sat, -mu * FN), (-3 * v_sat, mu * FN)):
@@ -114,12 +115,12 @@ def test_the_kernels_dispatch_reaches_every_law(name, n):
                               _chain(name, b, v, FN, G, gF, law=both)), (name, v)
 
 
-def test_contact_vector_refuses_an_unknown_law_or_wrong_count():
+def test_contact_record_refuses_an_unknown_law_or_wrong_count():
     with pytest.raises(ValueError, match="friction law 'bristle' with 2 values; allowed: "
                                          "creep-rate"):
-        friction.contact_vector(1e7, 10.0, "bristle", 1.0, 2.0)
+        friction.contact_record(1e7, 10.0, "bristle", 1.0, 2.0)
     with pytest.raises(ValueError, match="friction law 'coulomb' with 1 values"):
-        friction.contact_vector(1e7, 10.0, "coulomb", 1.0)
+        friction.contact_record(1e7, 10.0, "coulomb", 1.0)
 
 
 # ------------------------------------------------------------------ the bristle point law
@@ -127,9 +128,7 @@ K_T, D_T, STEP = 4e8, 5758.0, 2e-5  # a bristle (THREAD's k_t per unit length), 
 
 
 def _bristle_prm(kt=K_T, dt=D_T):
-    prm = np.zeros(friction.PRM_SIZE)
-    prm[3:6] = MU, kt, dt
-    return prm
+    return friction.contact_record(0.0, 0.0, "bristle", MU, kt, dt)
 
 
 def _bristle(v, z0, Fn, prm):
@@ -205,3 +204,17 @@ def test_bristle_without_its_spring_is_the_creep_rate_law():
         b_cr, f_cr = _force("creep-rate", v, FN)
         assert (branch == friction.STICK) == (b_cr == friction.LINEAR), v
         np.testing.assert_allclose(f, f_cr, rtol=1e-14, atol=0.0)
+
+
+def test_the_contact_record_holds_each_law_s_parameters_by_name():
+    """Every registered law is a row of ALL_PARAMS with its code; its values land in the
+    record's fields of its parameters' names, every other parameter field 0."""
+    assert list(friction.ALL_PARAMS) == ["creep-rate", "coulomb", "bristle"]
+    fields = set(friction.CONTACT.names) - {"k_p", "c_p", "law"}
+    for name, params in friction.ALL_PARAMS.items():
+        values = [1.5 + i for i in range(len(params))]
+        rec = friction.contact_record(3.0, 4.0, name, *values)
+        assert (rec.k_p, rec.c_p, rec.law) == (3.0, 4.0, friction.CODES[name])
+        assert [rec[p.name] for p in params] == values
+        assert all(rec[f] == 0.0 for f in fields - {p.name for p in params})
+        assert friction.has_state(rec) == (name in friction.STATE_LAWS)
