@@ -28,8 +28,20 @@ from ancf.belts.contact2d import (_centreline, _may_touch, _point_jacobian, _poi
                                   _state_at, _trial_storage)
 from ancf.common.leaf import leaf
 
-#: columns of an arm row
+#: columns of an arm row (:func:`arm_row`), and their number
 PULLEY, COORD, PIVOT_X, PIVOT_Y, LENGTH, BETA0, STIFFNESS, PRELOAD = range(8)
+ARM_COLUMNS = PRELOAD + 1
+
+
+def arm_row(*, pulley: int, coord: int, pivot, length: float, beta0: float,
+            stiffness: float, preload: float) -> np.ndarray:
+    """One arm as a row of ``arms`` (ARM_COLUMNS,): its pulley's index, its coordinate j
+    past the free pulleys', pivot (2,) m, length m, nominal angle beta0 rad, spring
+    stiffness N m/rad and preload N m (module docstring)."""
+    row = np.zeros(ARM_COLUMNS)
+    row[PULLEY], row[COORD], row[PIVOT_X], row[PIVOT_Y] = pulley, coord, pivot[0], pivot[1]
+    row[LENGTH], row[BETA0], row[STIFFNESS], row[PRELOAD] = length, beta0, stiffness, preload
+    return row
 
 
 @leaf

@@ -22,7 +22,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ancf.belts import friction
-from ancf.belts.arm2d import COORD, arm_geometry
+from ancf.belts.arm2d import ARM_COLUMNS, COORD, arm_geometry
 from ancf.belts.path import TwoPulleyPath, laid_belt
 from ancf.belts.contact2d import contact_forces, contact_points, contact_state
 from ancf.belts.forces import DAMPING_JACOBIANS, Drive2D
@@ -83,7 +83,7 @@ class Rig:
     pulley's number j, -1 for a pulley turned by its law), the free pulleys' ``inertia``
     (k,) kg m^2 and rotational ``damping`` (k,) N m s, one law per pulley, a function of
     the time (s, an array): the angular velocity (rad/s) of a pulley turned by it, the
-    load torque T_a (N m) of a free one, and the tensioners' ``arms`` (na, 8)
+    load torque T_a (N m) of a free one, and the tensioners' ``arms`` (na, ARM_COLUMNS)
     (:mod:`ancf.belts.arm2d`; their angles are free coordinates too, with an inertia and
     a damping)."""
 
@@ -94,7 +94,7 @@ class Rig:
     inertia: np.ndarray
     damping: np.ndarray
     laws: tuple[Callable, ...]
-    arms: np.ndarray = field(default_factory=lambda: np.zeros((0, 8)))
+    arms: np.ndarray = field(default_factory=lambda: np.zeros((0, ARM_COLUMNS)))
 
 
 def thesis_rig(spec: BeltSpec, speed, torque, dim: int = 2) -> Rig:

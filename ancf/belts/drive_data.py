@@ -32,7 +32,7 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   2D belt's) and a friction law with a state.
 * ``[[pulleys]]``, in the belt's counter-clockwise running order (:mod:`ancf.belts.path`):
   ``name``, ``centre`` [x, y] (m), ``radius`` (m), ``side`` (+1 the belt's inner side on
-  it, -1 its back) and a ``law`` with the law's own keys (:data:`LAW_KEYS`):
+  it, -1 its back) and a ``law`` (a :class:`PulleyRole` of :data:`ROLES`) with its keys:
   ``prescribed`` (``speed``: a law of :data:`ancf.belts.pulleys.SPEED_LAWS` with
   ``omega_final`` rad/s, ``t0``, ``t1`` s, or ``table`` with ``speed_table``),
   ``driven`` (``inertia``, ``damping`` and ``load``: a law of
@@ -61,7 +61,8 @@ Keys without a default (:data:`REQUIRED`) must be given.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
+from typing import Callable
 
 import numpy as np
 
@@ -70,7 +71,7 @@ from ancf.belts.contact2d import SUPPORTED_POINTS
 from ancf.belts.contact3d import SUPPORTED_RULES
 from ancf.belts.forces import DAMPING_JACOBIANS
 from ancf.belts.path import PulleyPath
-from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS
+from ancf.belts.pulleys import FILE_SPEED_LAWS, FILE_TORQUE_LAWS
 from ancf.common.inputs import MAX_STEPS
 from ancf.common.params import InputError, Param
 from ancf.solvers.alpha_march import ACCEPT, REFRESH, REFRESH_RATIO
@@ -187,7 +188,85 @@ BELT_KEYS = {"dufva2d": BELT, "plate36": PLATE_BELT}
 #: pairs of belt keys of which exactly one is given
 ONE_OF = (("E", "EA"), ("length", "prestretch"))
 
-LAWS = ("prescribed", "driven", "idler", "tensioner", "fixed")
+#: the keys of the pulley laws' time laws (ancf.belts.pulleys.TimeLaw.keys)
+TIME_KEYS = _keys(
+    Param("omega_final", REQUIRED, float, "rad/s", "final angular velocity", lo=-1e4, hi=1e4),
+    Param("load_torque", REQUIRED, float, "N m", "(final) load torque T_a", lo=-1e5, hi=1e5),
+    Param("t0", REQUIRED, float, "s", "start of the law", lo=0, hi=100),
+    Param("t1", REQUIRED, float, "s", "end of the law (> t0)", lo=0, lo_open=True, hi=100),
+    Table("speed_table", "rad/s", "angular velocity against time"),
+    Table("load_table", "N m", "load torque T_a against time"),
+)
+
+
+def _zero(t):
+    return np.zeros(np.shape(t))
+
+
+@dataclass(frozen=True, kw_only=True)
+class PulleyRole:
+    """How a pulley turns (its drive-file ``law``) and what it brings to the model:
+    ``keys`` its drive-file keys beyond :data:`PULLEY`'s (units, ranges, defaults);
+    ``law_key`` the key naming its time law among ``laws`` (ancf.belts.pulleys.TimeLaw:
+    the prescribed angular velocity rad/s, or the load torque N m of a free pulley; None:
+    none, zero); ``free`` whether it turns freely (a coordinate with its ``inertia`` and
+    ``damping``); ``arm`` whether it sits on a tensioner arm (one more coordinate,
+    :mod:`ancf.belts.arm2d`: the 2D belt's only); ``steady`` its entries of the steady
+    reference's pulley (:func:`analytic.belt_steady.solve`) from its resolved keys;
+    ``derive`` adds derived keys to the resolved ones (InputError naming the key)."""
+
+    name: str
+    keys: tuple = ()
+    law_key: str | None = None
+    laws: dict = field(default_factory=dict)
+    free: bool = False
+    arm: bool = False
+    steady: Callable = lambda p: {}
+    derive: Callable = lambda v, prefix: None
+
+    def time_law(self, params: dict) -> Callable:
+        """Its time law as a function of t (s, an array), from its resolved keys."""
+        return self.laws[params[self.law_key]].of(params) if self.law_key else _zero
+
+
+def _arm_length(v: dict, prefix: str) -> None:
+    """A tensioner's arm length |centre - pivot| (m), refused when zero."""
+    v["arm_length"] = math.dist(v["centre"], v["pivot"])
+    if v["arm_length"] == 0:
+        raise InputError(f"{prefix}pivot = {list(v['pivot'])!r} is the pulley's centre; "
+                         "allowed: a point other than the centre")
+
+
+_INERTIA = Param("inertia", REQUIRED, float, "kg m^2", "moment of inertia", lo=0, lo_open=True,
+                 hi=1e3)
+_DAMPING = Param("damping", REQUIRED, float, "N m s", "rotational damping", lo=0, hi=1e6)
+#: every pulley law by name, in the order the drive-file messages list them
+ROLES = {role.name: role for role in (
+    PulleyRole(name="prescribed", law_key="speed", laws=FILE_SPEED_LAWS,
+               keys=(Param("speed", REQUIRED, str, doc="speed law",
+                           choices=tuple(FILE_SPEED_LAWS)),),
+               steady=lambda p: {"omega": p["omega_final"]}),
+    PulleyRole(name="driven", free=True, law_key="load", laws=FILE_TORQUE_LAWS,
+               keys=(_INERTIA, _DAMPING,
+                     Param("load", REQUIRED, str, doc="load torque law",
+                           choices=tuple(FILE_TORQUE_LAWS))),
+               steady=lambda p: {"torque": p["load_torque"], "damping": p["damping"]}),
+    PulleyRole(name="idler", free=True, keys=(_INERTIA, _DAMPING),
+               steady=lambda p: {"damping": p["damping"]}),
+    PulleyRole(name="tensioner", free=True, arm=True, derive=_arm_length, keys=(
+        _INERTIA, _DAMPING, Vector("pivot", doc="the tensioner arm's pivot"),
+        Param("arm_inertia", REQUIRED, float, "kg m^2", "the arm's moment of inertia about the "
+              "pivot (with the pulley's mass)", lo=0, lo_open=True, hi=1e3),
+        Param("arm_stiffness", REQUIRED, float, "N m/rad", "torsion spring stiffness", lo=0,
+              lo_open=True, hi=1e7),
+        Param("arm_preload", REQUIRED, float, "N m", "the spring's moment on the arm at the "
+              "given centre (counter-clockwise positive)", lo=-1e5, hi=1e5),
+        Param("arm_damping", REQUIRED, float, "N m s", "the arm's rotational damping", lo=0,
+              hi=1e6)),
+        steady=lambda p: {"damping": p["damping"], "pivot": p["pivot"],
+                          "stiffness": p["arm_stiffness"], "preload": p["arm_preload"]}),
+    PulleyRole(name="fixed"))}
+LAWS = tuple(ROLES)
 PULLEY = _keys(
     Param("name", REQUIRED, str, doc="the pulley's name"),
     Vector("centre", doc="centre"),
@@ -195,46 +274,12 @@ PULLEY = _keys(
     Param("side", 1, int, doc="+1: the belt's inner side on it, -1: its back", choices=(1, -1)),
     Param("law", REQUIRED, str, doc="how the pulley turns", choices=LAWS),
 )
-_INERTIA = Param("inertia", REQUIRED, float, "kg m^2", "moment of inertia", lo=0, lo_open=True,
-                 hi=1e3)
-_DAMPING = Param("damping", REQUIRED, float, "N m s", "rotational damping", lo=0, hi=1e6)
-LAW_PARAMS = _keys(
-    _INERTIA, _DAMPING,
-    Param("speed", REQUIRED, str, doc="speed law", choices=(*SPEED_LAWS, "table")),
-    Param("load", REQUIRED, str, doc="load torque law",
-          choices=(*TORQUE_LAWS, "constant", "table")),
-    Param("omega_final", REQUIRED, float, "rad/s", "final angular velocity", lo=-1e4, hi=1e4),
-    Param("load_torque", REQUIRED, float, "N m", "(final) load torque T_a", lo=-1e5, hi=1e5),
-    Param("t0", REQUIRED, float, "s", "start of the law", lo=0, hi=100),
-    Param("t1", REQUIRED, float, "s", "end of the law (> t0)", lo=0, lo_open=True, hi=100),
-    Table("speed_table", "rad/s", "angular velocity against time"),
-    Table("load_table", "N m", "load torque T_a against time"),
-    Vector("pivot", doc="the tensioner arm's pivot"),
-    Param("arm_inertia", REQUIRED, float, "kg m^2", "the arm's moment of inertia about the "
-          "pivot (with the pulley's mass)", lo=0, lo_open=True, hi=1e3),
-    Param("arm_stiffness", REQUIRED, float, "N m/rad", "torsion spring stiffness", lo=0,
-          lo_open=True, hi=1e7),
-    Param("arm_preload", REQUIRED, float, "N m", "the spring's moment on the arm at the given "
-          "centre (counter-clockwise positive)", lo=-1e5, hi=1e5),
-    Param("arm_damping", REQUIRED, float, "N m s", "the arm's rotational damping", lo=0, hi=1e6),
-)
+#: every key a pulley law or its time law may take (beyond PULLEY's)
+LAW_PARAMS = {**{k.name: k for role in ROLES.values() for k in role.keys}, **TIME_KEYS}
 #: the pulley laws each element's drive carries (a tensioner's arm: the 2D belt's only)
-ELEMENT_LAWS = {"dufva2d": LAWS, "plate36": ("prescribed", "driven", "idler", "fixed")}
-#: the keys of each pulley law (beyond PULLEY's); "speed" and "load" add SUB_KEYS
-LAW_KEYS = {"prescribed": ("speed",), "driven": ("inertia", "damping", "load"),
-            "idler": ("inertia", "damping"),
-            "tensioner": ("inertia", "damping", "pivot", "arm_inertia", "arm_stiffness",
-                          "arm_preload", "arm_damping"),
-            "fixed": ()}
-
-
-def sub_keys(law_key: str, name: str) -> tuple:
-    """The keys that the speed or load law ``name`` needs (``law_key`` "speed" or "load")."""
-    if name == "table":
-        return (f"{law_key}_table",)
-    if name == "constant":
-        return ("load_torque",)
-    return ("omega_final" if law_key == "speed" else "load_torque", "t0", "t1")
+ELEMENT_LAWS = {"dufva2d": LAWS, "plate36": tuple(n for n, r in ROLES.items() if not r.arm)}
+#: the keys of each pulley law (beyond PULLEY's); its time law adds that law's keys
+LAW_KEYS = {name: tuple(k.name for k in role.keys) for name, role in ROLES.items()}
 
 
 #: each friction law's parameters (ancf.belts.friction.ALL_PARAMS), all required
@@ -337,23 +382,7 @@ def element_modulus(belt: dict) -> float:
     return belt["E"] * laid_factor(belt)
 
 
-def omega_law(pulley: PulleySpec):
-    """omega(t) (rad/s, t an array of s) of a prescribed pulley."""
-    p = pulley.params
-    if p["speed"] == "table":
-        t, y = np.array(p["speed_table"]).T
-        return lambda s: np.interp(np.asarray(s, dtype=float), t, y)
-    law = SPEED_LAWS[p["speed"]]
-    return lambda s: law(s, p["omega_final"], p["t0"], p["t1"])
-
-
-def load_law(pulley: PulleySpec):
-    """T_a(t) (N m, t an array of s) of a driven pulley."""
-    p = pulley.params
-    if p["load"] == "table":
-        t, y = np.array(p["load_table"]).T
-        return lambda s: np.interp(np.asarray(s, dtype=float), t, y)
-    if p["load"] == "constant":
-        return lambda s: np.full(np.shape(s), p["load_torque"])
-    law = TORQUE_LAWS[p["load"]]
-    return lambda s: law(s, p["load_torque"], p["t0"], p["t1"])
+def time_law(pulley: PulleySpec) -> Callable:
+    """The pulley's time law (t an array of s): a prescribed pulley's omega(t) (rad/s), a
+    driven one's load torque T_a(t) (N m), else zero (:meth:`PulleyRole.time_law`)."""
+    return ROLES[pulley.law].time_law(pulley.params)

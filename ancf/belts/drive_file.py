@@ -17,7 +17,6 @@ belt's element does not carry (``plate36``: no tensioner, no law with a state).
 from __future__ import annotations
 
 import copy
-import math
 import tomllib
 from dataclasses import replace
 from pathlib import Path
@@ -166,10 +165,10 @@ def _law_keys(table: dict, prefix: str) -> tuple:
         raise _missing(law, prefix)
     name = replace(law, name=prefix + "law").parse(table["law"])
     names = list(dd.PULLEY) + list(dd.LAW_KEYS[name])
-    for sub in ("speed", "load"):
-        if sub in dd.LAW_KEYS[name] and sub in table:
-            choice = replace(dd.LAW_PARAMS[sub], name=prefix + sub).parse(table[sub])
-            names += [k for k in dd.sub_keys(sub, choice) if k not in names]
+    sub = dd.ROLES[name].law_key
+    if sub in table:
+        choice = replace(dd.LAW_PARAMS[sub], name=prefix + sub).parse(table[sub])
+        names += [k for k in dd.ROLES[name].laws[choice].keys if k not in names]
     keys = {k: dd.PULLEY.get(k) or dd.LAW_PARAMS[k] for k in names}
     return name, keys, f" (law {name!r}: {', '.join(names[len(dd.PULLEY):])})"
 
@@ -186,11 +185,7 @@ def _pulley_spec(i: int, table, element: str) -> dd.PulleySpec:
     if "t1" in v and not v["t1"] > v["t0"]:
         raise InputError(f"{prefix}t1 = {v['t1']!r} is out of range; allowed: a number > "
                          f"t0 = {v['t0']:g} s")
-    if law == "tensioner":
-        v["arm_length"] = math.dist(v["centre"], v["pivot"])
-        if v["arm_length"] == 0:
-            raise InputError(f"{prefix}pivot = {list(v['pivot'])!r} is the pulley's centre; "
-                             "allowed: a point other than the centre")
+    dd.ROLES[law].derive(v, prefix)
     params = {k: v[k] for k in v if k not in dd.PULLEY}
     return dd.PulleySpec(v["name"], v["centre"], v["radius"], v["side"], law, params)
 

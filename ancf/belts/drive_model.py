@@ -27,17 +27,11 @@ import math
 
 import numpy as np
 
+from ancf.belts.arm2d import ARM_COLUMNS, arm_row
 from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
 from ancf.belts.drive3d import Belt3DDrive, Plate3DSpec
 from ancf.belts.friction import ALL_PARAMS
-from ancf.belts.drive_data import (DriveDescription, element_modulus, laid_factor, load_law,
-                                   omega_law)
-
-FREE = ("driven", "idler", "tensioner")
-
-
-def _zero(t):
-    return np.zeros(np.shape(t))
+from ancf.belts.drive_data import ROLES, DriveDescription, element_modulus, laid_factor
 
 
 def _arms(d: DriveDescription, free) -> np.ndarray:
@@ -46,23 +40,25 @@ def _arms(d: DriveDescription, free) -> np.ndarray:
     k = int(free.max()) + 1
     rows = []
     for i, p in enumerate(d.pulleys):
-        if p.law == "tensioner":
+        if ROLES[p.law].arm:
             P, c = p.params["pivot"], p.centre
-            rows.append([i, k + len(rows), P[0], P[1], p.params["arm_length"],
-                         math.atan2(c[1] - P[1], c[0] - P[0]), p.params["arm_stiffness"],
-                         p.params["arm_preload"]])
-    return np.array(rows, dtype=float).reshape(-1, 8)
+            rows.append(arm_row(pulley=i, coord=k + len(rows), pivot=P,
+                                length=p.params["arm_length"],
+                                beta0=math.atan2(c[1] - P[1], c[0] - P[0]),
+                                stiffness=p.params["arm_stiffness"],
+                                preload=p.params["arm_preload"]))
+    return np.array(rows, dtype=float).reshape(-1, ARM_COLUMNS)
 
 
 def rig(d: DriveDescription, dim: int = 2) -> Rig:
     """The pulleys of the description as the march sees them, centres in the x-y plane of
     ``dim`` dimensions."""
     offset = d.belt["contact_offset"]
-    free = np.cumsum([p.law in FREE for p in d.pulleys]) - 1
-    free = np.array([j if p.law in FREE else -1 for p, j in zip(d.pulleys, free)])
-    laws = {"prescribed": omega_law, "driven": load_law}
-    chosen = [p for p in d.pulleys if p.law in FREE]
-    arms = [p for p in d.pulleys if p.law == "tensioner"]
+    roles = [ROLES[p.law] for p in d.pulleys]
+    free = np.cumsum([r.free for r in roles]) - 1
+    free = np.array([j if r.free else -1 for r, j in zip(roles, free)])
+    chosen = [p for p, r in zip(d.pulleys, roles) if r.free]
+    arms = [p for p, r in zip(d.pulleys, roles) if r.arm]
     centres = np.zeros((len(d.pulleys), dim))
     centres[:, :2] = [p.centre for p in d.pulleys]
     return Rig(tuple(p.name for p in d.pulleys), centres,
@@ -71,7 +67,7 @@ def rig(d: DriveDescription, dim: int = 2) -> Rig:
                         + [p.params["arm_inertia"] for p in arms], dtype=float),
                np.array([p.params["damping"] for p in chosen]
                         + [p.params["arm_damping"] for p in arms], dtype=float),
-               tuple(laws[p.law](p) if p.law in laws else _zero for p in d.pulleys),
+               tuple(r.time_law(p.params) for p, r in zip(d.pulleys, roles)),
                _arms(d, free))
 
 
@@ -84,18 +80,21 @@ def _friction(d: DriveDescription) -> tuple:
 def spec3d(d: DriveDescription) -> Plate3DSpec:
     """The plate belt and its contact."""
     b, c = d.belt, d.contact
-    return Plate3DSpec(d.path, b["length"], b["n_elements"], b["E"], b["nu"], b["rho"], b["b"],
-                       b["h"], b["bending"] == "on", c["k_p"], c["c_p"], _friction(d),
-                       c["gauss_points"], ng=b["elastic_points"])
+    return Plate3DSpec(path=d.path, belt_length=b["length"], n_elements=b["n_elements"],
+                       E=b["E"], nu=b["nu"], rho=b["rho"], width=b["b"], h=b["h"],
+                       bending=b["bending"] == "on", k_p=c["k_p"], c_p=c["c_p"],
+                       friction=_friction(d), contact_points=c["gauss_points"],
+                       ng=b["elastic_points"])
 
 
 def spec(d: DriveDescription) -> Belt2DSpec:
     """The belt and its contact (the friction law named in the file, with its parameters)."""
     b, c = d.belt, d.contact
-    law = _friction(d)
-    return Belt2DSpec(d.path, b["length"], b["n_elements"], element_modulus(b), b["nu"],
-                      b["rho"], b["b"], b["h"], b["ks"], b["alpha1"], b["alpha2"],
-                      b["elastic_points"], c["k_p"], c["c_p"], law, c["gauss_points"],
+    return Belt2DSpec(path=d.path, belt_length=b["length"], n_elements=b["n_elements"],
+                      E=element_modulus(b), nu=b["nu"], rho=b["rho"], b=b["b"], h=b["h"],
+                      ks=b["ks"], alpha1=b["alpha1"], alpha2=b["alpha2"],
+                      nx=b["elastic_points"], k_p=c["k_p"], c_p=c["c_p"],
+                      friction=_friction(d), gauss_points=c["gauss_points"],
                       axial=b["axial_strain"])
 
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf.belts.drive_data import DriveDescription, element_modulus
+from ancf.belts.drive_data import ROLES, DriveDescription, element_modulus
 from analytic.belt_steady import path_length, solve
 
 
@@ -17,28 +17,15 @@ def steady_reference(desc: DriveDescription) -> dict:
     torques' end values, the damping, the arm's spring) and its belt (the element's EA,
     :func:`ancf.belts.drive_data.element_modulus`; rho A, the reference length) with the
     friction's mu.  InputError (a ValueError) where the steady belt does not exist."""
-    pulleys = [_steady_pulley(p) for p in desc.pulleys]
+    pulleys = [{"name": p.name, "centre": p.centre, "radius": p.radius, "side": p.side,
+                "law": p.law, **ROLES[p.law].steady(p.params)} for p in desc.pulleys]
     for i, p in enumerate(desc.pulleys):
-        if p.law == "tensioner":
-            pulleys[i].update(pivot=p.params["pivot"], stiffness=p.params["arm_stiffness"],
-                              preload=p.params["arm_preload"])
+        if ROLES[p.law].arm:
             pulleys[i]["preload"] *= _into(pulleys, i, p)
     b = desc.belt
     area = b["b"] * b["h"]
     return solve(pulleys, EA=element_modulus(b) * area, rhoA=b["rho"] * area, L0=b["length"],
                  mu=desc.friction["mu"])
-
-
-def _steady_pulley(p) -> dict:
-    out = {"name": p.name, "centre": p.centre, "radius": p.radius, "side": p.side,
-           "law": p.law}
-    if p.law == "prescribed":
-        out["omega"] = p.params["omega_final"]
-    elif p.law == "driven":
-        out.update(torque=p.params["load_torque"], damping=p.params["damping"])
-    elif p.law != "fixed":
-        out["damping"] = p.params["damping"]
-    return out
 
 
 def _into(pulleys, i, p) -> float:

@@ -64,7 +64,7 @@ class Drive2D(NamedTuple):
     inertia: np.ndarray  # (k,) the free pulleys' moments of inertia, kg m^2
     damping: np.ndarray  # (k,) their rotational damping, N m s
     weight: np.ndarray   # (n,) the belt's weight as generalised forces F_g, N
-    arms: np.ndarray     # (na, 8) tensioner arms (ancf.belts.arm2d), their psi coordinates j
+    arms: np.ndarray     # (na, ARM_COLUMNS) tensioner arms (ancf.belts.arm2d), psi coordinates j
     z: np.ndarray        # (2, nel, ng, np) friction state per contact point, m: [0] at the
     #                      last converged step, [1] the trial (a law with a state; else None)
     h: np.ndarray        # (1,) the step the trial state is of, s (the march's)
@@ -89,7 +89,7 @@ class Drive3D(NamedTuple):
     inertia: np.ndarray
     damping: np.ndarray
     weight: np.ndarray   # (n,)
-    arms: np.ndarray     # (0, 8): no tensioner arms in 3D
+    arms: np.ndarray     # (0, ARM_COLUMNS): no tensioner arms in 3D
     z: None              # no friction law with a state in 3D
     h: np.ndarray        # (1,)
     last: np.ndarray     # (2, np)

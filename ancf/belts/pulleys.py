@@ -17,13 +17,20 @@ branches overlap on (0.6, 1.0].  We take the middle branch up to 1.0 s (first ma
 as printed): it is Eq. 3.30 with t1 = 1.0 s and T_max = 2 N m, continuous at 1.0 s,
 whereas the 0.6 of the last branch would jump from 1.69 to 2 N m (it is Model 1's t1).
 
-A drive names its driver's speed law and its load torque law (``driver_law``,
-``torque_law`` of its spec); :data:`SPEED_LAWS` and :data:`TORQUE_LAWS` map the names
-to functions ``law(t, final, t0, t1)`` of the time (s, an array) that are 0 up to
-``t0`` and ``final`` from ``t1`` on.  A new law is one function and one row here;
-tests/belts/test_pulley_laws.py holds every row to that contract.
+A law is one :class:`TimeLaw`: its name, the drive-file keys of its parameters
+(declared with their units and ranges in :data:`ancf.belts.drive_data.LAW_PARAMS`) and
+its function of the time.  A drive names its driver's speed law and its load torque law
+(``driver_law``, ``torque_law`` of its spec); :data:`SPEED_LAWS` and :data:`TORQUE_LAWS`
+hold the laws ``law(t, final, t0, t1)`` of the time (s, an array) that are 0 up to
+``t0`` and ``final`` from ``t1`` on, and a drive file's pulleys may name those and the
+laws of :data:`FILE_SPEED_LAWS` and :data:`FILE_TORQUE_LAWS` (a table, a constant).  A
+new law is one function and one TimeLaw here; tests/belts/test_pulley_laws.py holds
+every law of SPEED_LAWS and TORQUE_LAWS to that contract.
 """
 from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
@@ -52,10 +59,54 @@ def cosine_step(t, final: float, t0: float, t1: float) -> np.ndarray:
     return np.where(t <= t0, 0.0, np.where(t < t1, step, final))
 
 
-#: driver speed laws, name -> omega(t, omega_final, t0, t1), rad/s
-SPEED_LAWS = {"ramp": driver_omega}
-#: load torque laws, name -> T_a(t, Ta_max, t0, t1), N m
-TORQUE_LAWS = {"cosine-ramp": opposing_torque, "cosine-step": cosine_step}
+def tabulated(t, rows) -> np.ndarray:
+    """The table ``rows`` ([[t, value], ...], t increasing) at t (s), interpolated
+    linearly and held beyond its ends."""
+    ts, ys = np.array(rows).T
+    return np.interp(np.asarray(t, dtype=float), ts, ys)
+
+
+def constant(t, value: float) -> np.ndarray:
+    """``value`` at every t."""
+    return np.full(np.shape(t), value)
+
+
+@dataclass(frozen=True, kw_only=True)
+class TimeLaw:
+    """A pulley law of the time: ``name``, ``keys`` the drive-file keys of its parameters
+    in the order ``value(t, *parameters)`` takes them (t in s, an array)."""
+
+    name: str
+    keys: tuple[str, ...]
+    value: Callable
+
+    def __call__(self, t, *parameters) -> np.ndarray:
+        return self.value(t, *parameters)
+
+    def of(self, params: dict) -> Callable:
+        """The law as a function of t alone, its parameters taken by key from ``params``
+        (a pulley's resolved keys)."""
+        args = tuple(params[k] for k in self.keys)
+        return lambda t: self.value(t, *args)
+
+
+def _by_name(*laws) -> dict:
+    return {law.name: law for law in laws}
+
+
+#: driver speed laws by name: omega(t, omega_final, t0, t1), rad/s
+SPEED_LAWS = _by_name(TimeLaw(name="ramp", keys=("omega_final", "t0", "t1"), value=driver_omega))
+#: load torque laws by name: T_a(t, Ta_max, t0, t1), N m
+TORQUE_LAWS = _by_name(
+    TimeLaw(name="cosine-ramp", keys=("load_torque", "t0", "t1"), value=opposing_torque),
+    TimeLaw(name="cosine-step", keys=("load_torque", "t0", "t1"), value=cosine_step))
+#: the speed laws a drive file's prescribed pulley may name (``speed``)
+FILE_SPEED_LAWS = {**SPEED_LAWS, **_by_name(
+    TimeLaw(name="table", keys=("speed_table",), value=tabulated))}
+#: the load torque laws a drive file's driven pulley may name (``load``)
+FILE_TORQUE_LAWS = {**TORQUE_LAWS, **_by_name(
+    TimeLaw(name="constant", keys=("load_torque",), value=constant),
+    TimeLaw(name="table", keys=("load_table",), value=tabulated))}
 
 
 def law(table: dict, name: str, field: str):

@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ancf.belts.drive_data import DriveDescription, element_modulus, load_law
+from ancf.belts.drive_data import DriveDescription, element_modulus, time_law
 from ancf.belts.drive_steady import steady_reference
 from ancf.checks.belt2d import Check
 from ancf.common.paths import REPO
@@ -344,7 +344,7 @@ def compare(results: dict, desc: DriveDescription, stored: Stored) -> list[Check
     omega = window_mean(t, cur.omega_driven, window)
     torque = window_mean(t, cur.driver_torque, window)
     R = dn.radius + desc.belt["contact_offset"]
-    resisting = float(window_mean(t, load_law(dn)(t), window)) + dn.params["damping"] * omega
+    resisting = float(window_mean(t, time_law(dn)(t), window)) + dn.params["damping"] * omega
     along = _periodic(cur.sigma, cur.axial_force, stored.s_force, stored.length)
     rms = float(np.sqrt(np.mean((along - stored.axial_force) ** 2)))
     steady = {(q["from"], q["to"]): q["tension_N"] for q in steady_reference(desc)["spans"]}

@@ -11,6 +11,7 @@ import json
 import numpy as np
 import pytest
 
+from ancf.belts.arm2d import COORD
 from ancf.belts.drive_file import load
 from ancf.belts.drive_model import build
 from ancf.belts.forces import evaluate
@@ -178,7 +179,7 @@ def test_tensioner_jacobian_matches_central_differences(by, rtol):
     without the dodot/dpsi term the x rows and column are off by 2e-6)."""
     drive, kd, laws, x, v = _serpentine_state()
     n, k = drive.n, drive.k
-    arm, ja = int(drive.rig.arms[0, 1]), n + k - 1
+    arm, ja = int(drive.rig.arms[0, COORD]), n + k - 1
     D = _jacobian(drive, kd, laws, x, v, *((1.0, 0.0) if by == "x" else (0.0, 1.0)))
     FD = np.zeros_like(D)
     for c in range(n + k):

@@ -90,10 +90,10 @@ def test_thread_example_has_the_benchmark_numbers():
     assert d.belt["alpha2"] * d.belt["E"] * b * h**3 / 12 == pytest.approx(4e-3 / 3, rel=1e-14)
     t = np.array([0.0, 0.05, 0.3, 0.6, 0.9, 1.0, 1.2, 1.3, 1.5, 2.0])
     omega = np.where(t < 0.05, 0.0, np.where(t < 0.6, 12 * (t - 0.05) / 0.55, 12.0))
-    assert dd.omega_law(driver)(t) == pytest.approx(omega, abs=1e-13)
+    assert dd.time_law(driver)(t) == pytest.approx(omega, abs=1e-13)
     step = 25 * (0.5 - 0.5 * np.cos(2 * np.pi * (t - 1)))
     tau = np.where(t < 1, 0.0, np.where(t < 1.5, step, 25))
-    assert dd.load_law(driven)(t) == pytest.approx(tau, abs=1e-12)
+    assert dd.time_law(driven)(t) == pytest.approx(tau, abs=1e-12)
     assert d.gravity == (0.0, -9.81) and driven.params["damping"] == 2.0
     # the bristle per unit length: 5e9 N/m^3 x b, and 10 sqrt(1e8 N/m^3 b rho A) (the stored
     # base solution's per-segment values over its segment 0.4 pi / 960 m)
@@ -162,8 +162,8 @@ def test_tables_and_constants_become_laws_of_time():
     data["pulleys"][0].update(speed="table", speed_table=[[0.0, 0.0], [0.5, 10.0], [1.0, 10.0]])
     d = describe(data)
     t = np.array([0.0, 0.25, 0.5, 2.0])
-    assert dd.omega_law(d.pulleys[0])(t) == pytest.approx([0.0, 5.0, 10.0, 10.0], abs=1e-14)
-    assert dd.load_law(d.pulleys[1])(t) == pytest.approx([3.0] * 4, abs=0)
+    assert dd.time_law(d.pulleys[0])(t) == pytest.approx([0.0, 5.0, 10.0, 10.0], abs=1e-14)
+    assert dd.time_law(d.pulleys[1])(t) == pytest.approx([3.0] * 4, abs=0)
 
 
 # ------------------------------------------------------------------ overrides

@@ -43,3 +43,15 @@ def test_the_drives_use_the_laws_their_spec_names(module, drive):
     assert built.torque_law is pulleys.TORQUE_LAWS[spec.torque_law]
     with pytest.raises(ValueError, match="torque_law = 'nope'"):
         cls(dataclasses.replace(spec, torque_law="nope"))
+
+
+def test_every_time_law_declares_its_drive_file_keys():
+    """A law's keys are drive-file keys (ancf.belts.drive_data.TIME_KEYS); a role's time
+    law key chooses among its laws."""
+    from ancf.belts import drive_data as dd
+    for table in (pulleys.FILE_SPEED_LAWS, pulleys.FILE_TORQUE_LAWS):
+        for name, law in table.items():
+            assert law.name == name and set(law.keys) <= set(dd.TIME_KEYS)
+    for role in dd.ROLES.values():
+        if role.law_key:
+            assert dd.LAW_PARAMS[role.law_key].choices == tuple(role.laws)
