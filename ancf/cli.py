@@ -328,8 +328,9 @@ def _dispatch(args) -> int:
         if args.cmd == "run":  # this scene's modules only: no sympy, pandas, dask or matplotlib
             from ancf.common.process_start import numba_without_yaml
             with numba_without_yaml():  # numba loads with the scene's modules
-                from ancf.scenes import MODULES, scene
-                if args.name not in MODULES:
+                from ancf.scenes import module_of, scene
+                if module_of(args.name) is None:
+                    from ancf.scenes import MODULES
                     raise InputError(f"run: unknown name {args.name!r}; allowed: "
                                      f"{', '.join(MODULES)}")
                 sc = scene(args.name)

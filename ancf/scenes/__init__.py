@@ -1,38 +1,56 @@
 """Scenes: one declarative scene per paper example, each in one file on the scene API
-(``base``: ``Scene``, ``SceneResult``); ``analytic`` exposes the references of
-``analytic/`` the same way (``ancf analytic NAME``); ``accuracy`` the per-scene
+(``base``: ``Scene``, ``SceneResult``, result keys) with its references, errors and
+grids (``spec``: ``SceneSpec``, ``Reference``); ``analytic/`` exposes the references of
+``analytic/`` the same way, one file each (``ancf analytic NAME``); ``accuracy`` the per-scene
 accuracy warnings and ``sense`` the physical-sense checks (issue 22); ``beam_static``, ``beam_dynamic`` and ``belt_common`` the builders
 the scenes share; ``beam3d_published`` the published data of the 3D beam benchmarks
 (``princeton-beam``, ``beam3d-bending``); ``frames`` the deformed geometry of a finished
 run per output step and ``vtk`` its ParaView output (``--vtk``); ``modes`` the natural
 frequencies and mode shapes of the static scenes (``ancf modes NAME``).
 
-``SCENES`` is built on first use, so that importing ``ancf.scenes.base`` loads no
-scene, solver or element; :func:`scene` loads one scene's module only (``ancf run
-NAME`` imports the kernels of that scene and no other); :data:`MODULES` names the
-module of each scene, in the order of ``SCENES``.
+A scene is one module ``ancf/scenes/<name with _ for ->.py`` that declares ``SCENE =
+Scene(...)`` and its place in the scene list, ``ORDER = <int>`` (``ancf scenes``,
+``SCENES``, ``reports/schemas.md``); its results, references, errors and grids are
+declared in the same file (:mod:`ancf.scenes.base`, :mod:`ancf.scenes.spec`), and the
+study layer collects them from ``SCENES``.  Adding a scene is adding its file.
+
+``SCENES`` and :data:`MODULES` are built on first use, so that importing
+``ancf.scenes.base`` loads no scene, solver or element; :data:`MODULES` names the module
+of each scene, in the order of ``SCENES``, from a listing of this folder's files that
+declare an ``ORDER`` (no scene imported); :func:`scene` loads one scene's module only
+(``ancf run NAME`` imports the kernels of that scene and no other, and reads no other
+scene's file).
 The package is callable: ``ancf.scenes()`` is :func:`catalogue`, the Python API's
 listing of the scenes and references.
 """
 from __future__ import annotations
 
 import importlib
+import re
 import sys
 import types
+from pathlib import Path
 
-#: scene name -> its module below ancf.scenes (the order of SCENES)
-MODULES = {"simply-supported": "simply_supported", "cantilever": "cantilever",
-           "axial-bar": "axial_bar", "pendulum": "pendulum", "spinning-beam": "spinning_beam",
-           "belt-free-static": "belt_free_static", "belt2d": "belt2d",
-           "plate-square": "plate_square", "plate-strip": "plate_strip",
-           "beam3d-cantilever": "beam3d_cantilever", "belt3d": "belt3d",
-           "princeton-beam": "princeton_beam", "beam3d-bending": "beam3d_bending",
-           "belt-drive": "belt_drive"}
+#: this folder: the scene modules
+FOLDER = Path(__file__).parent
+
+
+def module_of(name) -> str | None:
+    """The module of the scene called ``name``: the one named after it (``-`` as ``_``)
+    if that declares an ``ORDER``, else None; reads that file only."""
+    module = name.replace("-", "_") if isinstance(name, str) else ""
+    path = FOLDER / f"{module}.py"
+    if not module.isidentifier() or "_" in name or not path.is_file():
+        return None
+    return module if re.search(r"^ORDER = \d+", path.read_text(), flags=re.M) else None
 
 
 def scene(name: str):
     """The Scene called ``name``, importing its module only (KeyError if unknown)."""
-    return importlib.import_module(f"ancf.scenes.{MODULES[name]}").SCENE
+    module = module_of(name)
+    if module is None:
+        raise KeyError(name)
+    return importlib.import_module(f"ancf.scenes.{module}").SCENE
 
 
 def catalogue() -> list[dict]:
@@ -63,10 +81,13 @@ sys.modules[__name__].__class__ = _CallablePackage
 
 
 def __getattr__(name):
-    if name == "SCENES" and "SCENES" in globals():
-        return globals()["SCENES"]
-    if name != "SCENES":
+    if name not in ("SCENES", "MODULES"):
         raise AttributeError(name)
-    scenes = {n: scene(n) for n in MODULES}
-    globals()["SCENES"] = scenes
-    return scenes
+    if name == "MODULES":
+        #: scene name -> its module below ancf.scenes (the order of SCENES)
+        from ancf.scenes.base import declared
+        value = {module.replace("_", "-"): module for module in declared(FOLDER)}
+    else:
+        value = {n: scene(n) for n in __getattr__("MODULES")}
+    globals()[name] = value
+    return value

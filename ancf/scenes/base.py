@@ -16,11 +16,20 @@ A static scene that ``ancf modes`` serves (:mod:`ancf.scenes.modes`) also declar
 ``modal``: ``params -> ModalModel``, its model with a density, and ``modal_params``, the
 parameters ``ancf modes`` adds to the scene's own (the density, where the static run
 needs none: :data:`STEEL_DENSITY`).
+
+A scene also declares its result keys (``results``: :func:`field` per key, the JSON
+schema of :mod:`ancf.study.schemas` is built from them) and what sweeps measure it against
+(``study``: a function returning its :class:`ancf.scenes.spec.SceneSpec`, imported only
+when called, so that ``ancf run`` loads no study machinery; ``frequency_study`` the same
+for its natural frequencies).
 """
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+import dataclasses
+import re
+from dataclasses import dataclass
+from pathlib import Path
 from typing import Callable, NamedTuple
 
 from ancf.common.compile_time import compile_cpu
@@ -35,13 +44,85 @@ STEEL_DENSITY = Param("rho", 7850.0, float, "kg/m^3",
                       lo=0, lo_open=True)
 
 
+def declared(folder: Path, constant: str = "ORDER") -> dict[str, int]:
+    """{module: place} of the modules in ``folder`` that declare their place in a list
+    (``ORDER = <int>``, or another ``constant``, at the start of a line), in that order;
+    read, not imported."""
+    found = {}
+    for path in folder.glob("*.py"):
+        m = re.search(rf"^{constant} = (\d+)", path.read_text(), flags=re.M)
+        if m:
+            found[path.stem] = int(m.group(1))
+    return dict(sorted(found.items(), key=lambda item: item[1]))
+
+
+NUM, INT, STR, BOOL = "number", "integer", "string", "boolean"
+
+
+class ReferenceFailed(RuntimeError):
+    """The reference could not be computed (message says why)."""
+
+
+def field(kind: str, doc: str, nullable: bool = False, required: bool = True,
+          items: str | None = None, keys: dict | None = None) -> dict:
+    """Declaration of one result key (``items``: the element type of an array; ``keys``:
+    the declarations of an object's keys)."""
+    return {"kind": kind, "doc": doc, "nullable": nullable, "required": required,
+            "items": items, "keys": keys}
+
+
+def series(doc: str, nullable: bool = False) -> dict:
+    """A sampled time history: an array of numbers (null where not finite; ``nullable``:
+    the whole array null when the run stopped)."""
+    return field("array", doc, nullable=nullable, items=NUM)
+
+
+def nullable(doc: str) -> dict:
+    """A number, null when the run did not converge."""
+    return field(NUM, doc, nullable=True)
+
+
+#: the result keys of every static solve (Newton over load steps)
+STATIC_RESULTS = {
+    "newton_iterations": field(INT, "Newton iterations over all load steps"),
+    "load_steps_taken": field(INT, "converged load steps"),
+    "load_factor": field(NUM, "load factor reached (1 when converged)"),
+    "tangent_evaluations": field(INT, "tangent-stiffness evaluations", required=False),
+    "factorizations": field(INT, "factorisations of the tangent", required=False),
+    "negative_tangent_eigenvalues": field(
+        INT, "negative eigenvalues of the reduced tangent at the solution (absent when Newton "
+             "stopped; null when the model is too large for the dense check)",
+        nullable=True, required=False),
+    "zero_tangent_eigenvalues": field(INT, "zero eigenvalues of the reduced tangent",
+                                      nullable=True, required=False),
+    "lowest_tangent_eigenvalue_rel": field(NUM, "lowest eigenvalue / largest |eigenvalue|",
+                                           nullable=True, required=False),
+}
+
+#: the result keys of every time integration
+DYNAMIC_RESULTS = {
+    "times": series("sample times, s"),
+    "integrator": field(STR, "time integrator used"),
+    "steps": field(INT, "accepted time steps"),
+    "nfev": field(INT, "force evaluations"),
+    "njev": field(INT, "Jacobian (tangent) evaluations"),
+    "nlu": field(INT, "LU factorisations"),
+    "newton_iterations": field(INT, "Newton iterations (implicit integrators)"),
+    "rejected_steps": field(INT, "rejected time steps"),
+    "integration_cpu_s": field(NUM, "CPU time of the integration, s"),
+    "constraint_violation_m": field(NUM, "largest constraint violation, m", nullable=True),
+    "samples": field(INT, "number of samples"),
+    "t_reached": field(NUM, "last time reached, s"),
+}
+
+
 @dataclass
 class SceneResult:
     converged: bool
     message: str
     results: dict
-    extra: dict = field(default_factory=dict)  # arrays etc. for reports, not in the JSON
-    warnings: list = field(default_factory=list)  # accuracy diagnoses, one line each
+    extra: dict = dataclasses.field(default_factory=dict)  # arrays etc. for reports, not in the JSON
+    warnings: list = dataclasses.field(default_factory=list)  # accuracy diagnoses, one line each
 
 
 class Equilibrium(NamedTuple):
@@ -78,13 +159,18 @@ class Scene:
     params: tuple
     run: Callable[[dict], SceneResult]
     check: Callable[[dict], None] | None = None  # cross-field validation
-    # Optional declarations for sweeps / recommendations (ancf.study.references): the
+    # Optional declarations for sweeps / recommendations of a scene without ``study``: the
     # parameters that choose the model (the rest define the problem), the physics the
-    # scene needs (ancf.study.references.PHYSICS) and the name of its reference.  Scenes that
-    # have an entry in ancf.study.references.SPECS need none of them.
+    # scene needs (ancf.scenes.spec.PHYSICS) and the name of its reference.
     knobs: tuple = ()
     needs: tuple = ()
     reference: str | None = None
+    # result key -> field(...) declaration: the JSON schema of results (ancf.study.schemas)
+    results: dict = dataclasses.field(default_factory=dict)
+    # () -> ancf.scenes.spec.SceneSpec: reference, error, grids (None: a self-reference
+    # from knobs / needs); frequency_study the same for its frequencies (ancf modes)
+    study: Callable[[], object] | None = None
+    frequency_study: Callable[[], object] | None = None
     # accuracy checks of a finished run: (params, result) -> list of one-line warnings
     warn: Callable[[dict, SceneResult], list] | None = None
     # ancf modes: params -> ModalModel (None: the scene has no modes), and the parameters

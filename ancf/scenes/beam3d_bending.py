@@ -11,7 +11,8 @@ reports/beam3d_benchmarks.md).  Results as ``beam3d-cantilever``: the tip positi
 from __future__ import annotations
 
 from ancf.scenes import beam3d_cantilever as b3
-from ancf.scenes.base import Scene
+from ancf.scenes import beam3d_published as pub
+from ancf.scenes.base import STATIC_RESULTS, Scene, nullable
 from ancf.scenes.beam3d_published import GENERAL_BENDING, GENERAL_BENDING_KS_TORSION
 
 _P = GENERAL_BENDING
@@ -31,8 +32,48 @@ PRESETS = {
     "My": (_P["My"], "tip moment about the global y axis (fixed direction; published 2e6)"),
 }
 
+def _general_bending(p):
+    """Nachbagauer et al. 2013, Table 4, ANSYS: the tip position (it moves to -x, -y, -z)."""
+    pub.check_published(p, {**pub.GENERAL_BENDING, "Mz": 0.0, "F": 0.0},
+                       "3D general bending (Nachbagauer et al. 2013, Table 4)")
+    ux, uy, uz = pub.GENERAL_BENDING_TABLE_4[pub.GENERAL_BENDING_REFERENCE][1]
+    return {"tip_x": p["L"] - ux, "tip_y": -uy, "tip_z": -uz}
+
+
+def _displacement_error(res, ref, p):
+    """Largest relative error of the three tip displacements u = tip - (L, 0, 0)."""
+    return max(abs((res[k] - ref[k]) / (ref[k] - o))
+               for k, o in (("tip_x", p["L"]), ("tip_y", 0.0), ("tip_z", 0.0)))
+
+
+RESULTS = {**STATIC_RESULTS, "tip_x": nullable("tip x, m (u_x = tip_x - L)"),
+           "tip_y": nullable("tip y, m"), "tip_z": nullable("tip z, m")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import STATIC_KNOBS, Reference, SceneSpec, relative
+    what = "largest relative error of the tip displacements u_x, u_y, u_z"
+    measure = "largest relative tip-displacement error"
+    refs = {"published": Reference(
+        "published", "published",
+        "Nachbagauer et al. 2013, Table 4, ANSYS (40 elements), as Exudyn's "
+        f"TestModels/ANCFBeamTest.py lists it; error = {what}", _general_bending,
+        _displacement_error, measure=measure),
+        "self": b3.self_study("beam3d-bending", ("tip_x", "tip_y", "tip_z"), _displacement_error, what,
+                         measure)}
+    return SceneSpec("beam3d-bending", STATIC_KNOBS, frozenset({"bending", "large-rotation",
+                                                                 "3D"}),
+                     refs, "published", report_grids=b3.PUBLISHED_GRIDS,
+                     recommend_grids=b3.PUBLISHED_GRIDS,
+                     notes="3D general bending (Mx = 0.5e6, My = 2e6 N m) against ANSYS.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 130
 SCENE = Scene(
     "beam3d-bending",
     "3D general bending (Nachbagauer et al. 2013, Table 4): the cantilever under tip "
     "moments about x (torsion) and y.",
-    b3.params(PRESETS), b3.run, b3.check, warn=b3.warn)
+    b3.params(PRESETS), b3.run, b3.check, warn=b3.warn,
+    results=RESULTS, study=study)

@@ -13,6 +13,7 @@ Results ``tip_x``, ``tip_y``, ``tip_z``: the tip node's position.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 import numpy as np
@@ -22,8 +23,8 @@ from ancf.models import beam3d
 from ancf.scenes import beam_static as bs
 from ancf.scenes import sense
 from ancf.common.params import InputError, Param
-from ancf.scenes.base import STEEL_DENSITY, Scene
-from ancf.scenes.cantilever import cantilever_params
+from ancf.scenes.base import STATIC_RESULTS, STEEL_DENSITY, ReferenceFailed, Scene, nullable
+from ancf.scenes.cantilever import cantilever_params, reissner_tip
 
 
 def params(presets: dict | None = None) -> tuple:
@@ -109,7 +110,71 @@ def modal(p):
     return bs.modal(p, *setup(p))
 
 
+def _reissner_3d(p):
+    """The Reissner rod in the load plane (h = b, or the load along a principal axis)."""
+    if any(p.get(f"M{c}", 0.0) for c in "xyz"):
+        raise ReferenceFailed("Reissner reference: a tip force only (Mx = My = Mz = 0)")
+    a = math.radians(p["load_angle_deg"])
+    c, s = math.cos(a), math.sin(a)
+    if abs(p["h"] - p["b"]) > 1e-12 * p["h"] and min(abs(c), abs(s)) > 1e-12:
+        raise ReferenceFailed("Reissner reference: a load off the principal axes of a "
+                              "non-square section bends the beam out of the load plane")
+    h, b = (p["h"], p["b"]) if abs(c) >= abs(s) else (p["b"], p["h"])
+    ref = reissner_tip({**p, "h": h, "b": b})
+    return {"tip_x": ref["tip_x"], "tip_y": ref["tip_y"] * c, "tip_z": ref["tip_y"] * s}
+
+
+def _tip3_error(res, ref, p):
+    """|tip - tip_ref| / |tip_ref - (L, 0, 0)|."""
+    d = math.dist((ref["tip_x"], ref["tip_y"], ref["tip_z"]), (p["L"], 0.0, 0.0))
+    return math.dist((res["tip_x"], res["tip_y"], res["tip_z"]),
+                     (ref["tip_x"], ref["tip_y"], ref["tip_z"])) / d
+
+
+#: the grids of the 3D beam benchmarks (princeton-beam, beam3d-bending)
+PUBLISHED_GRIDS = (
+    {"element": ["linear3d"], "integration": ["thesis", "exact", "report-fix"],
+     "n_elements": [2, 4, 8, 16, 32, 64], "rtol": [1e-8]},
+    {"element": ["belt3d"], "n_elements": [2, 4, 8, 16, 32], "rtol": [1e-8]})
+
+
+def self_study(scene: str, quantities: tuple, error, what: str, measure: str):
+    """The converged self-reference of the 3D beam benchmarks (linear3d, 256 elements)."""
+    from ancf.scenes.spec import self_reference
+    return self_reference(
+        scene, {"element": "linear3d", "integration": "thesis", "n_elements": 256,
+                "rtol": 1e-10, "load_steps": 10, "max_iterations": 25},
+        quantities, error, "converged self-reference: linear3d, thesis scheme, 256 elements, "
+        f"Newton rtol 1e-10 (cached); error = {what}; measures the discretisation error only",
+        check={"n_elements": 128}, measure=measure)
+
+
+RESULTS = {**STATIC_RESULTS, "tip_x": nullable("tip x, m"), "tip_y": nullable("tip y, m"),
+           "tip_z": nullable("tip z, m")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import STATIC_KNOBS, Reference, SceneSpec, relative
+    refs = {"reissner": Reference(
+        "reissner", "analytic",
+        "geometrically exact Reissner rod in the load plane (`ancf analytic reissner`; a square "
+        "section or a load along a principal axis); error = |tip − tip_ref| / |tip_ref − (L, 0, "
+        "0)|", _reissner_3d, _tip3_error, measure="relative tip-position error")}
+    grid = ({"element": ["linear3d"], "integration": ["thesis"], "n_elements": [1, 2, 4, 8, 16],
+             "rtol": [1e-8]},
+            {"element": ["belt3d"], "n_elements": [1, 2, 4, 8, 16], "rtol": [1e-8]})
+    return SceneSpec("beam3d-cantilever", STATIC_KNOBS,
+                     frozenset({"axial", "bending", "shear", "large-rotation", "3D"}), refs,
+                     "reissner", report_grids=grid, recommend_grids=grid,
+                     notes="Model 1 cantilever with the 3D linear element and the 3D belt "
+                           "element (alpha1 = alpha2 = 1) against the Reissner rod.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 100
 SCENE = Scene(
     "beam3d-cantilever",
     "The cantilever with a 3D beam element, tip force at an angle in the section plane.",
-    params(), run, check, warn=warn, modal=modal, modal_params=(STEEL_DENSITY,))
+    params(), run, check, warn=warn, modal=modal, modal_params=(STEEL_DENSITY,),
+    results=RESULTS, study=study)

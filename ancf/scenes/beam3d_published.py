@@ -27,6 +27,10 @@ the mirror image).  Sections: ``h`` along y, ``b`` along z.
 """
 from __future__ import annotations
 
+import math
+
+from ancf.scenes.base import ReferenceFailed
+
 #: Nachbagauer et al. 2013, 3D general bending: problem data (m, Pa, N m)
 GENERAL_BENDING = dict(L=2.0, h=0.2, b=0.4, E=2.07e11, nu=0.3, Mx=0.5e6, My=2.0e6)
 #: its torsion correction factor (J = ks1 (I_y + I_z)) and shear correction factors y, z
@@ -62,3 +66,10 @@ PRINCETON_ANSYS = {
                      (0.0, 6.270699533e-2, 0.113752002, 0.153554457, 0.179978534,
                       0.192972233, 0.197669499))}}
 PRINCETON_REFERENCE = "beam"
+
+
+def check_published(p: dict, data: dict, what: str) -> None:
+    """ReferenceFailed unless the problem parameters of p are the published ``data``."""
+    for k, v in data.items():
+        if not math.isclose(p[k], v, rel_tol=1e-12, abs_tol=0.0):
+            raise ReferenceFailed(f"{what}: published for {k} = {v:g} only (got {p[k]:g})")

@@ -135,3 +135,33 @@ def modal(p: dict, mesh, q0, assembly, elim: Elimination, Qk, points=None,
 
     return ModalModel(assembly, pattern, q0, equilibrium,
                       points or centreline(mesh), sampling, mesh)
+
+
+#: the meshes of the beams' frequency sweeps
+FREQUENCY_MESHES = (2, 4, 8, 16, 32, 64, 128)
+
+
+def _timoshenko_modes(support: str):
+    def values(p):
+        from analytic import beam_modes
+        return {"frequencies_hz": [float(x) for x in beam_modes.timoshenko(
+            support, count=int(p["count"]), L=p["L"], E=p["E"],
+            G=p["E"] / (2.0 * (1.0 + p["nu"])), I=p["b"] * p["h"] ** 3 / 12.0,
+            A=p["b"] * p["h"], rho=p["rho"], ks=p["ks"])]}
+    return values
+
+
+def frequency_study(scene: str, support: str, what: str):
+    """A beam scene's ``--quantity frequency`` spec: its lowest bending frequencies (``ancf
+    modes``) against the Timoshenko beam's, ``support`` as ``analytic.beam_modes`` names it."""
+    from ancf.scenes.spec import (FREQUENCY_ERROR, STATIC_KNOBS, Reference, SceneSpec,
+                                  element_grids, frequency_error)
+    name = "timoshenko-frequencies"
+    refs = {name: Reference(
+        name, "analytic", f"Timoshenko beam frequencies, {what} (`analytic/beam_modes.py`: "
+        f"shear and rotary inertia, frequency equations solved numerically); {FREQUENCY_ERROR}",
+        _timoshenko_modes(support), frequency_error)}
+    grids = element_grids(FREQUENCY_MESHES)
+    return SceneSpec(scene, STATIC_KNOBS, frozenset({"bending", "shear"}), refs, name,
+                     report_grids=grids, recommend_grids=grids, quantity="frequency",
+                     notes=f"The {what} beam's lowest bending frequencies against Timoshenko.")

@@ -28,7 +28,8 @@ from ancf.common.inputs import MAX_STEPS
 from ancf.scenes import belt_common as bc
 from ancf.scenes import sense
 from ancf.common.params import Param
-from ancf.scenes.base import Scene, SceneResult
+from ancf.scenes.base import (DYNAMIC_RESULTS, INT, Scene, SceneResult, field, nullable,
+                              series)
 from ancf.belts.bdf import simulate_bdf
 
 INTEGRATORS = ("generalized-alpha", "bdf")
@@ -195,6 +196,106 @@ def penetration(p: dict, res: SceneResult) -> list:
 
 SCENE = Scene(
     "belt2d",
+BELT_KNOBS = ("n_elements", "gauss_points", "elastic_points", "integrator", "dt", "rho_inf",
+              "newton_tol", "max_steps")
+
+
+BELT_WINDOW = 0.2  # s before t_end over which the driven speed is averaged
+
+
+def _mean_driven(res) -> float:
+    t, w = np.asarray(res["times"], float), np.asarray(res["omega_driven"], float)
+    return float(w[t >= t[-1] - BELT_WINDOW - 1e-12].mean())
+
+
+def _belt_error(res, ref, p):
+    """max of the relative errors of the driven speed averaged over the last BELT_WINDOW
+    seconds and of the tight and slack span tensions averaged over the scene's last 0.1 s
+    (at one instant they carry the phase of the span and pulley oscillations)."""
+    if res.get("tension_tight_mean_N") is None or float(res["times"][-1]) < ref["times"][-1] - 1e-9:
+        return float("nan")
+    errs = [abs(_mean_driven(res) - _mean_driven(ref)) / abs(_mean_driven(ref))]
+    errs += [abs(res[k] - ref[k]) / abs(ref[k])
+             for k in ("tension_tight_mean_N", "tension_slack_mean_N")]
+    return max(errs)
+
+
+#: the belt drive's self-reference (its 80-element check is stored with it)
+BELT_FINE = {"n_elements": 120, "gauss_points": 11, "elastic_points": 5,
+             "integrator": "generalized-alpha", "dt": 1.25e-4, "newton_tol": 1e-10}
+
+
+def _no_slip(p):
+    return {"omega_ratio": p["R1"] / p["R2"]}
+
+
+def _slip_error(res, ref, p):
+    """|omega_ratio_steady - R1/R2| / (R1/R2): the slip of the drive."""
+    return abs(res["omega_ratio_steady"] - ref["omega_ratio"]) / ref["omega_ratio"]
+
+
+RESULTS = {
+    **DYNAMIC_RESULTS,
+    "omega_driver": series("driver angular velocity (Eq. 3.29), rad/s"),
+    "omega_driven": series("driven pulley angular velocity, rad/s"),
+    "omega_ratio_steady": nullable("mean omega_driven / mean omega_driver over the last "
+                                   "0.1 s (null before the driver turns)"),
+    "mid_tight_y_m": series("tight (upper) span: where the belt crosses the span's "
+                            "perpendicular bisector, y, m"),
+    "mid_slack_y_m": series("slack (lower) span: the same, m"),
+    "tension_tight_N": nullable("tight span: mean axial force over its middle third at "
+                                "t_end, N"),
+    "tension_slack_N": nullable("slack span: the same, N"),
+    "tension_tight_mean_N": nullable("tight span tension averaged over the samples of the "
+                                     "last 0.1 s (the instantaneous one carries the span "
+                                     "and pulley oscillations), N"),
+    "tension_slack_mean_N": nullable("slack span: the same, N"),
+    "penetration_max_m": nullable("largest penetration of the belt's centreline sample "
+                                  "points into a pulley at t_end, m"),
+    "contact_dofs": field(INT, "belt coordinates of the elements touching a pulley at t_end",
+                          nullable=True),
+    "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle", nullable=True),
+    "contact_pairs": field(INT, "element-pulley pairs whose Gauss points were evaluated "
+                                "(after the bounding test), summed over force evaluations"),
+    "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
+                                        "(0: start = laid)")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import Reference, SceneSpec, relative, self_reference
+    refs = {"self": self_reference(
+        "belt2d", BELT_FINE, ("times", "omega_driven", "tension_tight_mean_N",
+                              "tension_slack_mean_N"),
+        _belt_error,
+        "converged self-reference: 120 elements, 11 contact points, generalized-α, dt = "
+        "1.25e-4 s, Newton tolerance 1e-10 (cached, with an 80-element run's error against it "
+        "as self_check_error); "
+        f"error = max of the relative errors of the driven speed averaged over the last "
+        f"{BELT_WINDOW:g} s and of the tight and slack span tensions averaged over the last "
+        "0.1 s",
+        check={"n_elements": 80}, knobs=BELT_KNOBS,
+        measure="relative error of driven speed, span tensions"),
+            "no-slip": Reference(
+                "no-slip", "analytic",
+                "the inextensible belt without slip: ω_driven / ω_driver = R1/R2; error = "
+                "|omega_ratio_steady − R1/R2| / (R1/R2), the slip (creep and spin-up lag) "
+                "averaged over the last 0.1 s", _no_slip, _slip_error,
+                measure="slip |ω ratio / (R1/R2) − 1|")}
+    grids = ({"n_elements": [10, 20, 40, 80], "gauss_points": [5, 7, 11],
+              "integrator": ["generalized-alpha"], "dt": [1e-3, 5e-4, 2.5e-4]},
+             {"n_elements": [20], "gauss_points": [7], "integrator": ["generalized-alpha"],
+              "dt": [2.5e-4], "newton_tol": [1e-4, 1e-5]})
+    needs = frozenset({"axial", "bending", "large-rotation", "inertia", "contact"})
+    return SceneSpec("belt2d", BELT_KNOBS, needs, refs, "self", report_grids=grids, recommend_grids=grids, dynamic=True,
+                     provides=bc.BELT_PHYSICS | {"inertia", "contact"},
+                     notes="Two-pulley belt drive (thesis 3.3, Table 3.1, no opposing torque) "
+                           "against a converged self-reference.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 70
     "Two-pulley belt drive: Dufva belt elements, penalty contact with creep-rate friction, "
     "driver ramp Eq. 3.29, driven pulley with inertia and opposing torque (thesis 3.3).",
-    params(), run, check, warn=warn)
+    params(), run, check, warn=warn,
+    results=RESULTS, study=study)

@@ -41,7 +41,8 @@ from ancf.scenes import belt_common as bc
 from ancf.scenes import sense
 from ancf.scenes.belt_common import check_belt_length, check_steps, march_params
 from ancf.common.params import InputError, Param
-from ancf.scenes.base import Scene, SceneResult
+from ancf.scenes.base import (DYNAMIC_RESULTS, INT, NUM, Scene, SceneResult, field, nullable,
+                              series)
 
 #: Table 4.1 (n_elements, E, u0, T_i, bending: section 4.6's text)
 MODELS = {
@@ -221,6 +222,92 @@ def warn(p: dict, res: SceneResult) -> list:
 
 SCENE = Scene(
     "belt3d",
+BELT3D_KNOBS = ("n_elements", "contact_points", "integrator", "dt", "rho_inf", "newton_tol",
+                "max_steps", "strain_measure", "steady_window")
+
+
+def _bechtel(p):
+    """Bechtel's steady belt (analytic.bechtel, inertia included) for the scene's drive."""
+    from analytic import bechtel
+    try:
+        b, top = bechtel.steady({"k": p["E"] * p["h"] * p["width"], "R": p["R"],
+                                 "omega": p["omega_final"], "mu": p["mu"], "T_i": p["T_i"],
+                                 "T_a": p["Ta_max"], "rhoA": p["rho"] * p["h"] * p["width"]})
+    except ValueError as exc:  # Bechtel's names -> the scene's (T_a is Ta_max, omega omega_final)
+        text = str(exc)
+        for theirs, ours in (("T_a = ", "Ta_max = "), ("omega = ", "omega_final = ")):
+            if text.startswith(theirs):
+                text = ours + text[len(theirs):]
+        raise type(exc)(text) from None
+    return bechtel.summary(b, top)
+
+
+def _bechtel_error(res, ref, p):
+    """max relative error of the span membrane tensions against Bechtel's."""
+    tn = res.get("tensions")
+    if not tn:
+        return float("nan")
+    return max(abs(tn["membrane"][s] - ref[f"T_{s}_N"]) / abs(ref[f"T_{s}_N"])
+               for s in ("tight", "slack"))
+
+
+RESULTS = {
+    **DYNAMIC_RESULTS,
+    "omega_driver": series("driver angular velocity (Eq. 3.29), rad/s"),
+    "omega_driven": series("driven pulley angular velocity, rad/s"),
+    "slip_driven": nullable("1 - mean omega_driven / mean omega_driver over the last "
+                            "steady_window (null before the driver turns)"),
+    "T_tight_N": nullable("tight (upper) span: mean tension k eps of strain_measure over its "
+                          "middle third at t_end, along the edge y = 0, N"),
+    "T_slack_N": nullable("slack (lower) span: the same, N"),
+    "v_tight": nullable("tight span: mean belt speed along the tangent at t_end, m/s"),
+    "v_slack": nullable("slack span: the same, m/s"),
+    "tensions": field("object", "span tensions per measure (green, true, almansi: k eps; "
+                      "membrane: the element's own axial force), N", nullable=True,
+                      keys={m: field("object", f"{m}: tight and slack, N",
+                                     keys={"tight": field(NUM, "tight span, N"),
+                                           "slack": field(NUM, "slack span, N")})
+                            for m in ("green", "true", "almansi", "membrane")}),
+    "torque_from_tensions_Nm": nullable("(T_tight - T_slack) R of strain_measure, N m"),
+    "torques_from_tensions_Nm": field("object", "(T_tight - T_slack) R per measure, N m",
+                                      nullable=True,
+                                      keys={m: field(NUM, f"{m}, N m") for m in
+                                            ("green", "true", "almansi", "membrane")}),
+    "torque_from_friction_Nm": nullable("moment of the contact (friction) forces on the "
+                                        "driven pulley at t_end, N m"),
+    "penetration_max_m": nullable("largest penetration of a contact point at t_end, m"),
+    "contact_pairs": field(INT, "element-pulley pairs whose points were evaluated (after the "
+                                "bounding test), summed over force evaluations"),
+    "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
+                                        "(0: start = laid)"),
+    "belt_length_m": field(NUM, "reference (unstretched) belt length used, m"),
+    "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import Reference, SceneSpec, relative
+    refs = {"bechtel": Reference(
+        "bechtel", "analytic",
+        "Bechtel's steady extensible belt with inertia (`ancf analytic bechtel`, k = E h w, "
+        "ρA = ρ h w); error = max relative difference of the span means of the membrane's own "
+        "axial force (results.tensions.membrane) from T_tight, T_slack. It includes the model "
+        "gap (Bechtel: no slip in the stick arcs, uniform span tension; the FE belt is a "
+        "membrane with contact compliance): about 1-3 % for Model 2 at any mesh",
+        _bechtel, _bechtel_error, measure="relative span-tension error")}
+    grids = ({"n_elements": [20, 30, 40], "contact_points": [25, 49, 81],
+              "integrator": ["generalized-alpha"], "dt": [1e-4]},)
+    return SceneSpec("belt3d", BELT3D_KNOBS, frozenset({"axial", "large-rotation", "inertia",
+                                                        "contact"}),
+                     refs, "bechtel", report_grids=grids, recommend_grids=grids, dynamic=True,
+                     provides=frozenset({"axial", "large-rotation", "inertia", "contact"}),
+                     notes="3D belt drive, Model 2 of Table 4.1 (thin plates, bending off), "
+                           "against Bechtel's analytic steady belt.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 110
     "Three-dimensional belt drive of thin ANCF plates on two pulleys, surface penalty contact "
     "with creep-rate friction, Models 1 and 2 of Table 4.1 (thesis 4.6).",
-    params(), run, check, warn=warn)
+    params(), run, check, warn=warn,
+    results=RESULTS, study=study)

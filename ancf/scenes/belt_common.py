@@ -22,6 +22,11 @@ R1, R2, X_CENTRE = 0.08125, 0.08125, 0.191441
 TABLE_SHORTENING = 1.2727 / TwoPulleyPath((-X_CENTRE, 0.0), R1, (X_CENTRE, 0.0), R2).length
 
 
+#: the physics of the Dufva belt element (ancf.scenes.spec.PHYSICS): a planar beam with
+#: extension, bending and shear, large rotations
+BELT_PHYSICS = frozenset({"axial", "bending", "shear", "large-rotation"})
+
+
 def belt_params(n_elements=20, E=1e8, alpha2=0.01, belt_length=None) -> tuple:
     """Belt section, material and element parameters (Table 3.1)."""
     return (

@@ -41,7 +41,8 @@ from ancf.common.params import InputError, Param
 from ancf.common.paths import REPO
 from ancf.scenes import belt_common as bc
 from ancf.scenes import sense
-from ancf.scenes.base import Scene, SceneResult
+from ancf.scenes.base import (DYNAMIC_RESULTS, INT, NUM, STR, ReferenceFailed, Scene, SceneResult,
+                              field, nullable, series)
 
 PROGRESS_STEPS = 20_000  # runs of at least this many steps report progress on a terminal
 DEFAULT_FILE = str(REPO / "examples" / "thesis_table_3_1.toml")
@@ -271,6 +272,115 @@ def steady_reference(p: dict) -> dict:
     return reference(description(p))
 
 
+def _drive_steady(p):
+    try:
+        return steady_reference(p)
+    except (InputError, ValueError) as exc:
+        raise ReferenceFailed(f"steady reference (analytic/belt_steady.py): {exc}") from None
+
+
+def _drive_error(res, ref, p):
+    """max of the span tensions' |T_mean − T_ref| / |T_ref| and the free pulleys'
+    |omega_mean − omega_ref| / |omega_ref| (every pulley but the prescribed and fixed)."""
+    spans = [abs(a["tension_mean_N"] - b["tension_N"]) / abs(b["tension_N"])
+             for a, b in zip(res["spans"], ref["spans"])]
+    speeds = [abs(a["omega_mean"] - b["omega"]) / abs(b["omega"])
+              for a, b in zip(res["pulleys"], ref["pulleys"])
+              if b["law"] not in ("prescribed", "fixed") and b["omega"]]
+    return float(max(spans + speeds))
+
+
+#: the drive file's model parameters (ancf.scenes.belt_drive.MODEL_KEYS)
+DRIVE_KNOBS = ("n_elements", "dt", "gauss_points")
+
+
+#: the model grids per belt element of the file (contact points: Gauss points along a
+#: Dufva element, n x n points over a plate)
+DRIVE_GRIDS = {"dufva2d": ({"n_elements": [30, 45, 60], "gauss_points": [5, 7]},),
+               "plate36": ({"n_elements": [20, 30, 40], "gauss_points": [25, 49]},)}
+
+
+def _drive_grids(params: dict) -> tuple:
+    return DRIVE_GRIDS[description(params).belt["element"]]
+
+
+RESULTS = {
+    **DYNAMIC_RESULTS,
+    "pulleys": field("array", "per pulley, in belt order (null when the run stopped)",
+                     items="object", nullable=True, keys={
+        "name": field(STR, "pulley name"),
+        "omega": series("angular velocity, counter-clockwise positive, rad/s"),
+        "torque_Nm": series("the belt's moment on it (friction), counter-clockwise "
+                            "positive, N m"),
+        "omega_mean": field(NUM, "mean angular velocity over run.steady_window (over every "
+                                 "time step of it), rad/s"),
+        "torque_mean_Nm": field(NUM, "mean of the belt's moment on it over every time "
+                                     "step of run.steady_window, N m"),
+        "slip": field(NUM, "1 - its mean rim speed / the driver's (the first prescribed "
+                           "pulley) over the window")}),
+    "arms": field("array", "per tensioner, in belt order (null when the run stopped)",
+                  items="object", nullable=True, keys={
+        "name": field(STR, "the tensioner pulley's name"),
+        "angle_rad": series("its arm's angle (centre - pivot, counter-clockwise from x), "
+                            "rad"),
+        "angle_mean_rad": field(NUM, "its mean over run.steady_window, rad")}),
+    "spans": field("array", "per span (pulley k to k + 1), in belt order (null when the "
+                   "run stopped)", items="object", nullable=True, keys={
+        "from": field(STR, "pulley the span leaves"), "to": field(STR, "pulley it reaches"),
+        "tension_mean_N": field(NUM, "mean axial force over its middle third, averaged "
+                                     "over the samples of run.steady_window, N"),
+        "tension_N": field(NUM, "the same at t_end, N")}),
+    "belt_s_m": field("array", "belt arc coordinate (reference length from node 0) of "
+                      "the points along the belt (the plate belt: along its edge z = 0), "
+                      "m", nullable=True, items=NUM),
+    "axial_force_N": field("array", "axial force at those points at t_end, N",
+                           nullable=True, items=NUM),
+    "speed_m_s": field("array", "belt speed at those points at t_end, m/s", nullable=True,
+                       items=NUM),
+    "penetration_max_m": nullable("largest penetration of the belt's centreline sample "
+                                  "points (the plate belt: its mid surface's contact "
+                                  "points) into a pulley at t_end, m"),
+    "belt_x_m": field("array", "x of those points at t_end, m", nullable=True, items=NUM),
+    "belt_y_m": field("array", "y of those points at t_end, m", nullable=True, items=NUM),
+    "normal_force_N_m": field("array", "the pulleys' normal force on the belt per unit "
+                              "length at those points at t_end (summed over the pulleys; "
+                              "0 off contact), N/m", nullable=True, items=NUM),
+    "friction_force_N_m": field("array", "the friction force on the belt per unit length "
+                                "along the pulley's counter-clockwise tangent at those "
+                                "points at t_end, summed over the pulleys, N/m", nullable=True,
+                                items=NUM),
+    "total_dofs": field(INT, "belt coordinates plus the free pulleys' angles"),
+    "contact_pairs": field(INT, "element-pulley pairs whose Gauss points were evaluated "
+                                "(after the bounding test), summed over force evaluations"),
+    "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
+                                        "(0: start = laid)")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import Reference, SceneSpec
+    refs = {"steady": Reference(
+        "steady", "analytic",
+        "steady extensible belt on the drive's layout (`analytic/belt_steady.py`: Bechtel's "
+        "string with the centrifugal term around the N pulleys, Coulomb stick and creep arcs, "
+        "the laws' final values); error = max of the spans' |T_mean − T_ref| / |T_ref| (mean "
+        "over run.steady_window and the span's middle third) and the free pulleys' |ω_mean − "
+        "ω_ref| / |ω_ref|. It includes the model gap (creep-rate against Coulomb friction, "
+        "the penalty's penetration: 1-2 % on the shipped examples) and whatever of the "
+        "start-up the window still holds", _drive_steady, _drive_error)}
+    grids = DRIVE_GRIDS["dufva2d"]
+    return SceneSpec("belt-drive", DRIVE_KNOBS, frozenset({"axial", "bending", "inertia",
+                                                          "contact"}),
+                     refs, "steady", report_grids=grids, recommend_grids=grids, dynamic=True,
+                     grids_for=_drive_grids,
+                     provides=frozenset({"axial", "bending", "shear", "large-rotation",
+                                         "inertia", "contact"}),
+                     notes="A drive file (`--set file=PATH`; default the thesis drive) "
+                           "against the steady reference on its layout.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 140
 SCENE = FileScene(
     "belt-drive",
     "A belt drive of any layout from a drive file (--file drive.toml; --set section.key=value): "
@@ -285,4 +395,5 @@ SCENE = FileScene(
      Param("dt", None, float, "s", "time step (the file's run.dt unless given)"),
      Param("gauss_points", None, int, doc="contact points per element (the file's "
            "contact.gauss_points unless given)")),
-    run, warn=warn, swept=False)
+    run, warn=warn, swept=False,
+    results=RESULTS, study=study)

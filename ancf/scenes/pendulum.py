@@ -16,7 +16,7 @@ from ancf.core.forces import Gravity
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
 from ancf.common.params import Param
-from ancf.scenes.base import Scene, SceneResult
+from ancf.scenes.base import DYNAMIC_RESULTS, Scene, SceneResult, nullable, series
 from ancf.core.validity import check_dynamic
 
 
@@ -50,10 +50,78 @@ def run(p: dict) -> SceneResult:
     return check_dynamic(out, asm, q0, res.t, res.q)
 
 
+def _traj_error(res, ref, p):
+    """max over samples of |tip(t) - tip_ref(t)| / L (trajectory error)."""
+    t = np.asarray(res["times"], float)
+    tr = np.asarray(ref["times"], float)
+    if t.size == 0 or t[-1] < tr[-1] - 1e-9:
+        return float("nan")
+    rx = np.interp(t, tr, np.asarray(ref["tip_x"], float))
+    ry = np.interp(t, tr, np.asarray(ref["tip_y"], float))
+    d = np.hypot(np.asarray(res["tip_x"], float) - rx, np.asarray(res["tip_y"], float) - ry)
+    return float(np.max(d) / p["L"])
+
+
+def _dynamic_grids(ns):
+    """Both elements x time integrators x tolerances / step sizes for the dynamic scenes."""
+    grids = []
+    for element in ("linear", "omar-shabana"):
+        grids += [{"element": [element], "integration": ["thesis"], "n_elements": list(ns),
+                   "integrator": ["generalized-alpha"], "dt": [1e-2, 3e-3, 1e-3]},
+                  {"element": [element], "integration": ["thesis"], "n_elements": list(ns),
+                   "integrator": ["rk45", "dop853", "radau", "bdf"], "rtol": [1e-4, 1e-6]}]
+    return tuple(grids)
+
+
+def _rigid_pendulum(p):
+    """The rigid pendulum's tip trajectory (``ancf analytic rigid-pendulum``) at p's L, g, h."""
+    from ancf.scenes.spec import analytic_values
+    return analytic_values("rigid-pendulum", p, ("times", "tip_x", "tip_y"))
+
+
+RESULTS = {
+    **DYNAMIC_RESULTS, "tip_x": series("tip x, m"), "tip_y": series("tip y, m"),
+    "energy_max_deviation_J": nullable("largest |E(t) - E(0)|, J"),
+    "energy_kinetic": series("kinetic energy, J"),
+    "energy_potential": series("gravitational potential energy, J"),
+    "energy_strain": series("strain energy, J"), "energy_total": series("total energy, J")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import DYNAMIC_KNOBS, Reference, SceneSpec, self_reference
+    # The rigid pendulum is 12 % of L away from this soft (E = 2.07e7 Pa) pendulum, so a
+    # 1e-2 question needs a self-reference.  32 elements: 8 -> 16 elements still moves the
+    # tip by 1e-2 L, 16 -> 32 by about 1e-3 L (generalized-alpha, dt = 1e-3 s).
+    fine = {"element": "linear", "integration": "thesis", "n_elements": 32,
+            "integrator": "generalized-alpha", "dt": 1e-3}
+    refs = {
+        "self": self_reference(
+            "pendulum", fine, ("times", "tip_x", "tip_y"), _traj_error,
+            "converged self-reference: 32 linear elements, generalized-α, dt = 1e-3 s (computed "
+            "once, about a minute, then cached); error = max_t |tip(t) − tip_ref(t)| / L",
+            check={"n_elements": 16}, knobs=DYNAMIC_KNOBS, measure="tip-trajectory error max|Δtip| / L"),
+        "rigid-pendulum": Reference(
+            "rigid-pendulum", "analytic",
+            "rigid pendulum (analytic.dynamics_refs); error = max_t |tip(t) − tip_ref(t)| / L; "
+            "includes the flexibility of the beam (E = 2.07e7 Pa), so it is a floor, not a "
+            "discretisation error", _rigid_pendulum, _traj_error,
+            measure="tip-trajectory error max|Δtip| / L"),
+    }
+    return SceneSpec("pendulum", DYNAMIC_KNOBS,
+                     frozenset({"axial", "bending", "large-rotation", "inertia"}), refs, "self",
+                     report_grids=_dynamic_grids((2, 4, 8, 16)),
+                     recommend_grids=_dynamic_grids((2, 4, 8, 16)), dynamic=True,
+                     notes="Flexible pendulum against a converged self-reference.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 40
 SCENE = Scene(
     "pendulum",
     "Flexible pendulum pinned at the origin, released horizontally under gravity (thesis Fig. 2.5).",
     bd.section_params(n_elements=4, E=2.07e7, nu=0.0)
     + bd.dynamic_params(t_end=1.0)
     + (Param("g", 9.81, float, "m/s^2", "gravitational acceleration (-y)", lo=0),),
-    run, bd.check, warn=accuracy.pendulum)
+    run, bd.check, warn=accuracy.pendulum,
+    results=RESULTS, study=study)

@@ -29,7 +29,8 @@ from ancf.core.constraints import Elimination
 from ancf.models.plate import grid_points, simply_supported, simply_supported_model
 from ancf.common.params import InputError, Param
 from ancf.scenes import sense
-from ancf.scenes.base import STEEL_DENSITY, Equilibrium, Scene, SceneResult
+from ancf.scenes.base import (INT, STEEL_DENSITY, Equilibrium, Scene, SceneResult, field,
+                              nullable)
 
 SUPPORTS = Param("supports", "simple", str, doc="edge supports (ancf modes only): 'simple' "
                  "(the static run's) or 'free' (no coordinate fixed: six rigid-body modes)",
@@ -106,8 +107,66 @@ def modal(p: dict):
         q0, False, "a free plate has no static equilibrium under a pressure", 0))
 
 
+PLATE_KNOBS = ("n_elements", "ng")
+
+
+def _navier(p):
+    return {"center_deflection_m": navier_plate.centre_deflection(
+        p["a"], p["a"], p["h"], p["E"], p["nu"], p["p"])[0]}
+
+
+def _navier_modes(p):
+    from analytic import plate_modes
+    return {"frequencies_hz": [float(x) for x in plate_modes.navier_frequencies(
+        p["a"], p["a"], p["h"], p["E"], p["nu"], p["rho"], int(p["count"]))[0]]}
+
+
+RESULTS = {
+    "center_deflection_m": nullable("centre deflection along the pressure (linear solve), m"),
+    "navier_center_deflection_m": nullable("Navier's series at the same parameters, m"),
+    "navier_terms": field(INT, "largest odd index of Navier's series summed"),
+    "relative_error": nullable("center_deflection_m / navier_center_deflection_m - 1"),
+    "tangent_evaluations": field(INT, "tangent-stiffness evaluations (1: a linear solve)"),
+    "factorizations": field(INT, "factorisations of the tangent (1)")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import Reference, SceneSpec, relative
+    refs = {"navier": Reference(
+        "navier", "analytic",
+        "Navier's double series of the simply supported Kirchhoff plate (`ancf analytic "
+        "navier-plate`, truncation below 1e-10); error = |w − w_ref| / |w_ref| of the centre "
+        "deflection", _navier, relative("center_deflection_m"),
+        measure="relative centre-deflection error")}
+    grid = ({"n_elements": [2, 4, 8, 16, 32], "ng": [4]},)
+    return SceneSpec("plate-square", PLATE_KNOBS, frozenset({"bending", "3D"}), refs, "navier",
+                     report_grids=grid, recommend_grids=grid, provides=frozenset({"bending", "3D"}),
+                     notes="Simply supported square plate (linear) against Navier's series.")
+
+
+def frequency_study():
+    """What ``--quantity frequency`` measures: the lowest frequencies against Navier's."""
+    from ancf.scenes.spec import Reference, SceneSpec, FREQUENCY_ERROR, frequency_error
+    name = "navier-frequencies"
+    refs = {name: Reference(
+        name, "analytic", "Navier's frequencies of the simply supported Kirchhoff plate "
+        f"(`analytic/plate_modes.py`); {FREQUENCY_ERROR}", _navier_modes, frequency_error)}
+    grid = ({"n_elements": [2, 4, 6, 8, 12, 16, 24], "ng": [3, 4]},)
+    return SceneSpec("plate-square", PLATE_KNOBS, frozenset({"bending", "3D"}), refs, name,
+                     report_grids=grid, recommend_grids=grid,
+                     provides=frozenset({"bending", "3D"}), quantity="frequency",
+                     notes="The simply supported square plate's lowest frequencies against "
+                           "Navier.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 80
+#: its place among the scenes with a frequency reference (FREQUENCY_SPECS)
+FREQUENCY_ORDER = 30
 SCENE = Scene(
     "plate-square",
     "Simply supported square thin plate under uniform pressure, linear, against Navier.",
     params(), run, check, warn=warn, modal=modal,
-    modal_params=(STEEL_DENSITY, SUPPORTS))
+    modal_params=(STEEL_DENSITY, SUPPORTS),
+    results=RESULTS, study=study, frequency_study=frequency_study)

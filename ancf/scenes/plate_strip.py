@@ -19,11 +19,13 @@ to the Euler-Bernoulli / Reissner rod (reports/elements3d.md).
 """
 from __future__ import annotations
 
+import math
+
 from ancf.scenes import accuracy
 from ancf.models.plate import edge_load, grid_points, strip_model, tip_mean
 from ancf.scenes import beam_static as bs
 from ancf.common.params import Param
-from ancf.scenes.base import STEEL_DENSITY, Scene
+from ancf.scenes.base import STATIC_RESULTS, STEEL_DENSITY, Scene, nullable
 
 
 def params() -> tuple:
@@ -63,7 +65,45 @@ def modal(p):
     return bs.modal(p, m, q0, asm, elim, Qk, grid_points(m), "mid-surface grid")
 
 
+PLATE_STRIP_KNOBS = ("n_elements", "n_width", "ng", "load_steps", "rtol", "max_iterations",
+                     "stability_check")
+
+
+def _strip_tip_error(res, ref, p):
+    """|tip - tip_ref| / |tip_ref - (L, b/2, 0)| over x, y, z."""
+    d = math.dist((ref["tip_x"], ref["tip_y"], ref["tip_z"]), (p["L"], p["b"] / 2, 0.0))
+    return math.dist((res["tip_x"], res["tip_y"], res["tip_z"]),
+                     (ref["tip_x"], ref["tip_y"], ref["tip_z"])) / d
+
+
+RESULTS = {**STATIC_RESULTS, "tip_x": nullable("mean x of the tip-edge nodes, m"),
+           "tip_y": nullable("mean y of the tip-edge nodes (b/2 by symmetry), m"),
+           "tip_z": nullable("mean z of the tip-edge nodes (along the load), m")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import SceneSpec, relative, self_reference
+    refs = {"self": self_reference(
+        "plate-strip", {"n_elements": 64, "n_width": 1, "ng": 4, "rtol": 1e-9, "load_steps": 10,
+                        "max_iterations": 25},
+        ("tip_x", "tip_y", "tip_z"), _strip_tip_error,
+        "converged self-reference: 64 x 1 plate elements, Newton rtol 1e-9 (cached); error = "
+        "|tip − tip_ref| / |tip_ref − (L, b/2, 0)|", check={"n_elements": 32},
+        knobs=PLATE_STRIP_KNOBS, measure="relative tip-position error")}
+    grid = ({"n_elements": [1, 2, 4, 8, 16], "rtol": [1e-8]},)
+    return SceneSpec("plate-strip", PLATE_STRIP_KNOBS,
+                     frozenset({"bending", "large-rotation", "3D"}), refs, "self",
+                     report_grids=grid, recommend_grids=grid,
+                     provides=frozenset({"axial", "bending", "large-rotation", "3D"}),
+                     notes="The Model 1 cantilever as a thin-plate strip against a converged "
+                           "self-reference.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 90
 SCENE = Scene(
     "plate-strip",
     "The cantilever as a clamped thin-plate strip, out-of-plane tip load, large deflection.",
-    params(), run, warn=accuracy.static, modal=modal, modal_params=(STEEL_DENSITY,))
+    params(), run, warn=accuracy.static, modal=modal, modal_params=(STEEL_DENSITY,),
+    results=RESULTS, study=study)

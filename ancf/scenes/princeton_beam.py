@@ -12,9 +12,12 @@ section is several times too stiff in torsion (reports/beam3d_benchmarks.md).  R
 """
 from __future__ import annotations
 
+import math
+
 from ancf.models.beam3d import torsion_factor
 from ancf.scenes import beam3d_cantilever as b3
-from ancf.scenes.base import Scene
+from ancf.scenes import beam3d_published as pub
+from ancf.scenes.base import STATIC_RESULTS, ReferenceFailed, Scene, nullable
 from ancf.scenes.beam3d_published import PRINCETON, PRINCETON_LOADS
 
 _P = PRINCETON
@@ -34,8 +37,59 @@ PRESETS = {
                             "..., 90)"),
 }
 
+def _princeton(p):
+    """The published ANSYS beam tip displacements of the Princeton beam at p's load and
+    angle, as signed tip positions y, z of our load (F (0, cos a, sin a))."""
+    what = "Princeton beam (ANSYS, Obrezkov et al. 2022)"
+    pub.check_published(p, {**pub.PRINCETON, "Mx": 0.0, "My": 0.0, "Mz": 0.0}, what)
+    load = [k for k, f in pub.PRINCETON_LOADS.items() if math.isclose(abs(p["F"]), f,
+                                                                     rel_tol=1e-12)]
+    a = abs(p["load_angle_deg"])
+    at = [i for i, b in enumerate(pub.PRINCETON_ANGLES) if math.isclose(a, b, abs_tol=1e-12)]
+    if not load or not at:
+        raise ReferenceFailed(f"{what}: published for |F| in {sorted(pub.PRINCETON_LOADS.values())} N "
+                              f"and |load_angle_deg| in {list(pub.PRINCETON_ANGLES)} only")
+    uy, uz = (c[at[0]] for c in pub.PRINCETON_ANSYS[load[0]][pub.PRINCETON_REFERENCE])
+    r = math.radians(p["load_angle_deg"])
+    return {"tip_y": math.copysign(uy, p["F"] * math.cos(r)),
+            "tip_z": math.copysign(uz, p["F"] * math.sin(r))}
+
+
+def _yz_error(res, ref, p):
+    """|(y, z) - (y, z)_ref| / |(y, z)_ref| of the tip."""
+    return (math.hypot(res["tip_y"] - ref["tip_y"], res["tip_z"] - ref["tip_z"])
+            / math.hypot(ref["tip_y"], ref["tip_z"]))
+
+
+RESULTS = {**STATIC_RESULTS, "tip_x": nullable("tip x, m"),
+           "tip_y": nullable("tip y, m (u_y = tip_y)"),
+           "tip_z": nullable("tip z, m (u_z = tip_z: the mirror image of the "
+                             "published +z)")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import STATIC_KNOBS, Reference, SceneSpec, relative
+    what = "|(y, z) − (y, z)_ref| / |(y, z)_ref| of the tip"
+    measure = "relative tip-displacement (y, z) error"
+    refs = {"published": Reference(
+        "published", "published",
+        "ANSYS beam elements (Obrezkov et al. 2022, as Exudyn's TestModels/ANCFBeamTest.py "
+        f"lists them; F2, F3 at 0-90° in steps of 15°); error = {what}", _princeton,
+        _yz_error, measure=measure),
+        "self": b3.self_study("princeton-beam", ("tip_x", "tip_y", "tip_z"), _yz_error, what, measure)}
+    return SceneSpec("princeton-beam", STATIC_KNOBS,
+                     frozenset({"bending", "large-rotation", "3D"}), refs, "published",
+                     report_grids=b3.PUBLISHED_GRIDS, recommend_grids=b3.PUBLISHED_GRIDS,
+                     notes="The Princeton beam, F2 at 0° (defaults), against ANSYS beam "
+                           "elements.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 120
 SCENE = Scene(
     "princeton-beam",
     "The Princeton beam: the thin aluminium strip with a tip force at an angle (Dowell et "
     "al.; ANSYS references of Obrezkov et al. 2022).",
-    b3.params(PRESETS), b3.run, b3.check, warn=b3.warn)
+    b3.params(PRESETS), b3.run, b3.check, warn=b3.warn,
+    results=RESULTS, study=study)

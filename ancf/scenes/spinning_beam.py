@@ -33,7 +33,7 @@ from ancf.core.quadrature import gauss01
 from ancf.scenes import beam_dynamic as bd
 from ancf.scenes import beam_static as bs
 from ancf.common.params import InputError, Param
-from ancf.scenes.base import Scene, SceneResult
+from ancf.scenes.base import DYNAMIC_RESULTS, STR, Scene, SceneResult, field, nullable, series
 from ancf.core.validity import check_dynamic
 
 
@@ -139,7 +139,50 @@ def _params():
                      lo=0, lo_open=True)))
 
 
+def _spinning_ref(p):
+    """The steady extension (``ancf analytic spinning-extension``) at p's parameters."""
+    from ancf.scenes.spec import analytic_values
+    return analytic_values("spinning-extension", p, ("axial_extension_m",))
+
+
+RESULTS = {
+    **DYNAMIC_RESULTS, "tip_dx": series("tip minus rigid shadow tip, x, m"),
+    "tip_dy": series("tip minus rigid shadow tip, y, m"),
+    "tip_axial": series("tip deviation along the rotating beam axis, m"),
+    "tip_lateral": series("tip deviation across the rotating beam axis, m"),
+    "hub_angle": series("hub angle, rad"), "extension": series("centreline elongation, m"),
+    "axial_extension_m": nullable("mean elongation over the last mean_window s, m"),
+    "axial_extension_std_m": nullable("its standard deviation, m"),
+    "tip_axial_mean_m": nullable("mean axial tip deviation over the window, m"),
+    "max_abs_tip_lateral_m": nullable("largest |lateral tip deviation|, m"),
+    "frame": field(STR, "frame of the tip_axial / tip_lateral components")}
+
+
+def study():
+    """What sweeps measure this scene against: its references, errors and grids."""
+    from ancf.scenes.spec import DYNAMIC_KNOBS, Reference, SceneSpec, relative
+    refs = {
+        "spinning-extension": Reference(
+            "spinning-extension", "analytic",
+            "steady axial extension of the spinning beam (thesis Eq. 2.36, "
+            "analytic.dynamics_refs); error = |u − u_ref| / |u_ref| of the extension averaged "
+            "over the last mean_window seconds", _spinning_ref, relative("axial_extension_m"),
+            measure="relative axial-extension error"),
+    }
+    grids = ({"element": ["linear"], "integration": ["thesis"], "n_elements": [2, 3, 4, 8],
+              "integrator": ["generalized-alpha"], "dt": [1e-2, 5e-3, 2.5e-3]},
+             {"element": ["omar-shabana"], "integration": ["thesis"], "n_elements": [2, 3, 4],
+              "integrator": ["generalized-alpha"], "dt": [1e-2, 5e-3]})
+    return SceneSpec("spinning-beam", DYNAMIC_KNOBS,
+                     frozenset({"axial", "large-rotation", "inertia"}), refs, "spinning-extension",
+                     report_grids=grids, recommend_grids=grids, dynamic=True,
+                     notes="Spinning beam (thesis Eq. 2.35 spin-up) against the steady extension.")
+
+
+#: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
+ORDER = 50
 SCENE = Scene(
     "spinning-beam",
     "Spin-up of a flexible beam driven at the hub (Wu & Haug; thesis Figs 2.9-2.11).",
-    _params(), run, _check, warn=accuracy.spinning)
+    _params(), run, _check, warn=accuracy.spinning,
+    results=RESULTS, study=study)

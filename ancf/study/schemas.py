@@ -4,13 +4,13 @@ scene with modes, generated from declarations.
 
 The top level is the same for all (``scene``, ``params``, ``converged``, ``message``,
 ``results``, ``cpu_time_s``, ``compile_cpu_s``, ``warnings``); ``params`` follows the scene's parameter
-declarations (:class:`ancf.scenes.base.Param`); ``results`` follows :data:`RESULTS` below
-(:data:`MODES` for ``ancf modes``), the one place where a result key is declared: its JSON
-type, whether it is always present and whether it is ``null`` when the run does not
-converge.  Result keys not declared are
-an error of the schema (``additionalProperties: false``), so a new result key must be
-declared here, which publishes it (``python -m ancf.study.schemas`` writes
-``reports/schemas.md``).  :func:`validate` is a small validator for the subset of JSON
+declarations (:class:`ancf.scenes.base.Param`); ``results`` follows the result keys the scene or reference
+declares in its own file (``results`` of its :class:`~ancf.scenes.base.Scene`, each an
+:func:`ancf.scenes.base.field`: its JSON type, whether it is always present and whether it
+is ``null`` when the run does not converge; :data:`RESULTS` collects them) and
+:data:`MODES` below for ``ancf modes``.  Result keys not declared are an error of the
+schema (``additionalProperties: false``), so a new result key must be declared, which
+publishes it (``python -m ancf.study.schemas`` writes ``reports/schemas.md``).  :func:`validate` is a small validator for the subset of JSON
 Schema used (type, properties, required, additionalProperties, items), so that the suite
 needs no extra dependency.
 """
@@ -20,275 +20,18 @@ import sys
 from pathlib import Path
 
 from ancf.common.paths import REPORTS
+from ancf.scenes.base import BOOL, INT, NUM, STR, field, nullable
 from ancf.solvers.linear import ZERO_EIGENVALUE_REL
 
-NUM, INT, STR, BOOL = "number", "integer", "string", "boolean"
+def __getattr__(name):
+    """``RESULTS``: result keys per scene / analytic reference, as each declares them
+    (``results`` of its :class:`~ancf.scenes.base.Scene`), collected on first use."""
+    if name != "RESULTS":
+        raise AttributeError(name)
+    value = {n: sc.results for n, (_, sc) in registries().items()}
+    globals()["RESULTS"] = value
+    return value
 
-
-def field(kind: str, doc: str, nullable: bool = False, required: bool = True,
-          items: str | None = None, keys: dict | None = None) -> dict:
-    """Declaration of one result key (``items``: the element type of an array; ``keys``:
-    the declarations of an object's keys)."""
-    return {"kind": kind, "doc": doc, "nullable": nullable, "required": required,
-            "items": items, "keys": keys}
-
-
-def series(doc: str, nullable: bool = False) -> dict:
-    """A sampled time history: an array of numbers (null where not finite; ``nullable``:
-    the whole array null when the run stopped)."""
-    return field("array", doc, nullable=nullable, items=NUM)
-
-
-_STATIC = {
-    "newton_iterations": field(INT, "Newton iterations over all load steps"),
-    "load_steps_taken": field(INT, "converged load steps"),
-    "load_factor": field(NUM, "load factor reached (1 when converged)"),
-    "tangent_evaluations": field(INT, "tangent-stiffness evaluations", required=False),
-    "factorizations": field(INT, "factorisations of the tangent", required=False),
-    "negative_tangent_eigenvalues": field(
-        INT, "negative eigenvalues of the reduced tangent at the solution (absent when Newton "
-             "stopped; null when the model is too large for the dense check)",
-        nullable=True, required=False),
-    "zero_tangent_eigenvalues": field(INT, "zero eigenvalues of the reduced tangent",
-                                      nullable=True, required=False),
-    "lowest_tangent_eigenvalue_rel": field(NUM, "lowest eigenvalue / largest |eigenvalue|",
-                                           nullable=True, required=False),
-}
-
-_DYNAMIC = {
-    "times": series("sample times, s"),
-    "integrator": field(STR, "time integrator used"),
-    "steps": field(INT, "accepted time steps"),
-    "nfev": field(INT, "force evaluations"),
-    "njev": field(INT, "Jacobian (tangent) evaluations"),
-    "nlu": field(INT, "LU factorisations"),
-    "newton_iterations": field(INT, "Newton iterations (implicit integrators)"),
-    "rejected_steps": field(INT, "rejected time steps"),
-    "integration_cpu_s": field(NUM, "CPU time of the integration, s"),
-    "constraint_violation_m": field(NUM, "largest constraint violation, m", nullable=True),
-    "samples": field(INT, "number of samples"),
-    "t_reached": field(NUM, "last time reached, s"),
-}
-
-
-def _nullable(doc: str) -> dict:
-    return field(NUM, doc, nullable=True)
-
-
-_BELT_STEADY = {
-    "T_tight_N": _nullable("tight-span tension, N"), "T_slack_N": _nullable("slack-span tension, N"),
-    "v_tight": _nullable("tight-span speed (= omega R of the driver), m/s"),
-    "v_slack": _nullable("slack-span speed (= omega R of the driven pulley), m/s"),
-    "slip_arc_driver_rad": _nullable("slip arc on the driver, rad"),
-    "slip_arc_driven_rad": _nullable("slip arc on the driven pulley, rad"),
-    "omega_ratio": _nullable("omega_driven / omega_driver = v_slack / v_tight"),
-    "max_torque_Nm": _nullable("largest transmissible torque (slip over the whole wrap), N m")}
-
-#: result keys per scene / analytic reference
-RESULTS = {
-    "simply-supported": {**_STATIC, "mid_deflection_m": _nullable("midpoint deflection, m")},
-    "cantilever": {**_STATIC, "tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m")},
-    "axial-bar": {**_STATIC, "elongation_m": _nullable("elongation, m"),
-                  "tip_reaction_y_N": _nullable("transverse reaction at the tip support, N")},
-    "pendulum": {
-        **_DYNAMIC, "tip_x": series("tip x, m"), "tip_y": series("tip y, m"),
-        "energy_max_deviation_J": _nullable("largest |E(t) - E(0)|, J"),
-        "energy_kinetic": series("kinetic energy, J"),
-        "energy_potential": series("gravitational potential energy, J"),
-        "energy_strain": series("strain energy, J"), "energy_total": series("total energy, J")},
-    "spinning-beam": {
-        **_DYNAMIC, "tip_dx": series("tip minus rigid shadow tip, x, m"),
-        "tip_dy": series("tip minus rigid shadow tip, y, m"),
-        "tip_axial": series("tip deviation along the rotating beam axis, m"),
-        "tip_lateral": series("tip deviation across the rotating beam axis, m"),
-        "hub_angle": series("hub angle, rad"), "extension": series("centreline elongation, m"),
-        "axial_extension_m": _nullable("mean elongation over the last mean_window s, m"),
-        "axial_extension_std_m": _nullable("its standard deviation, m"),
-        "tip_axial_mean_m": _nullable("mean axial tip deviation over the window, m"),
-        "max_abs_tip_lateral_m": _nullable("largest |lateral tip deviation|, m"),
-        "frame": field(STR, "frame of the tip_axial / tip_lateral components")},
-    "belt-free-static": {
-        "radius_mean_m": _nullable("mean distance of the centreline from its centroid, m"),
-        "radius_max_dev_m": _nullable("largest deviation of that distance from its mean, m"),
-        "radius_reference_m": field(NUM, "belt_length / (2 pi), the circle's radius, m"),
-        "newton_iterations": field(INT, "Newton iterations"),
-        "residual_initial": field(NUM, "largest generalised force at the wrapped shape, N"),
-        "residual_final": field(NUM, "largest generalised force at the last iterate, N")},
-    "belt2d": {
-        **_DYNAMIC,
-        "omega_driver": series("driver angular velocity (Eq. 3.29), rad/s"),
-        "omega_driven": series("driven pulley angular velocity, rad/s"),
-        "omega_ratio_steady": _nullable("mean omega_driven / mean omega_driver over the last "
-                                        "0.1 s (null before the driver turns)"),
-        "mid_tight_y_m": series("tight (upper) span: where the belt crosses the span's "
-                                "perpendicular bisector, y, m"),
-        "mid_slack_y_m": series("slack (lower) span: the same, m"),
-        "tension_tight_N": _nullable("tight span: mean axial force over its middle third at "
-                                     "t_end, N"),
-        "tension_slack_N": _nullable("slack span: the same, N"),
-        "tension_tight_mean_N": _nullable("tight span tension averaged over the samples of the "
-                                          "last 0.1 s (the instantaneous one carries the span "
-                                          "and pulley oscillations), N"),
-        "tension_slack_mean_N": _nullable("slack span: the same, N"),
-        "penetration_max_m": _nullable("largest penetration of the belt's centreline sample "
-                                       "points into a pulley at t_end, m"),
-        "contact_dofs": field(INT, "belt coordinates of the elements touching a pulley at t_end",
-                              nullable=True),
-        "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle", nullable=True),
-        "contact_pairs": field(INT, "element-pulley pairs whose Gauss points were evaluated "
-                                    "(after the bounding test), summed over force evaluations"),
-        "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
-                                            "(0: start = laid)")},
-    "belt3d": {
-        **_DYNAMIC,
-        "omega_driver": series("driver angular velocity (Eq. 3.29), rad/s"),
-        "omega_driven": series("driven pulley angular velocity, rad/s"),
-        "slip_driven": _nullable("1 - mean omega_driven / mean omega_driver over the last "
-                                 "steady_window (null before the driver turns)"),
-        "T_tight_N": _nullable("tight (upper) span: mean tension k eps of strain_measure over its "
-                               "middle third at t_end, along the edge y = 0, N"),
-        "T_slack_N": _nullable("slack (lower) span: the same, N"),
-        "v_tight": _nullable("tight span: mean belt speed along the tangent at t_end, m/s"),
-        "v_slack": _nullable("slack span: the same, m/s"),
-        "tensions": field("object", "span tensions per measure (green, true, almansi: k eps; "
-                          "membrane: the element's own axial force), N", nullable=True,
-                          keys={m: field("object", f"{m}: tight and slack, N",
-                                         keys={"tight": field(NUM, "tight span, N"),
-                                               "slack": field(NUM, "slack span, N")})
-                                for m in ("green", "true", "almansi", "membrane")}),
-        "torque_from_tensions_Nm": _nullable("(T_tight - T_slack) R of strain_measure, N m"),
-        "torques_from_tensions_Nm": field("object", "(T_tight - T_slack) R per measure, N m",
-                                          nullable=True,
-                                          keys={m: field(NUM, f"{m}, N m") for m in
-                                                ("green", "true", "almansi", "membrane")}),
-        "torque_from_friction_Nm": _nullable("moment of the contact (friction) forces on the "
-                                             "driven pulley at t_end, N m"),
-        "penetration_max_m": _nullable("largest penetration of a contact point at t_end, m"),
-        "contact_pairs": field(INT, "element-pulley pairs whose points were evaluated (after the "
-                                    "bounding test), summed over force evaluations"),
-        "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
-                                            "(0: start = laid)"),
-        "belt_length_m": field(NUM, "reference (unstretched) belt length used, m"),
-        "total_dofs": field(INT, "belt coordinates plus the driven pulley's angle")},
-    "belt-drive": {
-        **_DYNAMIC,
-        "pulleys": field("array", "per pulley, in belt order (null when the run stopped)",
-                         items="object", nullable=True, keys={
-            "name": field(STR, "pulley name"),
-            "omega": series("angular velocity, counter-clockwise positive, rad/s"),
-            "torque_Nm": series("the belt's moment on it (friction), counter-clockwise "
-                                "positive, N m"),
-            "omega_mean": field(NUM, "mean angular velocity over run.steady_window (over every "
-                                     "time step of it), rad/s"),
-            "torque_mean_Nm": field(NUM, "mean of the belt's moment on it over every time "
-                                         "step of run.steady_window, N m"),
-            "slip": field(NUM, "1 - its mean rim speed / the driver's (the first prescribed "
-                               "pulley) over the window")}),
-        "arms": field("array", "per tensioner, in belt order (null when the run stopped)",
-                      items="object", nullable=True, keys={
-            "name": field(STR, "the tensioner pulley's name"),
-            "angle_rad": series("its arm's angle (centre - pivot, counter-clockwise from x), "
-                                "rad"),
-            "angle_mean_rad": field(NUM, "its mean over run.steady_window, rad")}),
-        "spans": field("array", "per span (pulley k to k + 1), in belt order (null when the "
-                       "run stopped)", items="object", nullable=True, keys={
-            "from": field(STR, "pulley the span leaves"), "to": field(STR, "pulley it reaches"),
-            "tension_mean_N": field(NUM, "mean axial force over its middle third, averaged "
-                                         "over the samples of run.steady_window, N"),
-            "tension_N": field(NUM, "the same at t_end, N")}),
-        "belt_s_m": field("array", "belt arc coordinate (reference length from node 0) of "
-                          "the points along the belt (the plate belt: along its edge z = 0), "
-                          "m", nullable=True, items=NUM),
-        "axial_force_N": field("array", "axial force at those points at t_end, N",
-                               nullable=True, items=NUM),
-        "speed_m_s": field("array", "belt speed at those points at t_end, m/s", nullable=True,
-                           items=NUM),
-        "penetration_max_m": _nullable("largest penetration of the belt's centreline sample "
-                                       "points (the plate belt: its mid surface's contact "
-                                       "points) into a pulley at t_end, m"),
-        "belt_x_m": field("array", "x of those points at t_end, m", nullable=True, items=NUM),
-        "belt_y_m": field("array", "y of those points at t_end, m", nullable=True, items=NUM),
-        "normal_force_N_m": field("array", "the pulleys' normal force on the belt per unit "
-                                  "length at those points at t_end (summed over the pulleys; "
-                                  "0 off contact), N/m", nullable=True, items=NUM),
-        "friction_force_N_m": field("array", "the friction force on the belt per unit length "
-                                    "along the pulley's counter-clockwise tangent at those "
-                                    "points at t_end, summed over the pulleys, N/m", nullable=True,
-                                    items=NUM),
-        "total_dofs": field(INT, "belt coordinates plus the free pulleys' angles"),
-        "contact_pairs": field(INT, "element-pulley pairs whose Gauss points were evaluated "
-                                    "(after the bounding test), summed over force evaluations"),
-        "pretension_iterations": field(INT, "Newton iterations of the static pre-tension "
-                                            "(0: start = laid)")},
-    "plate-square": {
-        "center_deflection_m": _nullable("centre deflection along the pressure (linear solve), m"),
-        "navier_center_deflection_m": _nullable("Navier's series at the same parameters, m"),
-        "navier_terms": field(INT, "largest odd index of Navier's series summed"),
-        "relative_error": _nullable("center_deflection_m / navier_center_deflection_m - 1"),
-        "tangent_evaluations": field(INT, "tangent-stiffness evaluations (1: a linear solve)"),
-        "factorizations": field(INT, "factorisations of the tangent (1)")},
-    "plate-strip": {**_STATIC, "tip_x": _nullable("mean x of the tip-edge nodes, m"),
-                    "tip_y": _nullable("mean y of the tip-edge nodes (b/2 by symmetry), m"),
-                    "tip_z": _nullable("mean z of the tip-edge nodes (along the load), m")},
-    "beam3d-cantilever": {**_STATIC, "tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
-                          "tip_z": _nullable("tip z, m")},
-    "princeton-beam": {**_STATIC, "tip_x": _nullable("tip x, m"),
-                       "tip_y": _nullable("tip y, m (u_y = tip_y)"),
-                       "tip_z": _nullable("tip z, m (u_z = tip_z: the mirror image of the "
-                                          "published +z)")},
-    "beam3d-bending": {**_STATIC, "tip_x": _nullable("tip x, m (u_x = tip_x - L)"),
-                       "tip_y": _nullable("tip y, m"), "tip_z": _nullable("tip z, m")},
-    "navier-plate": {"center_deflection_m": _nullable("centre deflection along the pressure, m"),
-                     "terms": field(INT, "largest odd series index summed")},
-    "timoshenko": {"mid_deflection_m": _nullable("midspan deflection, m")},
-    "beam-modes": {
-        "frequencies_hz": field("array", "Timoshenko natural frequencies (both spectra), "
-                                "ascending, Hz", items=NUM),
-        "euler_bernoulli_hz": field("array", "Euler-Bernoulli natural frequencies, ascending, Hz",
-                                    items=NUM),
-        "cutoff_hz": _nullable("the second spectrum's cut-off sqrt(ks G A / (rho I)) / (2 pi), "
-                               "Hz")},
-    "plate-modes": {
-        "frequencies_hz": field("array", "natural frequencies, ascending, Hz", items=NUM),
-        "m": field("array", "half-waves along a of each frequency", items=INT),
-        "n": field("array", "half-waves along b of each frequency", items=INT)},
-    "moving-string": {
-        "frequencies_hz": field("array", "transverse span frequencies n c (1 - v^2/c^2) / (2 L), "
-                                "ascending, Hz", items=NUM),
-        "wave_speed_m_s": _nullable("c = sqrt(T / rho_A), m/s")},
-    "reissner": {"tip_x": _nullable("tip x, m"), "tip_y": _nullable("tip y, m"),
-                 "tip_rotation_rad": _nullable("tip section rotation, rad")},
-    "spinning-extension": {
-        "axial_extension_m": _nullable("steady axial extension (Eq. 2.36), m"),
-        "al": _nullable("the parameter a L of Eq. 2.36"),
-        "axial_extension_thesis_m": _nullable("the same as printed in the thesis, m")},
-    "belt-steady": {
-        "path_length_m": field(NUM, "length of the wrapped path at the tensioner's equilibrium, m"),
-        "L0_m": field(NUM, "stress-free belt length used, m"),
-        "spans": field("array", "per span, in belt order", items="object", keys={
-            "from": field(STR, "pulley the span leaves"), "to": field(STR, "pulley it reaches"),
-            "length_m": field(NUM, "span length (common tangent), m"),
-            "tension_N": field(NUM, "tension T, N"), "speed": field(NUM, "belt speed, m/s")}),
-        "pulleys": field("array", "per pulley, in belt order", items="object", keys={
-            "name": field(STR, "pulley name"), "law": field(STR, "prescribed, driven, idler or "
-                                                            "tensioner"),
-            "wrap_rad": field(NUM, "wrap angle, rad"),
-            "stick_arc_rad": field(NUM, "stick arc (from the entry), rad"),
-            "creep_arc_rad": field(NUM, "creep arc (at the exit), rad"),
-            "omega": field(NUM, "angular speed, positive counter-clockwise, rad/s"),
-            "torque_Nm": field(NUM, "the belt's moment on it along its rotation (the driver's: "
-                                    "minus its driving torque), N m"),
-            "slip": field(NUM, "1 - its rim speed / the driver's"),
-            "arm_angle_rad": _nullable("a tensioner's arm angle at equilibrium, pivot to "
-                                       "centre, counter-clockwise from x, rad (null: no arm)")})},
-    "bechtel": {**_BELT_STEADY, "capstan": field("object", "the same keys with the belt's "
-                                                 "inertia neglected (capstan model)",
-                                                 keys=_BELT_STEADY)},
-    "rigid-pendulum": {"times": series("sample times, s"),
-                       "theta": series("angle, rad (null when the integration failed)", True),
-                       "tip_x": series("tip x, m (null when the integration failed)", True),
-                       "tip_y": series("tip y, m (null when the integration failed)", True)},
-}
 
 _MODES_NULL = "null when no eigenpairs were found"
 #: result keys of ``ancf modes SCENE --json`` (every scene with modes)
@@ -327,7 +70,7 @@ MODES = {
                                  "and the shift-inverted LU or Cholesky", nullable=True),
     "solves": field(INT, "Lanczos steps: solves with the factorisation (dense: 0)",
                     nullable=True),
-    "shift_rad2_s2": _nullable("the shift sigma, below the lowest eigenvalue"),
+    "shift_rad2_s2": nullable("the shift sigma, below the lowest eigenvalue"),
     "sturm_count": field(INT, "eigenvalues below the Sturm check's point, by inertia (between "
                               "the highest reported and the next, or above the next where the "
                               "two are one repeated eigenvalue)", nullable=True),
@@ -420,7 +163,7 @@ def schema(name: str) -> dict:
     command, name, sc = _lookup(name)
     props = {"scene": {"type": STR, "const": name}, "params": _params_schema(sc),
              "converged": {"type": BOOL}, "message": {"type": STR},
-             "results": _result_schema(MODES if command == "modes" else RESULTS[name]), "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
+             "results": _result_schema(MODES if command == "modes" else sc.results), "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
                             "compiling or loading numba kernels"},
              "compile_cpu_s": {"type": NUM, "description": "process CPU seconds spent compiling "
                                "numba kernels or loading them from numba's cache during the run "

@@ -125,7 +125,8 @@ def test_sweeps_and_recommend_vary_the_files_own_element(path, element):
     """``ancf sweep|recommend belt-drive --file F`` vary the contact points the file's element
     takes (a plate: n x n over its surface; Dufva's: Gauss points along it), and every value
     of the grid is one the file accepts."""
-    from ancf.study.references import DRIVE_GRIDS, spec
+    from ancf.scenes.belt_drive import DRIVE_GRIDS
+    from ancf.study.references import spec
     p = SCENES["belt-drive"].resolve({"file": str(path)} if path else {})
     grids = spec("belt-drive").grids(p)
     assert grids == DRIVE_GRIDS[element] == spec("belt-drive").grids(p, "report")
