@@ -194,8 +194,6 @@ def penetration(p: dict, res: SceneResult) -> list:
             "soft for the pre-tension; raise k_p"]
 
 
-SCENE = Scene(
-    "belt2d",
 BELT_KNOBS = ("n_elements", "gauss_points", "elastic_points", "integrator", "dt", "rho_inf",
               "newton_tol", "max_steps")
 
@@ -295,6 +293,8 @@ def study():
 
 #: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
 ORDER = 70
+SCENE = Scene(
+    "belt2d",
     "Two-pulley belt drive: Dufva belt elements, penalty contact with creep-rate friction, "
     "driver ramp Eq. 3.29, driven pulley with inertia and opposing torque (thesis 3.3).",
     params(), run, check, warn=warn,

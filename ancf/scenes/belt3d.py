@@ -220,8 +220,6 @@ def warn(p: dict, res: SceneResult) -> list:
     return out + sense.drift(t[sel], wn, p["steady_window"])
 
 
-SCENE = Scene(
-    "belt3d",
 BELT3D_KNOBS = ("n_elements", "contact_points", "integrator", "dt", "rho_inf", "newton_tol",
                 "max_steps", "strain_measure", "steady_window")
 
@@ -307,6 +305,8 @@ def study():
 
 #: the scene's place in the scene list (ancf.scenes.MODULES, ancf scenes, reports/schemas.md)
 ORDER = 110
+SCENE = Scene(
+    "belt3d",
     "Three-dimensional belt drive of thin ANCF plates on two pulleys, surface penalty contact "
     "with creep-rate friction, Models 1 and 2 of Table 4.1 (thesis 4.6).",
     params(), run, check, warn=warn,
