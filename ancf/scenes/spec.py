@@ -35,10 +35,10 @@ from ancf.common.paths import REPORTS
 from ancf.elements.catalogue import ELEMENTS
 from ancf.scenes.base import ReferenceFailed
 
-__all__ = ["PHYSICS", "REFERENCE_VERSION", "STATIC_KNOBS", "DYNAMIC_KNOBS", "STATIC_RTOL", "Reference",
-           "ReferenceFailed", "SceneSpec", "analytic_values", "bending_frequencies",
-           "cache_root", "computed_self_reference", "element_grids", "FREQUENCY_ERROR", "frequency_error",
-           "knob_text", "relative", "self_reference", "stable_hash"]
+__all__ = ["DYNAMIC_KNOBS", "FREQUENCY_ERROR", "PHYSICS", "REFERENCE_VERSION", "STATIC_KNOBS",
+           "STATIC_RTOL", "Reference", "ReferenceFailed", "SceneSpec", "analytic_values",
+           "bending_frequencies", "cache_root", "computed_self_reference", "element_grids",
+           "frequency_error", "knob_text", "relative", "self_reference", "stable_hash"]
 
 #: Physics a scene may need / a model may provide.
 PHYSICS = ("axial", "bending", "shear", "large-rotation", "inertia", "contact", "3D")

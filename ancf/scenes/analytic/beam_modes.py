@@ -1,4 +1,5 @@
-"""``ancf analytic beam-modes``: a uniform beam's natural frequencies (Timoshenko, Euler-Bernoulli)."""
+"""``ancf analytic beam-modes``: a uniform beam's natural frequencies (Timoshenko and
+Euler-Bernoulli)."""
 from __future__ import annotations
 
 import math

@@ -1,4 +1,5 @@
-"""``ancf analytic plate-modes``: the simply supported Kirchhoff plate's natural frequencies (Navier)."""
+"""``ancf analytic plate-modes``: the simply supported Kirchhoff plate's natural
+frequencies (Navier)."""
 from __future__ import annotations
 
 from analytic import plate_modes

@@ -24,4 +24,5 @@ RESULTS = {"tip_x": nullable("tip x, m"), "tip_y": nullable("tip y, m"),
 REFERENCE = Scene(
     "reissner", "Geometrically exact (Reissner) cantilever, dead tip load (BVP, scipy).",
     with_defaults(SECTION, nu=0.3) + (Param("F", lambda v: -5e8 * v["h"] ** 3, float, "N",
-                                     "vertical tip force (default -5e8 h^3)"),), _reissner, results=RESULTS)
+                                            "vertical tip force (default -5e8 h^3)"),),
+    _reissner, results=RESULTS)

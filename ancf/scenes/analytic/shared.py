@@ -2,8 +2,11 @@
 frequencies, the Navier plate's parameters and the check of a derived quantity's range."""
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ancf.common.params import InputError, Param
 
+#: a rectangular beam section and its material
 SECTION = (
     Param("E", 2.07e11, float, "Pa", "Young's modulus", lo=0, lo_open=True),
     Param("nu", 0.0, float, "-", "Poisson's ratio", lo=0, hi=0.5, hi_open=True),
@@ -16,8 +19,7 @@ SECTION = (
 
 def with_defaults(params, **defaults):
     """``params`` with other defaults (by name)."""
-    return tuple(Param(p.name, defaults.get(p.name, p.default), p.kind, p.unit, p.doc, p.lo, p.hi,
-                       p.lo_open, p.hi_open, p.choices) for p in params)
+    return tuple(replace(p, default=defaults.get(p.name, p.default)) for p in params)
 
 
 def count_param(default):
@@ -26,6 +28,7 @@ def count_param(default):
                  lo=1, hi=100)
 
 
+#: the simply supported rectangular plate under uniform pressure (Navier)
 NAVIER = (
     Param("a", 1.0, float, "m", "plate side along x", lo=0, lo_open=True, hi=1e3),
     Param("b", 1.0, float, "m", "plate side along y", lo=0, lo_open=True, hi=1e3),

@@ -1,4 +1,5 @@
-"""``ancf analytic spinning-extension``: the steady axial extension of a spinning beam (thesis Eq. 2.36)."""
+"""``ancf analytic spinning-extension``: the steady axial extension of a spinning beam
+(thesis Eq. 2.36)."""
 from __future__ import annotations
 
 import math

@@ -1,4 +1,5 @@
-"""``ancf analytic timoshenko``: the simply supported Timoshenko beam, midspan load (SymPy-derived)."""
+"""``ancf analytic timoshenko``: the simply supported Timoshenko beam, midspan load
+(SymPy-derived)."""
 from __future__ import annotations
 
 from analytic import timoshenko
