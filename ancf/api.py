@@ -81,7 +81,7 @@ from ancf.common.strict_json import dumps
 __all__ = ["InputError", "Result", "analytic", "modes", "recommend", "run", "scenes", "sweep"]
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Result:
     """The outcome of one run: the public JSON's fields as attributes, the scene's model in
     ``extra`` and the arrays a user wants as properties (``None`` where the run has none:
@@ -203,6 +203,14 @@ class Result:
         return write_run(self.scene, self.extra, directory, per_element)[0]
 
 
+def _result(command: str, scene: str, out: dict, res) -> Result:
+    """The :class:`Result` of a run's public JSON ``out`` and its scene result ``res``."""
+    return Result(command=command, scene=scene, params=out["params"],
+                  converged=out["converged"], message=out["message"], results=out["results"],
+                  cpu_time_s=out["cpu_time_s"], warnings=out["warnings"],
+                  compile_cpu_s=out.get("compile_cpu_s", 0.0), extra=res.extra, _json=out)
+
+
 def _as_set(value):
     """A number as the text ``--set`` would carry (``repr``: exact for floats), so that the
     parsed values and the messages of bad ones are the command line's; others unchanged."""
@@ -226,9 +234,7 @@ def _execute(command: str, name: str, overrides, params: dict, vtk=None) -> Resu
         sc.resolve(sets)
         check_directory(vtk)
     out, res = sc.execute(sets)
-    result = Result(command, name, out["params"], out["converged"], out["message"],
-                    out["results"], out["cpu_time_s"], out["warnings"],
-                    out.get("compile_cpu_s", 0.0), res.extra, out)
+    result = _result(command, name, out, res)
     if vtk is not None:
         result.write_vtk(vtk)
     return result
@@ -265,9 +271,7 @@ def modes(scene: str, overrides: dict | None = None, /, *, count=None, about="re
     from ancf.scenes.modes import execute
     sets = {k: _as_set(v) for k, v in {**dict(overrides or {}), **params}.items()}
     out, res = execute(scene, sets, count, about)
-    return Result("modes", scene, out["params"], out["converged"], out["message"],
-                  out["results"], out["cpu_time_s"], out["warnings"],
-                  out.get("compile_cpu_s", 0.0), res.extra, out)
+    return _result("modes", scene, out, res)
 
 
 def analytic(name: str, overrides: dict | None = None, /, **params) -> Result:

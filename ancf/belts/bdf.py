@@ -106,7 +106,8 @@ def simulate_bdf(drive, t_out, rtol: float, atol: float, x0, max_steps: int) -> 
             Y += [dense(t) for t in t_out[k: k + hit.size]]
             k += hit.size
     Y = np.array(Y)
-    res = DynamicResult(t_out[:k], Y[:, :m], Y[:, m:], msg == "ok", msg, "bdf", steps=steps,
+    res = DynamicResult(t=t_out[:k], q=Y[:, :m], v=Y[:, m:], converged=msg == "ok",
+                        message=msg, integrator="bdf", steps=steps,
                         nfev=sys_.nfev, njev=sys_.njev, nlu=int(solver.nlu),
                         newton_iterations=0, cpu_time_s=time.process_time() - t0)
     res.extra["contact_pairs"] = 0

@@ -35,7 +35,7 @@ from ancf.core.quadrature import RectangularSection
 SLOTS = ("r", "r_x", "r_y")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DriveSpec:
     """What every belt drive's spec starts with (SI units)."""
 
@@ -47,7 +47,7 @@ class DriveSpec:
     rho: float                  # density, kg/m^3
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Belt2DSpec(DriveSpec):
     """The belt and its contact (SI units; see the belt2d scene)."""
 
@@ -61,10 +61,10 @@ class Belt2DSpec(DriveSpec):
     c_p: float                  # penalty damping per unit length, N s/m^2
     friction: tuple             # (law, its parameters): a row of ancf.belts.friction.ALL_PARAMS
     gauss_points: int           # contact Gauss points per element (3, 4, 5, 7, 11)
-    axial: str = field(default="green", kw_only=True)  # axial strain law (dufva2d.AXIAL_LAWS)
+    axial: str = "green"        # axial strain law (dufva2d.AXIAL_LAWS)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class BeltSpec(Belt2DSpec):
     """Everything that defines the thesis's two-pulley drive (SI units; see the belt2d
     scene)."""
@@ -263,7 +263,9 @@ class BeltDrive(PulleyDrive):
     def kernel(self) -> Drive2D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""
         r = self.rig
-        return Drive2D(self.vidx, self.midx, self.element.kernel_data(), self.strain_damping,
-                       self.S0, self.w, r.centres, r.radii, self.prm, r.free, r.inertia,
-                       r.damping, self.weight, r.arms, self.z, self.h,
-                       np.zeros((2, r.radii.size)), self.damping_jacobian)
+        return Drive2D(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
+                       strain_damping=self.strain_damping, S0=self.S0, w=self.w,
+                       centres=r.centres, radii=r.radii, prm=self.prm, free=r.free,
+                       inertia=r.inertia, damping=r.damping, weight=self.weight, arms=r.arms,
+                       z=self.z, h=self.h, last=np.zeros((2, r.radii.size)),
+                       damping_jacobian=self.damping_jacobian)

@@ -28,7 +28,7 @@ row per pulley followed by u and its rate (zero but for the thesis drive's u0).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
@@ -47,7 +47,7 @@ SHIFT = np.array([-1.0, 0.0, 0.0])  # direction the driver is moved in (Eq. 4.46
 AXIS = np.array([0.0, 0.0, 1.0])    # pulley axes
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Plate3DSpec(DriveSpec):
     """The plate belt and its contact (SI units; see the belt3d scene)."""
 
@@ -58,10 +58,10 @@ class Plate3DSpec(DriveSpec):
     c_p: float                  # penalty damping per unit area, N s/m^3
     friction: tuple             # (law, its parameters): a row of ancf.belts.friction.PARAMS
     contact_points: int         # surface rule per element (25, 49, 81)
-    ng: int = field(default=4, kw_only=True)  # Gauss points per direction, elastic forces
+    ng: int = 4                 # Gauss points per direction, elastic forces
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Belt3DSpec(Plate3DSpec):
     """Everything that defines the thesis's 3D belt drive (SI units; see the belt3d scene)."""
 
@@ -119,8 +119,9 @@ class Belt3DDrive(PulleyDrive):
                 np.zeros(self.pattern.n), self.Mb, True)
         self.weight = self.pattern.restrict(self._weight(gravity))
         self.S0, self.w = contact_points3d(self.lengths, np.full(n, s.width), s.contact_points)
-        if s.friction[0] in friction.STATE_LAWS:
-            raise ValueError(f"friction law {s.friction[0]!r}: its state per contact point is "
+        law, *values = s.friction
+        if law in friction.STATE_LAWS:
+            raise ValueError(f"friction law {law!r}: its state per contact point is "
                              "carried by the 2D drive only; allowed in 3D: "
                              + ", ".join(friction.LAWS))
         self.prm = friction.contact_record(s.k_p, s.c_p, law, *values)
@@ -181,7 +182,8 @@ class Belt3DDrive(PulleyDrive):
     def kernel(self) -> Drive3D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""
         r = self.rig
-        return Drive3D(self.vidx, self.midx, self.element.kernel_data(), self.S0, self.w,
-                       r.centres, r.radii, self.prm, r.free, r.inertia, r.damping,
-                       self.weight, r.arms, None, np.zeros(1),
-                       np.zeros((2, r.radii.size)), self.axes, SHIFT.copy())
+        return Drive3D(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
+                       S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
+                       free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,
+                       arms=r.arms, z=None, h=np.zeros(1), last=np.zeros((2, r.radii.size)),
+                       axes=self.axes, shift=SHIFT.copy())

@@ -31,7 +31,7 @@ MESSAGES = {DONE: "ok", BUDGET: "step budget exhausted (max_steps)",
             NON_FINITE: "non-finite coordinates", BLOW_UP: "coordinates blew up"}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class BeltOptions:
     dt: float = 2.5e-4
     rho_inf: float = 0.5
@@ -141,8 +141,8 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None,
     msg = "ok" if ok else (MESSAGES.get(status) or f"no convergence: Newton failed at t = {ts[k]:.6g} s "
                            f"even with steps of dt/2^{opt.max_halvings}")
     c = m.count
-    res = DynamicResult(t_out[:reached], X[:reached], V[:reached], ok, msg, "generalized-alpha",
-                        steps=int(c[4]), nfev=int(c[0]), njev=int(c[1]), nlu=int(c[2]),
+    res = DynamicResult(t=t_out[:reached], q=X[:reached], v=V[:reached], converged=ok,
+                        message=msg, integrator="generalized-alpha", steps=int(c[4]), nfev=int(c[0]), njev=int(c[1]), nlu=int(c[2]),
                         newton_iterations=int(c[3]), rejected_steps=rejected,
                         cpu_time_s=time.process_time() - t0)
     res.extra["contact_pairs"] = int(c[PAIRS])

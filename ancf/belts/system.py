@@ -85,13 +85,14 @@ def belt_system(drive, ts, nslots: int = 0, mean_from: float = np.inf) -> BeltSy
     n, k = drive.n, drive.k
     kernel = drive.kernel()
     shape = (0, 0, 0, 0) if kernel.z is None else (nslots, *kernel.z.shape[1:])
-    return BeltSystem(kernel, drive.Mb, mass_rows(drive.Mb, drive.pattern.kl), drive.pattern.kl,
-                      drive.laws(ts), steps(ts),
-                      np.zeros(shape), np.zeros(shape[0]), window_weights(ts, mean_from),
-                      np.zeros(1), np.zeros((3, kernel.radii.size)),
-                      drive.pattern.zeros_matrix(), np.zeros(n, dtype=np.int64), np.zeros((k, n)),
-                      np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)), np.zeros((k, k)),
-                      np.zeros(k, dtype=np.int64))
+    return BeltSystem(drive=kernel, Mb=drive.Mb, mass_rows=mass_rows(drive.Mb, drive.pattern.kl),
+                      kl=drive.pattern.kl, tabs=drive.laws(ts), steps=steps(ts),
+                      zs=np.zeros(shape), hs=np.zeros(shape[0]),
+                      window=window_weights(ts, mean_from), weight=np.zeros(1),
+                      sums=np.zeros((3, kernel.radii.size)), S=drive.pattern.zeros_matrix(),
+                      piv=np.zeros(n, dtype=np.int64), U=np.zeros((k, n)), row=np.zeros((k, n)),
+                      col=np.zeros((k, n)), corner=np.zeros((k, k)), schur=np.zeros((k, k)),
+                      spiv=np.zeros(k, dtype=np.int64))
 
 
 def mass_rows(Mb, kl: int) -> tuple:

@@ -55,7 +55,7 @@ TOLERANCES = {"tight": 1.5, "slack": 1.5, "omega": 0.3, "torque": 1.0, "axial_rm
               "balance": 1.0, "steady": 2.0}   # % (issue 21's acceptance)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Stored:
     """THREAD's stored results at t_end (along the belt, s in m) and in time (t in s)."""
 
@@ -91,8 +91,10 @@ def read(case: str = CASE, data: Path = DATA) -> Stored:
     q = _table("torquePulley0", case, data)
     if not np.array_equal(w[:, 0], q[:, 0]):
         raise ValueError(f"{data}: the two time series of {case} have different times")
-    return Stored(f[:, 0], f[:, 1], v[:, 0], np.hypot(v[:, 1], v[:, 2]), c[:, 0],
-                  -WIDTH * c[:, 2], WIDTH * c[:, 1], w[:, 0], w[:, 3], -q[:, 1])
+    return Stored(s_force=f[:, 0], axial_force=f[:, 1], s_speed=v[:, 0],
+                  speed=np.hypot(v[:, 1], v[:, 2]), s_contact=c[:, 0], normal=-WIDTH * c[:, 2],
+                  tangential=WIDTH * c[:, 1], t=w[:, 0], omega_driven=w[:, 3],
+                  driver_torque=-q[:, 1])
 
 
 def span_forces(s, N, length: float) -> tuple[float, float]:

@@ -139,8 +139,10 @@ def band_group(pattern, group) -> GreenBand:
     """The :class:`GreenBand` of an assembly's element group on ``pattern``."""
     el, pts = group.element, group.element.points
     vidx, midx = pattern.groups[0]
-    return GreenBand(pattern.qsel, pattern.zsel, np.ascontiguousarray(group.dofmap), pts.E0,
-                     pts.BX, pts.BY, pts.dX0, pts.dY0, pts.w, el.C, pts.cidx, vidx, midx)
+    return GreenBand(qsel=pattern.qsel, zsel=pattern.zsel,
+                     dofmap=np.ascontiguousarray(group.dofmap), E0=pts.E0, BX=pts.BX, BY=pts.BY,
+                     dX0=pts.dX0, dY0=pts.dY0, w=pts.w, C=el.C, cidx=pts.cidx, vidx=vidx,
+                     midx=midx)
 
 
 @implements(assemble_group, GreenBand)

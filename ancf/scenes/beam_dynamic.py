@@ -6,6 +6,8 @@ built by ``beam_static.build`` (with the density ``rho``).
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from ancf.core.energy import energy_history
@@ -26,8 +28,7 @@ def section_params(**defaults) -> tuple:
     out = []
     for name in keep:
         p = base[name]
-        out.append(Param(p.name, defaults.get(name, p.default), p.kind, p.unit, p.doc, p.lo, p.hi,
-                         p.lo_open, p.hi_open, p.choices))
+        out.append(replace(p, default=defaults.get(name, p.default)))
     return tuple(out)
 
 

@@ -66,10 +66,12 @@ def check(p: dict) -> None:
 
 
 def spec(p: dict) -> BeltSpec:
-    return BeltSpec(bc.path_of(p), bc.belt_length(p), p["n_elements"], p["E"], p["nu"], p["rho"],
-                    p["b"], p["h"], p["ks"], p["alpha1"], p["alpha2"], p["elastic_points"],
-                    p["k_p"], p["c_p"], (LAW, p["mu"], p["nu_s"]), p["gauss_points"], p["inertia"],
-                    p["omega_final"], p["Ta_max"])
+    return BeltSpec(path=bc.path_of(p), belt_length=bc.belt_length(p),
+                    n_elements=p["n_elements"], E=p["E"], nu=p["nu"], rho=p["rho"], b=p["b"],
+                    h=p["h"], ks=p["ks"], alpha1=p["alpha1"], alpha2=p["alpha2"],
+                    nx=p["elastic_points"], k_p=p["k_p"], c_p=p["c_p"],
+                    friction=(LAW, p["mu"], p["nu_s"]), gauss_points=p["gauss_points"],
+                    inertia=p["inertia"], omega_final=p["omega_final"], Ta_max=p["Ta_max"])
 
 
 def _steady_ratio(t, wd, wn, t_end) -> float | None:

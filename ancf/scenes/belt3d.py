@@ -159,10 +159,12 @@ def check(p: dict) -> None:
 
 
 def spec(p: dict) -> Belt3DSpec:
-    return Belt3DSpec(path_of(p), belt_length(p), p["n_elements"], p["E"], p["nu"], p["rho"],
-                      p["width"], p["h"], p["bending"] == "on", p["k_p"], p["c_p"],
-                      (LAW, p["mu"], p["nu_s"]), p["contact_points"], p["inertia"],
-                      p["omega_final"], T0, p["t1"], p["Ta_max"], TA_T1, p["u0"])
+    return Belt3DSpec(path=path_of(p), belt_length=belt_length(p), n_elements=p["n_elements"],
+                      E=p["E"], nu=p["nu"], rho=p["rho"], width=p["width"], h=p["h"],
+                      bending=p["bending"] == "on", k_p=p["k_p"], c_p=p["c_p"],
+                      friction=(LAW, p["mu"], p["nu_s"]), contact_points=p["contact_points"],
+                      inertia=p["inertia"], omega_final=p["omega_final"], t0=T0, t1=p["t1"],
+                      Ta_max=p["Ta_max"], Ta_t1=TA_T1, u0=p["u0"])
 
 
 def _slip(t, wd, wn, window) -> float | None:

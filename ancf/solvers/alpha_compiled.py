@@ -102,10 +102,11 @@ class CompiledAlpha:
         np.add.at(Mp, p.zsel, Mcols[p.qsel])
         Q = model.forces.value(rheo.g0, np.zeros(asm.n_dofs), 0.0)
         g0 = np.array(rheo.g0, dtype=float)
-        self.system = ReducedSystem(p.compiled(asm), model.Mb, p.kl, p.reduce(Q), Mp, gdd, presc,
-                                    gvals, g0, g0.copy(), np.zeros(p.n), np.zeros(p.n),
-                                    p.zeros_matrix(), p.zeros_matrix(),
-                                    np.zeros(p.n, dtype=np.int64))
+        self.system = ReducedSystem(group=p.compiled(asm), Mb=model.Mb, kl=p.kl, Qr=p.reduce(Q),
+                                    Mp=Mp, gdd=gdd, presc=presc, gvals=gvals, g0=g0,
+                                    gq=g0.copy(), inertial=np.zeros(p.n), grad=np.zeros(p.n),
+                                    K=p.zeros_matrix(), S=p.zeros_matrix(),
+                                    piv=np.zeros(p.n, dtype=np.int64))
         self.hf = np.array([np.nan])
         self.cf = np.array(opt.coefficients())
         self.count = np.zeros(5, dtype=np.int64)

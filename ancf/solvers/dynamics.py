@@ -313,9 +313,11 @@ def integrate_ivp(model, x0, v0, t_out, method="dop853", rtol=1e-8, atol=1e-10,
     elif ok and len(X) < t_out.size:
         ok, msg = False, "stopped before t_end"
     q, v = _samples(model, t_out[:len(X)], X)
-    res = DynamicResult(t_out[:len(X)], q, v, ok, msg if ok else f"{method}: {msg}", method, count[0],
-                        getattr(solver, "nfev", 0), getattr(solver, "njev", 0),
-                        getattr(solver, "nlu", 0), cpu_time_s=cpu)
+    res = DynamicResult(t=t_out[:len(X)], q=q, v=v, converged=ok,
+                        message=msg if ok else f"{method}: {msg}", integrator=method,
+                        steps=count[0], nfev=getattr(solver, "nfev", 0),
+                        njev=getattr(solver, "njev", 0), nlu=getattr(solver, "nlu", 0),
+                        cpu_time_s=cpu)
     return finish(model, res, X[:, :n])
 
 

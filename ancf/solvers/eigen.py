@@ -63,7 +63,7 @@ class EigenFailure(Exception):
     """The eigenpairs could not be computed; the message says why."""
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Eigenpairs:
     """``values`` lambda (count,) ascending, rad^2/s^2; ``vectors`` (n, count), M-normalised,
     in the pattern's numbering; ``stiffness_rel`` (count,) |phi^T K phi| / (|K|_inf phi^T phi);
@@ -121,7 +121,8 @@ def lowest(pattern, K, M, count: int) -> Eigenpairs:
     missed = max(sturm - int(np.sum(w < at)), 0)
     w, V = w[:count], V[:, :count]
     rel = np.abs(w) / (pattern.inf_norm(K) * np.einsum("ij,ij->j", V, V))
-    return Eigenpairs(w, V, rel, method, sigma, facts + 2, solves, sturm, missed)
+    return Eigenpairs(values=w, vectors=V, stiffness_rel=rel, method=method, shift=sigma,
+                      factorizations=facts + 2, solves=solves, sturm_count=sturm, missed=missed)
 
 
 def _sturm_point(w, count, sigma) -> float:

@@ -301,8 +301,11 @@ def integrate_generalized_alpha(model, x0, v0, t_out, opt: AlphaOptions) -> Dyna
     cpu = time.process_time() - t0
     tt = t_out[: len(X)]
     pairs = [model.full(x, v, t) for x, v, t in zip(X, V, tt)]
-    res = DynamicResult(tt, np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs]), ok,
-                        msg, "generalized-alpha", st.steps + int(count[4]), st.nfev + int(count[0]),
-                        st.nfev + int(count[1]), st.nlu + int(count[2]), st.iters + int(count[3]),
-                        st.rejected, cpu, multipliers=np.array(L) if st.m else None)
+    res = DynamicResult(t=tt, q=np.array([p[0] for p in pairs]),
+                        v=np.array([p[1] for p in pairs]), converged=ok, message=msg,
+                        integrator="generalized-alpha", steps=st.steps + int(count[4]),
+                        nfev=st.nfev + int(count[0]), njev=st.nfev + int(count[1]),
+                        nlu=st.nlu + int(count[2]), newton_iterations=st.iters + int(count[3]),
+                        rejected_steps=st.rejected, cpu_time_s=cpu,
+                        multipliers=np.array(L) if st.m else None)
     return finish(model, res, np.array(X))

@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 
-@dataclass
+@dataclass(kw_only=True)
 class DynamicResult:
     """Samples (t, global q and q') up to where the run got, with its statistics."""
 

@@ -19,7 +19,7 @@ from ancf.solvers import banded
 from ancf.solvers.linear import Singular, factor, stability
 
 
-@dataclass
+@dataclass(kw_only=True)
 class StaticResult:
     q: np.ndarray
     converged: bool
@@ -191,9 +191,11 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
     newton = _Newton(assembly, pattern, g, pattern.reduce(Qk), opt, forces, pattern.expand(z, g))
     lam, step = 0.0, 1.0 / opt.n_steps
     total, steps, histories, why = 0, 0, [], ""
-    result = lambda ok, msg, lf: StaticResult(pattern.expand(z, g), ok, msg, lf, total, steps,  # noqa: E731
-                                              histories, newton.tangents, newton.factorizations, pattern,
-                                              newton.tangent if ok else None)
+    result = lambda ok, msg, lf: StaticResult(  # noqa: E731
+        q=pattern.expand(z, g), converged=ok, message=msg, load_factor=lf, iterations=total,
+        load_steps=steps, residual_history=histories, tangent_evaluations=newton.tangents,
+        factorizations=newton.factorizations, pattern=pattern,
+        tangent=newton.tangent if ok else None)
     while lam < 1.0 - 1e-14:
         step = min(step, 1.0 - lam)
         hist = []

@@ -176,8 +176,10 @@ def _ring(dEA, R0=0.1, strain=1e-3, n=24):
     """A free belt ring of stress-free radius R0 (m) laid at R0 (1 + strain) and let go:
     no pulley within reach (one far away, fixed), EA = 2e4 N, rho A = 0.12 kg/m, bending
     lowered (alpha2 = 1e-4)."""
-    spec = Belt2DSpec(_Circle(R0 * (1 + strain)), 2 * np.pi * R0, n, 2e8, 0.3, 1200.0, 0.02,
-                      0.005, 5 / 6, 1.0, 1e-4, 5, 1e6, 0.0, (LAW, 0.0, 0.0), 5)
+    spec = Belt2DSpec(path=_Circle(R0 * (1 + strain)), belt_length=2 * np.pi * R0, n_elements=n,
+                      E=2e8, nu=0.3, rho=1200.0, b=0.02, h=0.005, ks=5 / 6, alpha1=1.0,
+                      alpha2=1e-4, nx=5, k_p=1e6, c_p=0.0, friction=(LAW, 0.0, 0.0),
+                      gauss_points=5)
     rig = Rig(("far",), np.array([[10.0, 10.0]]), np.array([0.01]), np.array([-1]),
               np.zeros(0), np.zeros(0), (lambda t: np.zeros(np.shape(t)),))
     return BeltDrive(spec, rig, damping=(dEA, 0.0))
