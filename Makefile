@@ -1,11 +1,12 @@
 # Quick start:  `make reports` (set up + regenerate reports/)   `make test` (set up + run the tests)
+# `make test-fast`: the tests not marked slow (under 3 minutes; catches a sign error in any element, law or solver)
 PYTHON ?= $(shell command -v python3.11 || command -v python3)
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 PEERS  := $(VENV)/.peers
 
-.PHONY: setup reports test bench clean
+.PHONY: setup reports test test-fast bench clean
 
 setup: $(STAMP)
 
@@ -25,6 +26,9 @@ reports: $(PEERS)
 
 test: $(STAMP)
 	$(PY) -m pytest
+
+test-fast: $(STAMP)
+	$(PY) -m pytest -m "not slow"
 
 bench: $(PEERS)
 	OPENBLAS_NUM_THREADS=1 $(PY) -m pytest benchmarks --benchmark-enable --benchmark-only --benchmark-json=reports/benchmarks/benchmark.json

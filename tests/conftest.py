@@ -1,7 +1,18 @@
-"""Shared fixtures."""
+"""Shared fixtures of the whole suite.
+
+``workdir``: a per-module scratch folder that is also the reference cache.  ``cli``: runs
+``ancf ARGV`` in-process and gives (exit code, stdout, stderr), whether the command
+returns its code or exits.  ``examples``: the repository's ``examples/`` folder.
+
+Tiers: ``make test-fast`` runs every test not marked ``slow`` (``pytest -m "not slow"``),
+``make test`` all of them; a test that takes more than a few seconds on an idle machine is
+marked ``@pytest.mark.slow`` in its own file.
+"""
 import os
 
 import pytest
+
+from ancf.common.paths import REPO
 
 
 @pytest.fixture(scope="module")
@@ -16,3 +27,24 @@ def workdir(tmp_path_factory, request):
         os.environ.pop("ANCF_CACHE", None)
     else:
         os.environ["ANCF_CACHE"] = old
+
+
+@pytest.fixture
+def cli(capsys):
+    """``cli(*argv) -> (exit code, stdout, stderr)`` of ``ancf ARGV`` run in this process."""
+    from ancf.cli import main
+
+    def run(*argv):
+        try:
+            rc = main(list(argv))
+        except SystemExit as exc:
+            rc = exc.code
+        out, err = capsys.readouterr()
+        return rc, out, err
+    return run
+
+
+@pytest.fixture(scope="session")
+def examples():
+    """The repository's examples/ folder (drive files)."""
+    return REPO / "examples"

@@ -13,6 +13,7 @@ from ancf.scenes import belt3d as b3
 from ancf.belts.pretension import settle
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("check", [bc.steady_state, bc.torque_balance, bc.friction_moment,
                                    bc.strain_measure_torques, bc.slip_vs_thesis,
                                    bc.tensions_vs_bechtel, bc.model1_check],

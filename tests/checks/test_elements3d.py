@@ -16,6 +16,7 @@ def _assert(prefix):
     assert c.passed, (c.name, c.value, c.reference, c.difference, c.tolerance)
 
 
+@pytest.mark.slow
 def test_plate_square_within_1_percent_of_navier():
     _assert("Plate square 16")
 

@@ -8,6 +8,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from ancf.common.compile_time import CompileTime, compile_cpu
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -21,6 +23,7 @@ def test_nested_lock_spans_count_once():
     assert t.spans == 1 and t.seconds >= 0
 
 
+@pytest.mark.slow
 def test_compilation_is_timed_apart_from_the_solve(tmp_path):
     """With an empty numba cache, the first run in a process compiles its kernels; its
     ``cpu_time_s`` stays within 2x of the same run repeated in the warm process, and the

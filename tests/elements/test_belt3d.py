@@ -67,6 +67,7 @@ def _rotation(axis, angle):
 
 
 # ------------------------------------------------------------------ generated code
+@pytest.mark.slow
 def test_generated_module_up_to_date():
     assert belt3d.generate() == belt3d.TARGET.read_text(), (
         "ancf/elements/_belt3d_generated.py is stale: run `python -m analytic.belt3d --write`")
@@ -88,6 +89,7 @@ def test_compact_section_kinematics_equal_the_chain_rule():
 
 
 # ------------------------------------------------------------- finite differences
+@pytest.mark.slow
 def test_gradient_and_tangent_match_differences_at_large_deformation():
     """Coordinates moved by 0.05 (m or -) at random, alpha1 = 0.7, alpha2 = 0.2:
     central differences with h = 1e-6 (error ~h^2 relative, as argued in

@@ -45,6 +45,7 @@ def _tip_under(n, F, n_steps=4, **kw):
 
 
 # ------------------------------------------------------------------ generated code
+@pytest.mark.slow
 def test_generated_module_up_to_date():
     """Also re-proves (SymPy) that the invariant density equals Eqs 3.4, 3.10, 3.18, 3.19."""
     assert dufva_belt.generate() == dufva_belt.TARGET.read_text(), (

@@ -226,6 +226,7 @@ def test_rigid_body_motion_has_no_strain_energy(cls, kw):
 
 
 # --------------------------------------------------------------- generated module
+@pytest.mark.slow
 def test_generated_module_up_to_date():
     committed = sf.TARGET.read_text()
     assert sf.generate() == committed, (

@@ -95,6 +95,7 @@ def test_section_moment_in_the_reference_is_the_linear_end_traction():
     np.testing.assert_allclose(Q, expected, rtol=1e-14, atol=1e-15)
 
 
+@pytest.mark.slow
 def test_tip_moment_small_deflection_is_the_closed_form():
     _assert("Tip moment, small rotation")
 

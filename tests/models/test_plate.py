@@ -54,6 +54,7 @@ def _perturbed(m, scale, seed=0):
 
 
 # ------------------------------------------------------------------ generated code
+@pytest.mark.slow
 def test_generated_plate_code_is_up_to_date():
     assert plate_thin.generate() == plate_thin.TARGET.read_text(), (
         "ancf/elements/_plate_generated.py is stale: run `python -m analytic.plate_thin --write`")

@@ -210,6 +210,7 @@ def _statuses(root: Path) -> dict:
     return {k: v for k, v in rows if k != "check"}
 
 
+@pytest.mark.slow
 def test_every_chapter_is_written(quick):
     for name in CHAPTERS + ("README.md", "schemas.md"):
         assert (quick / name).stat().st_size > 200, name
@@ -236,6 +237,7 @@ def test_acceptance_statuses_agree_with_the_tests(quick):
         assert callable(getattr(mod, name, None)), f"{module}.{name} is gone: update AGREES"
 
 
+@pytest.mark.slow
 def test_speed_accuracy_tables_are_reproducible(quick, workdir):
     """A second quick speed-accuracy chapter (fresh sweeps, fresh timings): the same page
     and the same data files; the CPU times and the calibration went to its timing page
