@@ -1,13 +1,11 @@
 """Accuracy checks of a finished run, per scene kind: the run did what was asked,
-but these say when its result is not to be trusted (the ``warnings`` list).
+but these say when its result is not to be trusted (the ``warnings`` list).  The
+checks of one scene only sit in its file (its ``warn``); these are the shared ones:
 
 * statics: Newton accepted a point at the round-off floor, above the requested
   residual; the stability of the equilibrium was not checked;
-* conservative dynamics (pendulum): the energy drift against the energy scale
-  ``m g L``;
 * fixed-step integration: the step against the period of the first bending mode
-  (Euler-Bernoulli estimate, the fastest motion the results are meant to resolve);
-* spinning beam: an averaging window that reaches into the spin-up.
+  (Euler-Bernoulli estimate, the fastest motion the results are meant to resolve).
 """
 from __future__ import annotations
 
@@ -29,7 +27,7 @@ def _root(f, a: float, b: float) -> float:
             b = m
     return 0.5 * (a + b)
 
-ENERGY_DRIFT_REL = 1e-3      # energy deviation / (m g L) above this: drift
+
 STEPS_PER_PERIOD = 20        # fixed steps per resolved period below this: too coarse
 # first roots of the Euler-Bernoulli frequency equations (beta L)
 PINNED_FREE = _root(lambda x: math.tan(x) - math.tanh(x), 3.5, 4.5)
@@ -43,7 +41,7 @@ def bending_period(p: dict, beta_l: float) -> float:
     return 2.0 * math.pi / (beta_l**2 * math.sqrt(EI / (rho_a * p["L"] ** 4)))
 
 
-def _finite(v) -> bool:
+def finite(v) -> bool:
     return isinstance(v, (int, float)) and math.isfinite(v)
 
 
@@ -62,27 +60,10 @@ def static(p: dict, res) -> list[str]:
     return out
 
 
-def _step(p: dict, period: float, what: str) -> list[str]:
+def step(p: dict, period: float, what: str) -> list[str]:
+    """A warning when generalised-α's fixed step resolves ``what`` (its ``period``, s) with
+    fewer than :data:`STEPS_PER_PERIOD` steps."""
     if p["integrator"] != "generalized-alpha" or p["dt"] * STEPS_PER_PERIOD <= period:
         return []
     return [f"dt = {p['dt']:g} s resolves the {what} (period {period:.3g} s) with "
             f"{period / p['dt']:.3g} steps, fewer than {STEPS_PER_PERIOD}: the motion is not resolved"]
-
-
-def pendulum(p: dict, res) -> list[str]:
-    out = _step(p, bending_period(p, PINNED_FREE), "first bending mode")
-    dev = res.results.get("energy_max_deviation_J")
-    scale = p["rho"] * p["b"] * p["h"] * p["L"] * p["g"] * p["L"]
-    if _finite(dev) and dev > ENERGY_DRIFT_REL * scale:
-        out.append(f"energy drift {dev:.3g} J exceeds {ENERGY_DRIFT_REL:g} of the energy scale "
-                   f"m g L = {scale:.3g} J: the run does not conserve energy")
-    return out
-
-
-def spinning(p: dict, res) -> list[str]:
-    out = _step(p, bending_period(p, CLAMPED_FREE), "first bending mode")
-    if p["t_end"] - p["mean_window"] < p["T_s"]:
-        out.append(f"the averaging window starts at t = {p['t_end'] - p['mean_window']:g} s, "
-                   f"before the spin-up ends (T_s = {p['T_s']:g} s): axial_extension_m is not "
-                   "the steady value")
-    return out
