@@ -119,12 +119,12 @@ class Belt3DDrive(PulleyDrive):
                 np.zeros(self.pattern.n), self.Mb, True)
         self.weight = self.pattern.restrict(self._weight(gravity))
         self.S0, self.w = contact_points3d(self.lengths, np.full(n, s.width), s.contact_points)
-        law, *values = s.friction
-        if law in friction.STATE_LAWS:
-            raise ValueError(f"friction law {law!r}: its state per contact point is "
+        friction_law, *values = s.friction
+        if friction_law in friction.STATE_LAWS:
+            raise ValueError(f"friction law {friction_law!r}: its state per contact point is "
                              "carried by the 2D drive only; allowed in 3D: "
                              + ", ".join(friction.LAWS))
-        self.prm = friction.contact_record(s.k_p, s.c_p, law, *values)
+        self.prm = friction.contact_record(s.k_p, s.c_p, friction_law, *values)
         self.shift = (0.0, T0)  # the driver's displacement u0, m, reached at t0, s
         if rig is None:
             self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
