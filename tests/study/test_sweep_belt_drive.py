@@ -45,7 +45,7 @@ def _cli(capsys, *argv):
 def test_steady_reference_is_the_npulley_tests_reference(name):
     """The library's steady reference of a drive file equals the one test_belt_npulley.py
     builds by hand from the file."""
-    sys.path.insert(0, str(Path(__file__).parent))
+    sys.path.insert(0, str(Path(__file__).parents[1] / "belts"))
     import test_belt_npulley as npulley
     p = SCENES["belt-drive"].resolve({"file": str(EXAMPLES / name)})
     assert steady_reference(p) == npulley._reference(load(EXAMPLES / name, []))
