@@ -235,6 +235,7 @@ def test_stiff_pendulum_follows_rigid_compound_pendulum():
     assert np.abs(r["energy_kinetic"] - kinetic).max() < MARGIN * 9.0e-6 * kinetic.max()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("integrator,tol", [("dop853", {"rtol": 1e-10, "atol": 1e-12}),
                                             ("generalized-alpha", {"dt": 1e-3})])
 def test_elimination_and_multipliers_agree(integrator, tol):
@@ -247,6 +248,7 @@ def test_elimination_and_multipliers_agree(integrator, tol):
     assert outs["lagrange"]["results"]["constraint_violation_m"] < 1e-12
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("constraints", ["elimination", "lagrange"])
 @pytest.mark.parametrize("integrator", ["generalized-alpha", "radau"])
 def test_dense_and_sparse_paths_agree(monkeypatch, constraints, integrator):
@@ -277,6 +279,7 @@ def test_rheonomic_constraint_both_forms_agree():
     assert b["results"]["constraint_violation_m"] < 3 * 1.7e-11
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("integrator", ["dop853", "rk45"])
 def test_baumgarte_restores_a_violated_pin_critically_damped(integrator):
     """Multipliers from a pin violated by d (the beam shifted rigidly): the stabilised

@@ -179,6 +179,7 @@ def test_vtk_is_only_on_run(tmp_path, capsys):
     assert exc.value.code == 2 and err.count("\n") == 1 and "--vtk" in err
 
 
+@pytest.mark.slow
 def test_run_with_vtk_loads_meshio_and_without_does_not(tmp_path):
     import subprocess
     import sys

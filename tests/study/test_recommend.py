@@ -52,6 +52,7 @@ def cantilever_answer():
     return json.loads(p.stdout)
 
 
+@pytest.mark.slow
 def test_recommend_cantilever_1e3_answers_with_evidence(capsys, cantilever_answer):
     a = cantilever_answer
     assert KEYS <= set(a) and a["scene"] == "cantilever" and a["tol"] == 1e-3
@@ -151,6 +152,7 @@ def test_recommend_pendulum_1e2(capsys):
     assert err <= 1e-2
 
 
+@pytest.mark.slow
 def test_recommend_belt2d_meets_the_tolerance(capsys):
     """belt2d over 0.3 s, 7 contact points, dt = 1e-3 s, element counts 10..80: the cheapest
     one whose driven speed and span tensions are within 5 % of the 120-element

@@ -46,6 +46,7 @@ def _measured(scene: str, params: dict) -> float:
     return float(np.max(np.abs(np.array(f) / ref - 1.0)))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene, tol, fixed", [
     ("simply-supported", 1e-3, {}), ("cantilever", 1e-3, {}),
     ("plate-square", 1e-2, {"count": 4})])

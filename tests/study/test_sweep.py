@@ -62,6 +62,7 @@ def interrupted_and_resumed(workdir):
     return before, final, stderr, json.loads(stdout), time.time() - t0
 
 
+@pytest.mark.slow
 def test_sweep_interrupted_and_resumed_without_recomputing(interrupted_and_resumed):
     before, final, stderr, summary, _ = interrupted_and_resumed
     assert summary["rows"] == N_RUNS and summary["status"] == {"ok": N_RUNS}
@@ -98,6 +99,7 @@ def test_resume_of_a_finished_sweep_runs_nothing(workdir, interrupted_and_resume
     assert len(df) == N_RUNS
 
 
+@pytest.mark.slow
 def test_same_sweep_on_a_local_dask_cluster_gives_identical_results(workdir,
                                                                     interrupted_and_resumed):
     from distributed import LocalCluster
@@ -211,6 +213,7 @@ time.sleep(600)
 """
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs Linux /proc")
 @pytest.mark.parametrize("pdeathsig", ["1", "0"])  # "0": the watchdog thread alone
 def test_a_computing_worker_ends_when_its_driver_is_killed(pdeathsig):
@@ -240,6 +243,7 @@ def test_a_computing_worker_ends_when_its_driver_is_killed(pdeathsig):
             p.wait()
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs Linux /proc")
 def test_sweep_workers_end_when_the_cli_is_killed(tmp_path):
     """The user's report: SIGKILL `ancf sweep` mid-sweep: both its workers are gone within

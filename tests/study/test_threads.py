@@ -8,6 +8,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from ancf.study.sweep_pool import _Runner
 from ancf.common.threads import BLAS_ENV
 
@@ -55,6 +57,7 @@ def _radau(threads: str) -> dict:
                                      capture_output=True, text=True).stdout)
 
 
+@pytest.mark.slow
 def test_radau_pendulum_row_does_not_depend_on_blas_threads():
     """The dynamics chapter's Radau rtol 1e-3 row: unpinned, 325 steps with one OpenBLAS
     thread and 330 with two (energy deviation 3.02e-3 vs 4.64e-3 J); pinned, the same."""
