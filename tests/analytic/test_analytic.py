@@ -84,6 +84,7 @@ def test_nu03_published_value_reproduced_by_G_E_over_2_plus_nu():
     assert _rows("nu=0.0", "G=E/(2+nu)")["reproduces"]
 
 
+@pytest.mark.slow
 def test_nu03_standard_shear_coefficients_do_not_reproduce():
     for needle in ("Timoshenko ks=5/6", "Cowper", "5(1+nu)/(6+5nu)", "Mindlin", "ks=1 ",
                    "Euler-Bernoulli", "plane-strain"):

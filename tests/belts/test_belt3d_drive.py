@@ -47,6 +47,7 @@ def model2():
     return p, drive, x0, out
 
 
+@pytest.mark.slow
 def test_model2_settles_with_the_initial_tension_in_both_spans(model2):
     p, drive, x0, out = model2
     assert out.converged
@@ -67,6 +68,7 @@ def test_settled_belt_penetrates_by_the_wrap_pressure_over_k_p(model2):
     assert d[wrapped].max(axis=2).mean() == pytest.approx(expected, rel=0.05)
 
 
+@pytest.mark.slow
 def test_short_model2_run_converges_and_the_driven_pulley_follows():
     p, res = b3.SCENE.execute({"t_end": 0.08, "output_dt": 0.01})
     assert res.converged, res.message

@@ -85,6 +85,7 @@ def _exudyn(el, E, V, dEA, dEI, nx=5):
     return out
 
 
+@pytest.mark.slow
 def test_axial_damping_is_exudyns():
     """Axial damping alone at a random large deformation and velocity: every coordinate's
     force equals Exudyn's formula evaluated independently (1e-12 of the largest; the
@@ -207,6 +208,7 @@ def _decay_rate(drive, periods=8.0, dt=1e-5):
     return -slope, 2 * np.mean(np.diff(tk))
 
 
+@pytest.mark.slow
 def test_ring_breathing_decays_at_the_rate_of_the_damping():
     """A free ring (stress-free radius R0 = 0.1 m) let go 0.1 % stretched breathes
     radially: rho A u'' + dEA u'/R0^2 + EA u/R0^2 = 0 (eps = u/R0), so its mean radial
@@ -241,6 +243,7 @@ def _damping_part(on, off, x, v):
     return _drive_terms(on, x, v, 0.0, 0.0)[0] - _drive_terms(off, x, v, 0.0, 0.0)[0]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("by", ["x", "v"])
 def test_drive_matrix_takes_the_damping_exactly(by):
     """The serpentine drive at a perturbed moving state with dEA = 0.5 N s, dEI = 1e-3

@@ -24,22 +24,26 @@ def test_free_belt_is_a_circle_of_its_length():
     assert mean.passed and dev.passed, (mean, dev)
 
 
+@pytest.mark.slow
 def test_20_25_30_elements_agree_at_1_s():
     c = bc.element_convergence()
     assert c.passed, c
     assert bc.steady_ratio() == pytest.approx(1.0, abs=1e-2)  # equal radii, no load
 
 
+@pytest.mark.slow
 def test_stiffer_belt_oscillates_less():
     c = bc.stiffness_trend()
     assert c.passed, c
 
 
+@pytest.mark.slow
 def test_smaller_creep_rate_factor_lags_during_the_ramp():
     c = bc.creep_lag_trend()
     assert c.passed, c
 
 
+@pytest.mark.slow
 def test_smaller_creep_rate_factor_slips_more_at_120_rad_s():
     c = bc.creep_slip_trend()
     assert c.passed, c
@@ -60,6 +64,7 @@ def test_normal_force_against_T_over_R_and_the_exact_relation():
     assert bc.normal_force_status(thin, exact) == "PASS"
 
 
+@pytest.mark.slow
 def test_the_slack_span_moves_more_than_the_tight_one_at_120_rad_s():
     """Figs 3.10-3.11 say the tight span moves more; here the slack span, at its lower
     tension, moves more during the ramp (an acceptance row: DIFFERS (explained))."""
@@ -69,6 +74,7 @@ def test_the_slack_span_moves_more_than_the_tight_one_at_120_rad_s():
     assert bc.span_status({"tight": 2.0, "slack": 1.0}) == "PASS"
 
 
+@pytest.mark.slow
 def test_5_7_11_contact_points_give_the_same_driven_speed():
     c = bc.gauss_point_agreement()
     assert c.passed, c

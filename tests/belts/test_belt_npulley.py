@@ -81,6 +81,7 @@ def _reference(drive):
                  mu=drive.friction["mu"])
 
 
+@pytest.mark.slow
 def test_three_pulleys_with_an_idler_settle_to_the_steady_reference():
     """Speeds within 0.5 % (the creep-rate law's slip against Coulomb's stick arcs: 0.15 %
     seen), the driver's torque within 1 % (0.46 % seen: the driven pulley's inertia and the
@@ -194,6 +195,7 @@ def test_tensioner_jacobian_matches_central_differences(by, rtol):
     assert np.abs(FD[:, ja] - D[:, ja]).max() <= rtol * np.abs(D[:, ja]).max()
 
 
+@pytest.mark.slow
 def test_serpentine_settles_to_the_steady_reference():
     """The serpentine drive (a tensioner arm on the slack span, an idler on the belt's back)
     with its belt's strain-rate damping (dEA = 0.5 N s), 60 elements, k_p = 1e8 N/m^2,

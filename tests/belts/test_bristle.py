@@ -190,6 +190,7 @@ def _thread_march(max_iter):
     return drive, m, ts
 
 
+@pytest.mark.slow
 def test_the_state_is_accepted_on_converged_steps_only():
     """The THREAD drive at its laid state, belt creeping along its path at 1 mm/s over a
     resting driver, its bristles bent 1-1.5 um (k_t z < mu F_n: sticking): a step whose Newton iteration fails (max_iter = 1) writes trial

@@ -241,6 +241,7 @@ def test_base_case_omega_is_explained_only_by_the_finest_case():
     assert not th.omega_explained(checks(fine * (1 - 1.1 * tol / 100)))
 
 
+@pytest.mark.slow
 def test_the_races_quadrature_changes_the_drive_little():
     """benchmarks/peers_thread.py races Exudyn with 3 elastic and 4 contact Gauss points per
     element (the file: 5 and 5) at Exudyn's 240 elements and step 1e-4 s: over the first

@@ -23,6 +23,7 @@ def test_model2_and_model1_checks(check):
     assert c.passed, c
 
 
+@pytest.mark.slow
 def test_fe_is_nearer_the_capstan_model_on_the_slack_side_as_the_thesis_says():
     """Thesis 4.6: the FE belt predicts higher slack tension and speed than the analytic
     model; its forces agree more with the capstan model than with the full one."""

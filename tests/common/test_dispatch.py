@@ -8,6 +8,7 @@ import sys
 from typing import NamedTuple
 
 import numpy as np
+import pytest
 from numba import njit, types
 
 from ancf.common import dispatch
@@ -63,6 +64,7 @@ def _outer():
     return Outer(Inner(np.array([1.0, 2.0])), np.array([0.5, 0.25]), 3)
 
 
+@pytest.mark.slow
 def test_tuple_and_struct_dispatch_alike():
     x = np.array([10.0, 100.0])
     assert _both(_outer(), x) == (212.25, 212.25)

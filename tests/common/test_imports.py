@@ -15,6 +15,7 @@ ROOT = Path(__file__).resolve().parents[2]
 HEAVY = ("sympy", "pandas", "dask", "matplotlib", "meshio")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("argv", [["run", "cantilever", "--json"],
                                   ["run", "pendulum", "--set", "t_end=0.05", "--json"],
                                   ["modes", "plate-square", "--json"]])
@@ -61,6 +62,7 @@ def test_static_run_loads_blas_without_scipy_linalg():
     assert loaded == ["scipy.linalg.cython_blas"]
 
 
+@pytest.mark.slow
 def test_the_preloaded_blas_serves_numba_and_scipy_linalg():
     """After the preload, a kernel's matrix product runs on it, and a later ``import
     scipy.linalg`` is the usual package, with the same BLAS module."""
@@ -175,6 +177,7 @@ def test_numba_cache_follows_the_sources(tmp_path):
     assert ancf.numba_cache_dir(tmp_path) != first
 
 
+@pytest.mark.slow
 def test_scenes_listing_is_kept_for_the_sources(tmp_path):
     """``ancf scenes`` lists from the scenes the first time in a source tree, and from the
     text kept beside numba's cache after that: the same text, no scene or numba loaded."""
@@ -193,6 +196,7 @@ def test_scenes_listing_is_kept_for_the_sources(tmp_path):
     assert list(tmp_path.glob("ancf-bench/*/scenes.txt"))
 
 
+@pytest.mark.slow
 def test_run_loads_numba_without_yaml_unless_numba_has_a_config_file(tmp_path):
     """numba imports PyYAML (10-15 ms) only to read a .numba_config.yaml in the working
     directory: `ancf run` loads numba without it where there is none (after it, `import

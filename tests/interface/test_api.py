@@ -151,6 +151,7 @@ def test_scenes_lists_scenes_and_references_with_parameters():
     assert cant["n_elements"]["default"] == ancf.run("cantilever").params["n_elements"]
 
 
+@pytest.mark.slow
 def test_sweep_returns_a_dataframe_and_recommend_answers_from_it(tmp_path):
     import pandas as pd
     out = tmp_path / "sw.parquet"
@@ -175,6 +176,7 @@ def test_sweep_returns_a_dataframe_and_recommend_answers_from_it(tmp_path):
         ancf.recommend("cantilever", -1.0, data=out)
 
 
+@pytest.mark.slow
 def test_import_ancf_is_cheap_and_the_api_light():
     code = ("import sys, ancf\n"
             "before = 'ancf.api' in sys.modules or 'numpy' in sys.modules\n"
@@ -204,6 +206,7 @@ def _readme_python_blocks():
     return re.findall(r"```python\n(.*?)```", section, flags=re.S)
 
 
+@pytest.mark.slow
 def test_the_readme_python_examples_run(tmp_path, monkeypatch, capsys):
     blocks = _readme_python_blocks()
     assert len(blocks) >= 3

@@ -40,7 +40,8 @@ def test_fuzz_covers_every_class_and_command():
     assert len(CASES) >= 100
 
 
-@pytest.mark.parametrize("case", CASES, ids=_id)
+@pytest.mark.parametrize("case", [pytest.param(c, marks=pytest.mark.slow) if c.get("slow") else c
+                                  for c in CASES], ids=_id)
 def test_fuzz_case(case, capsys, tmp_path):
     for name, text in case.get("files", {}).items():  # files the case needs, in {tmp}
         (tmp_path / name).write_text(text)

@@ -110,6 +110,7 @@ def test_torsion_constant_of_the_rectangle_is_the_tabulated_one(ratio, k1):
 
 
 # ------------------------------------------------------------------ Princeton beam
+@pytest.mark.slow
 def test_princeton_linear3d_and_belt3d_against_ansys():
     for element in ("linear3d", "belt3d"):
         for c in "yz":

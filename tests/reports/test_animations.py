@@ -26,6 +26,7 @@ def serpentine():
     return res
 
 
+@pytest.mark.slow
 def test_gif_reads_back_frame_per_step(serpentine, tmp_path):
     a = animate(serpentine, tmp_path / "serp.gif", max_frames=8)
     n = serpentine.times.size  # the crank turns 0.2 rad: every step is in the last revolution
@@ -35,6 +36,7 @@ def test_gif_reads_back_frame_per_step(serpentine, tmp_path):
     assert a.size == a.path.stat().st_size < 2e6
 
 
+@pytest.mark.slow
 def test_rerun_writes_the_same_bytes(serpentine, tmp_path):
     one = animate(serpentine, tmp_path / "a.gif", max_frames=4).path.read_bytes()
     two = animate(serpentine, tmp_path / "b.gif", max_frames=4).path.read_bytes()

@@ -217,6 +217,7 @@ def test_every_chapter_is_written(quick):
     assert "--quick" in (quick / "README.md").read_text()
 
 
+@pytest.mark.slow
 def test_every_figure_is_a_png_and_every_data_file_exists(quick):
     seen = 0
     for name in CHAPTERS:
@@ -230,10 +231,20 @@ def test_every_figure_is_a_png_and_every_data_file_exists(quick):
     assert all(p.read_bytes()[:8] == PNG for p in (quick / "figures").glob("*.png"))
 
 
+def _test_module(module: str):
+    """The test module ``module`` (its file found anywhere below tests/), imported."""
+    path = next(Path(__file__).resolve().parents[1].rglob(f"{module}.py"))
+    spec = importlib.util.spec_from_file_location(f"_agrees_{module}", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@pytest.mark.slow
 def test_acceptance_statuses_agree_with_the_tests(quick):
     assert _statuses(quick) == _expected()
     for (module, name), _ in AGREES.values():
-        mod = importlib.import_module(module)
+        mod = _test_module(module)
         assert callable(getattr(mod, name, None)), f"{module}.{name} is gone: update AGREES"
 
 
@@ -304,6 +315,7 @@ def test_run_store_meets_overrides_spelled_differently(tmp_path, monkeypatch):
     assert store.stored("axial-bar", {"n_elements": default_n + 1}) is None
 
 
+@pytest.mark.slow
 def test_heartbeat_speaks_after_silence_and_ends_with_its_input():
     """`python -m ancf.reports.heartbeat`: silent while lines come, then one line per
     silence naming the last step; it ends when its input closes."""
@@ -343,6 +355,7 @@ def test_the_3d_belt_chapter_comes_after_its_sweep():
     assert FIRST == ("belt3d",)
 
 
+@pytest.mark.slow
 def test_no_chapter_page_holds_a_timing(quick):
     """CPU times vary per run: no table column and no plot of them on a chapter page (they
     belong on its timing page), so a regeneration leaves the pages as they were."""

@@ -204,6 +204,7 @@ def test_pendulum_energy_deviation_below_thesis():
     assert r["steps"] > 0 and r["nfev"] > 0
 
 
+@pytest.mark.slow
 def test_pendulum_8_and_16_elements_agree_within_1_percent_of_L():
     """Each tip coordinate (Fig. 2.6 plots the vertical one) within 1 % of L (issue 3).  The
     Euclidean tip distance is 1.03 % of L for the linear element (0.45 % for

@@ -73,6 +73,7 @@ def test_recommend_cantilever_1e3_answers_with_evidence(capsys, cantilever_answe
     assert "cheapest model" in a["message"] and "Physics needed" in a["message"]
 
 
+@pytest.mark.slow
 def test_recommend_second_call_uses_the_cached_sweep(capsys, cantilever_answer):
     rc, out, err = _cli(capsys, "recommend", "cantilever", "--tol", "1e-3", "--json",
                         "--no-progress")
@@ -105,6 +106,7 @@ def test_unreachable_tolerance_is_reported_not_faked(capsys, cantilever_answer):
     assert a["error"] > 1e-5  # the best error achieved, as evidence
 
 
+@pytest.mark.slow
 def test_recommend_never_proposes_a_model_lacking_needed_physics(tmp_path, monkeypatch):
     out = tmp_path / "ss.csv"
     run_sweep("simply-supported", references.spec("simply-supported").recommend_grids, out=out,
@@ -122,6 +124,7 @@ def test_recommend_never_proposes_a_model_lacking_needed_physics(tmp_path, monke
     assert "excluded for lacking shear" in r["message"]
 
 
+@pytest.mark.slow
 def test_lighter_model_than_the_default_is_said_with_numbers(tmp_path):
     out = tmp_path / "bar.parquet"
     run_sweep("axial-bar", references.spec("axial-bar").recommend_grids, out=out, workers=2,
@@ -171,6 +174,7 @@ def test_recommend_belt2d_meets_the_tolerance(capsys):
     assert _rerun_error(capsys, "belt2d", params, "self") == pytest.approx(a["error"], rel=1e-9)
 
 
+@pytest.mark.slow
 def test_recommend_belt3d_answers_with_bechtel_as_reference(capsys):
     """belt3d over its first 0.02 s (the belt settled at rest, driver not yet turning,
     omega_final = 1 rad/s and no torque for Bechtel's steady belt): the grid of plates x
@@ -208,6 +212,7 @@ def test_recommend_refuses_when_the_analytic_reference_cannot_exist(capsys):
     assert f"{top:.6g}" == "3.88968" and p.default_reference == "bechtel"
 
 
+@pytest.mark.slow
 def test_recommend_says_the_reference_is_missing_not_no_converged_run(tmp_path, capsys):
     """Rows that converged but carry no error because the reference failed: the answer
     names the missing reference, not 'no converged run'."""

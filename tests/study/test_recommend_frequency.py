@@ -66,6 +66,7 @@ def test_recommend_frequency_meets_tol_and_nothing_cheaper_does(scene, tol, fixe
     assert _measured(scene, cheaper["params"] | fixed) > tol
 
 
+@pytest.mark.slow
 def test_sweep_frequency_cli_rows_and_reference(tmp_path, capsys):
     out = tmp_path / "f.csv"
     rc, stdout, _ = _cli(capsys, "sweep", "simply-supported", "--quantity", "frequency",
@@ -79,6 +80,7 @@ def test_sweep_frequency_cli_rows_and_reference(tmp_path, capsys):
     assert set(df["quantity"]) == {"frequency"} and df["error"].iloc[1] < df["error"].iloc[0]
 
 
+@pytest.mark.slow
 def test_recommend_frequency_prints_an_ancf_modes_command(capsys):
     rc, out, _ = _cli(capsys, "recommend", "simply-supported", "--quantity", "frequency",
                       "--tol", "1e-2", "--no-progress", "--workers", "1")
@@ -100,6 +102,7 @@ def test_frequency_quantity_bad_input(capsys, argv, text):
     assert rc == 2 and err.startswith(text) and len(err.strip().splitlines()) == 1
 
 
+@pytest.mark.slow
 def test_frequency_runs_report_the_modes_schema_and_the_api_sweeps_them():
     """A frequency run's results are `ancf modes`'s (its schema, no key of its own); the
     Python API sweeps them as the command line does."""

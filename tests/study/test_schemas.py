@@ -39,6 +39,7 @@ def test_every_scene_and_reference_has_a_schema():
     assert set(NAMES) == set(RESULTS) and len(NAMES) >= 9
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", NAMES)
 def test_default_run_matches_its_schema(name):
     out = _run(name, SHORT.get(name, {}))

@@ -127,6 +127,7 @@ GRID = [{"element": ["linear"], "integration": ["thesis", "report-selective", "r
         {"element": ["omar-shabana"], "integration": ["thesis"], "n_elements": [2, 4, 8]}]
 
 
+@pytest.mark.slow
 def test_repeated_sweeps_choose_the_same_configurations(workdir):
     """Two fresh sweeps of a small grid (fresh timings): the counted work of every run and
     the cheapest-configuration table agree exactly; only the CPU column may differ."""
@@ -189,6 +190,7 @@ def _pick(rows, err, defaults, work, keys=None):
     return rank(keys, work)[0]
 
 
+@pytest.mark.slow
 def test_picks_do_not_move_with_the_scatter_of_counted_work():
     """Issue 23: on every committed sweep, at every error level of the reports and against
     each reference, the pick is the same when each run's counted work moves by up to

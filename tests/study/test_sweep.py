@@ -90,6 +90,7 @@ def test_sweep_interrupted_and_resumed_without_recomputing(interrupted_and_resum
             in last), last
 
 
+@pytest.mark.slow
 def test_resume_of_a_finished_sweep_runs_nothing(workdir, interrupted_and_resumed):
     out = workdir / "cantilever.parquet"
     msgs = []
@@ -118,6 +119,7 @@ def test_same_sweep_on_a_local_dask_cluster_gives_identical_results(workdir,
     pd.testing.assert_frame_equal(a, b, check_dtype=False, check_exact=True)
 
 
+@pytest.mark.slow
 def test_failures_are_rows_and_do_not_stop_the_others(workdir):
     out = workdir / "failures.csv"
     grids = [{"n_elements": [1, 4]},                                   # fine
@@ -352,6 +354,7 @@ def test_the_other_workers_take_runs_after_the_pilot_compiled(monkeypatch):
     assert sweep._pilot_done(pilot, 0)            # it died: the others go on without it
 
 
+@pytest.mark.slow
 def test_a_finished_sweeps_workers_serve_the_next_sweep(workdir, monkeypatch):
     """The idle workers of a finished sweep wait for the next sweep of this process (a
     worker's start costs about 1.6 CPU-s); not across a change of the environment a worker

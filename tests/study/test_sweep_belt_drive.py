@@ -61,6 +61,7 @@ def test_model_parameters_resolve_to_the_files_values_and_move_out_of_set():
         sc.resolve({"n_elements": "30", "belt.n_elements": "40"})
 
 
+@pytest.mark.slow
 def test_sweep_and_recommend_a_drive_file(tmp_path, capsys):
     """Two meshes of three_pulleys.toml, 0.1 s: both rows scored against the steady
     reference; recommend from the rows picks the cheaper where both meet the tolerance,

@@ -24,6 +24,7 @@ def test_report_generator_pins_one_blas_thread_before_numpy():
     assert out == "1,1,1"
 
 
+@pytest.mark.slow
 def test_sweep_workers_start_with_one_blas_thread(monkeypatch):
     """The environment a sweep worker process actually has once it is ready, with a user's
     OPENBLAS_NUM_THREADS=2 in ours (OpenBLAS, OpenMP and MKL read it when they load)."""
