@@ -11,7 +11,8 @@ a constant changed consistently in scenes and references alike), run the named t
 in the copy with a time limit, and print a markdown row: caught (the failing test and
 its first assertion) or missed.  The checkout itself is never written.  Exit code 0
 when every mutation was caught.  Not collected by pytest (no ``test_`` prefix).
-``--out FILE`` also writes the table to FILE.  One run at a time (the copy's path is fixed).
+``--out FILE`` also writes the table to FILE; ``--fast`` runs only the named tests that are
+not marked slow (the fast tier, ``make test-fast``), so a row says whether that tier catches it.  One run at a time (the copy's path is fixed).
 """
 from __future__ import annotations
 
@@ -27,6 +28,7 @@ EVERYWHERE = "ancf/ analytic/"   # every .py file of the package
 PACKAGE = ("ancf", "analytic")
 TIME_LIMIT = 900  # s per mutation (all its tests)
 WORK = Path(tempfile.gettempdir()) / "ancf-mutations"
+FAST = []  # ["-m", "not slow"] with --fast: only the fast tier's tests (make test-fast) of those named
 TD, TP = "tests/scenes/test_dynamics.py::", "tests/scenes/test_published_tables.py::"
 TA = "tests/analytic/test_analytic.py::"
 TB = "tests/belts/test_belt_drive.py::"
@@ -79,7 +81,8 @@ MUTATIONS = [
     ("spinning beam E +1 %", "ancf/scenes/spinning_beam.py",
      plus_1_percent("n_elements=3, E=", "6.895e10"), TD + "test_spinning_beam_axial_extension_against_eq_2_36"),
     ("opposing torque T_a helps the driven pulley", "ancf/belts/forces.py",
-     ("fz[n] = -T[DRIVEN] + Ta", "fz[n] = -T[DRIVEN] - Ta"),
+     ("fz[n + j] = -T[p] + laws[p] + drive.damping[j] * omegas[p]",
+      "fz[n + j] = -T[p] - laws[p] + drive.damping[j] * omegas[p]"),
      TB + "test_span_tensions_carry_the_driven_torque"),
     ("driver ramp ends at 0.5 s (Eq. 3.29)", "ancf/belts/pulleys.py",
      ("T0, T1 = 0.05, 0.6", "T0, T1 = 0.05, 0.5"), TB + "test_eq_3_29_at_its_breakpoints"),
@@ -91,15 +94,15 @@ MUTATIONS = [
     ("3D creep slope nu_s halved in the linear branch", "ancf/belts/friction/creep_rate.py",
      ("f[i] = -nu * v[i]", "f[i] = -0.5 * nu * v[i]"),
      T3 + "test_sliding_strip_follows_the_creep_rate_law"),
-    ("3D pulley surface speed omega rho instead of omega R", "ancf/belts/contact3d.py",
-     ("vs[c] = vr[c] - om * R * t[c] - wn * n[c]", "vs[c] = vr[c] - om * rho * t[c] - wn * n[c]"),
+    ("3D pulley surface speed with the wrong sign along x", "ancf/belts/contact3d.py",
+     ("vs0 = vr[0] - om * R * t0 - wn * n0", "vs0 = vr[0] + om * R * t0 - wn * n0"),
      T3 + "test_sliding_strip_follows_the_creep_rate_law"),
     ("3D bounding disc without its radius", "ancf/belts/contact3d.py",
      ("    return dist - rb <= R + BOUND_MARGIN * scale", "    return dist <= R + BOUND_MARGIN * scale"),
      T3 + "test_bounding_test_never_skips_a_pair_in_contact"),
     ("saturated friction without df/dF_n", "ancf/belts/friction/creep_rate.py",
-     ("D[i, c] = -mu * (v[i] / s) * gF[c] - g * (G[i, c] - v[i] / s * ug)",
-      "D[i, c] = -g * (G[i, c] - v[i] / s * ug)"),
+     ("D[i, c] = -mu * u[i] * gF[c] - g * (G[i, c] - u[i] * ug)",
+      "D[i, c] = -g * (G[i, c] - u[i] * ug)"),
      "tests/belts/test_friction.py::test_chain_matches_central_differences_of_the_force"),
     ("3D Jacobian without the turning of n", "ancf/belts/contact3d.py",
      ("D[i, c] += Fn * t[i] * t[c] / rho", "D[i, c] += 0.0"),
@@ -144,7 +147,7 @@ MUTATIONS = [
      (TW + "test_model_1_driver_moves_away_from_the_driven_pulley",
       TW + "test_model_1_belt_is_tensioned_once_the_driver_has_moved")),
     ("3D driver shift reversed inside the kernel", "ancf/belts/forces.py",
-     ("o[0] += laws[2] * drive.shift", "o[0] -= laws[2] * drive.shift"),
+     ("o[0] += laws[npul] * drive.shift", "o[0] -= laws[npul] * drive.shift"),
      TW + "test_model_1_belt_is_tensioned_once_the_driver_has_moved"),
     ("3D driven pulley inertia x 1.25 (scene to drive)", "ancf/scenes/belt3d.py",
      ('inertia=p["inertia"],', 'inertia=1.25 * p["inertia"],'),
@@ -170,7 +173,25 @@ MUTATIONS = [
     ("0.8 mm jump along the spans of the wrapped path", "ancf/belts/path.py",
      ("r[sel] = p + sl[:, None] * d", "r[sel] = p + (sl[:, None] + 8e-4) * d"),
      (TW + "test_belt2d_laid_belt_lies_on_the_path_at_equal_arc_spacing",
-      TW + "test_belt3d_laid_belt_lies_on_the_path_at_equal_arc_spacing")),
+      TW + "test_belt3d_laid_belt_lies_on_the_path_at_equal_arc_spacing")),    # issue 32: a wrong sign in an element, a law or a solver (the fast tier must catch each)
+    ("Coulomb friction pushes along the sliding", "ancf/belts/friction/coulomb.py",
+     ("f[i] = -g * v[i]", "f[i] = g * v[i]"), "tests/belts/test_friction.py"),
+    ("bristle spring and damper push along the sliding", "ancf/belts/friction/bristle.py",
+     ("f[i] = -(kt * z0[i] + c * v[i])", "f[i] = (kt * z0[i] + c * v[i])"),
+     "tests/belts/test_friction.py"),
+    ("cosine-step load law turned upside down", "ancf/belts/pulleys.py",
+     ("step = 0.5 * final * (1.0 - np.cos(", "step = 0.5 * final * (1.0 + np.cos("),
+     "tests/belts/test_pulley_laws.py"),
+    ("Green strain's quadratic part with the wrong sign (2D elements)", "ancf/elements/green2d.py",
+     ("exx = a0 * ux0 + a1 * ux1 + 0.5 * (", "exx = a0 * ux0 + a1 * ux1 - 0.5 * ("),
+     "tests/elements"),
+    ("element field's Green strain with the wrong sign of its 1", "ancf/elements/compiled_element.py",
+     ('return 0.5 * (np.einsum("...d,...d->...", a, a) - 1.0)',
+      'return 0.5 * (np.einsum("...d,...d->...", a, a) + 1.0)'), "tests/elements"),
+    ("static Newton residual with the internal force's sign flipped", "ancf/solvers/static.py",
+     ("r = lam * Qr - grad", "r = lam * Qr + grad"), "tests/solvers"),
+    ("generalized-alpha gamma with af and am swapped", "ancf/solvers/generalized_alpha.py",
+     ("gamma = 0.5 + af - am", "gamma = 0.5 - af + am"), "tests/solvers"),
 ]
 
 
@@ -227,12 +248,14 @@ def caught(path: str, old: str, new: str, tests) -> str:
         env = dict(os.environ, PYTHONPATH=str(tree), NUMBA_CACHE_DIR=str(_cache(changed)))
         try:
             run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-rf", "-p",
-                                  "no:cacheprovider", *tests], cwd=tree, env=env,
+                                  "no:cacheprovider", *FAST, *tests], cwd=tree, env=env,
                                  capture_output=True, text=True, timeout=TIME_LIMIT)
         except subprocess.TimeoutExpired:
             return f"timed out after {TIME_LIMIT} s"
     finally:
         shutil.rmtree(tree, ignore_errors=True)
+    if run.returncode == 5:
+        return "NO (no fast test named)"
     if run.returncode != 1:
         return "NO" if run.returncode == 0 else f"pytest exit code {run.returncode}"
     failed = [ln.split()[1].split("::", 1)[1] for ln in run.stdout.splitlines()
@@ -243,11 +266,14 @@ def caught(path: str, old: str, new: str, tests) -> str:
 
 def _names(tests) -> str:
     tests = (tests,) if isinstance(tests, str) else tuple(tests)
-    return "<br>".join(f"`{t.split('::', 1)[1]}`" for t in tests)
+    return "<br>".join(f"`{t.split('::', 1)[-1]}`" for t in tests)
 
 
 def main(args) -> int:
     out = None
+    if "--fast" in args:
+        args = [a for a in args if a != "--fast"]
+        FAST[:] = ["-m", "not slow"]
     if "--out" in args:
         i = args.index("--out")
         out, args = Path(args[i + 1]), args[:i] + args[i + 2:]
