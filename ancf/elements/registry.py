@@ -26,6 +26,11 @@ from ancf.elements.basis import family_shapes
 
 KINDS = ("beam", "plate", "belt")
 
+#: the physics an element can model; ``ancf recommend`` proposes only models providing the
+#: physics a question needs (``ancf.study.references.model_physics``)
+PHYSICS = ("axial", "bending", "shear", "large-rotation", "inertia", "contact", "3D")
+_BEAM = frozenset({"axial", "bending", "shear", "large-rotation", "inertia"})
+
 
 class Field(NamedTuple):
     """An element field at points: ``r`` (nel, npts, dim) positions, m; ``slopes``
@@ -70,6 +75,7 @@ class ElementType:
     material: str   # the material law
     path: str       # "module:Class"
     doc: str
+    physics: frozenset  # what it models (a subset of PHYSICS): the recommender's filter
     knobs: tuple = ()  # element-specific parameters besides E, nu, rho, integration
     options: Callable[[dict], dict] | None = None  # scene parameters -> keyword arguments
     variants: tuple | None = None  # (default: one per integration scheme)
@@ -144,33 +150,39 @@ ELEMENTS = {t.name: t for t in (
                 strain="ancf.elements.green2d",
                 material="beam_material (Eq. 2.18 without Poisson coupling, ks G shear)",
                 path="ancf.elements.linear2d:LinearBeam2D", knobs=("ks",),
+                physics=_BEAM,
                 doc="Kerkkänen's linear shear-deformable beam, 8 coordinates"),
     ElementType(name="omar-shabana", dim=2, kind="beam", family="cubic2d", nodes=2,
                 strain="ancf.elements.green2d", material="lame_matrix (Eq. 2.17, plane strain)",
                 path="ancf.elements.omar_shabana:OmarShabana2D",
+                physics=_BEAM,
                 doc="Omar and Shabana's beam, 12 coordinates"),
     ElementType(name="linear3d", dim=3, kind="beam", family="linear3d", nodes=2,
                 strain="ancf.elements.green3d",
                 material="beam_material_3d (Eq. 2.18 in 3D, ks G shear)",
                 path="ancf.elements.linear3d:LinearBeam3D", knobs=("ks",),
                 options=_linear3d_options,
+                physics=_BEAM | {"3D"},
                 doc="the spatial linear shear-deformable beam, 18 coordinates"),
     ElementType(name="belt2d", dim=2, kind="belt", family="cubic2d", nodes=2,
                 strain="ancf.elements.dufva2d",
                 material="Dufva's densities: E A alpha1, E I alpha2, ks G A (thesis 3.1)",
                 path="ancf.elements.dufva2d:DufvaBelt2D", knobs=("alpha1", "alpha2", "ks"),
                 variants=(("", {}), ("alpha", _ALPHA)),
+                physics=_BEAM,
                 doc="Dufva's planar belt element, 12 coordinates"),
     ElementType(name="belt3d", dim=3, kind="belt", family="cubic3d", nodes=2,
                 strain="ancf.elements.belt3d",
                 material="Dufva's densities: E A alpha1, E I alpha2, ks G A alpha2 (Eqs 4.40-4.42)",
                 path="ancf.elements.belt3d:DufvaBelt3D", knobs=("alpha1", "alpha2", "ks"),
                 options=_belt3d_options, variants=(("", {}), ("alpha", _ALPHA)),
+                physics=_BEAM | {"3D"},
                 doc="Dufva's spatial belt element, 24 coordinates"),
     ElementType(name="plate36", dim=3, kind="plate", family="plate36", nodes=4,
                 strain="ancf.elements.plate36",
                 material="plane stress membrane E h/(1 - nu^2), Kirchhoff bending D (Eqs 4.16-4.17)",
                 path="ancf.elements.plate36:Plate36", knobs=("ng",), variants=(),
+                physics=frozenset({"axial", "bending", "large-rotation", "inertia", "3D"}),
                 doc="Dufva and Shabana's thin plate, 36 coordinates"),
 )}
 

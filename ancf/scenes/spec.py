@@ -33,6 +33,7 @@ import numpy as np
 
 from ancf.common.paths import REPORTS
 from ancf.elements.catalogue import ELEMENTS
+from ancf.elements.registry import PHYSICS
 from ancf.scenes.base import ReferenceFailed
 
 __all__ = ["DYNAMIC_KNOBS", "FREQUENCY_ERROR", "PHYSICS", "REFERENCE_VERSION", "STATIC_KNOBS",
@@ -41,7 +42,6 @@ __all__ = ["DYNAMIC_KNOBS", "FREQUENCY_ERROR", "PHYSICS", "REFERENCE_VERSION", "
            "frequency_error", "knob_text", "relative", "self_reference", "stable_hash"]
 
 #: Physics a scene may need / a model may provide.
-PHYSICS = ("axial", "bending", "shear", "large-rotation", "inertia", "contact", "3D")
 
 
 #: Bump when a change of the code would change a cached self-reference.

@@ -28,14 +28,20 @@ __all__ = ["DYNAMIC_KNOBS", "ELEMENT_PHYSICS", "FREQUENCY_SPECS", "PHYSICS", "QU
            "spec", "specs", "stable_hash"]
 
 
-#: What each element family provides.  Both planar elements carry extension, bending
-#: and shear (Omar-Shabana: also the transverse stretch), in 2D, with large rotations.
-ELEMENT_PHYSICS = {
-    "linear": frozenset({"axial", "bending", "shear", "large-rotation", "inertia"}),
-    "omar-shabana": frozenset({"axial", "bending", "shear", "large-rotation", "inertia"}),
-    "linear3d": frozenset({"axial", "bending", "shear", "large-rotation", "inertia", "3D"}),
-    "belt3d": frozenset({"axial", "bending", "shear", "large-rotation", "inertia", "3D"}),
-}
+
+
+def _element_physics() -> dict:
+    """What each element of a beam mesh provides (the elements' ``physics``, registry
+    order): the planar beams of ``catalogue.CATALOGUE`` and the 3D ones of
+    ``models.beam3d.BUILDERS``, the choices of the swept beam scenes."""
+    from ancf.elements.catalogue import CATALOGUE
+    from ancf.elements.registry import ELEMENTS
+    from ancf.models.beam3d import BUILDERS
+    return {n: e.physics for n, e in ELEMENTS.items() if n in CATALOGUE or n in BUILDERS}
+
+
+#: What each element family provides (derived from the element registry).
+ELEMENT_PHYSICS = _element_physics()
 
 
 #: what a sweep computes: the scene's own results, or its natural frequencies
