@@ -24,6 +24,19 @@ def test_a_law_starts_at_zero_and_ends_at_its_final_value(table, name):
     assert f(t, -14.0, T0, T1) == pytest.approx(-2.0 * y, rel=1e-14, abs=1e-300)
 
 
+@pytest.mark.parametrize("table, name", LAWS)
+def test_a_law_rises_monotonically_without_a_jump(table, name):
+    """Between t0 and t1 a law climbs to its final value: never down, and no step larger
+    than 2 % of the final value on a 0.1 ms grid (the largest is the cosine ramp's jump
+    at t0 = 0.05 s as printed, Eq. 3.30: (1 - cos(pi t0 / t1)) / 2 = 1.7 % for t1 = 0.6 s);
+    a law turned upside down or reversed fails here."""
+    f = getattr(pulleys, table)[name]
+    t = np.linspace(0.0, 2.0, 20001)
+    steps = np.diff(f(t, 7.0, T0, T1))
+    assert steps.min() >= -1e-12 * 7.0
+    assert steps.max() <= 0.02 * 7.0
+
+
 @pytest.mark.parametrize("table, field", [("SPEED_LAWS", "driver_law"),
                                           ("TORQUE_LAWS", "torque_law")])
 def test_an_unknown_law_is_refused_naming_the_field(table, field):
