@@ -9,22 +9,12 @@ import pytest
 
 import ancf
 from analytic import beam_modes, plate_modes
-from ancf.cli import main
 from ancf.study.recommend import recommend
 
 
 @pytest.fixture(scope="module", autouse=True)
 def cache(workdir):
     return workdir
-
-
-def _cli(capsys, *argv):
-    try:
-        rc = main(list(argv))
-    except SystemExit as exc:
-        rc = exc.code
-    out, err = capsys.readouterr()
-    return rc, out, err
 
 
 def _measured(scene: str, params: dict) -> float:
@@ -67,9 +57,9 @@ def test_recommend_frequency_meets_tol_and_nothing_cheaper_does(scene, tol, fixe
 
 
 @pytest.mark.slow
-def test_sweep_frequency_cli_rows_and_reference(tmp_path, capsys):
+def test_sweep_frequency_cli_rows_and_reference(tmp_path, cli):
     out = tmp_path / "f.csv"
-    rc, stdout, _ = _cli(capsys, "sweep", "simply-supported", "--quantity", "frequency",
+    rc, stdout, _ = cli("sweep", "simply-supported", "--quantity", "frequency",
                          "--grid", "n_elements=4,16", "--set", "count=2", "--out", str(out),
                          "--no-progress", "--workers", "1", "--json")
     data = json.loads(stdout)
@@ -81,8 +71,8 @@ def test_sweep_frequency_cli_rows_and_reference(tmp_path, capsys):
 
 
 @pytest.mark.slow
-def test_recommend_frequency_prints_an_ancf_modes_command(capsys):
-    rc, out, _ = _cli(capsys, "recommend", "simply-supported", "--quantity", "frequency",
+def test_recommend_frequency_prints_an_ancf_modes_command(cli):
+    rc, out, _ = cli("recommend", "simply-supported", "--quantity", "frequency",
                       "--tol", "1e-2", "--no-progress", "--workers", "1")
     assert rc == 0 and "  ancf modes simply-supported --set element=" in out
     assert "count=" not in out.splitlines()[-1]
@@ -97,8 +87,8 @@ def test_recommend_frequency_prints_an_ancf_modes_command(capsys):
     (("sweep", "cantilever", "--quantity", "frequency", "--set", "count=0"),
      "error: count = 0"),
 ])
-def test_frequency_quantity_bad_input(capsys, argv, text):
-    rc, _, err = _cli(capsys, *argv)
+def test_frequency_quantity_bad_input(cli, argv, text):
+    rc, _, err = cli(*argv)
     assert rc == 2 and err.startswith(text) and len(err.strip().splitlines()) == 1
 
 

@@ -11,7 +11,6 @@ import pandas as pd
 import pytest
 
 from ancf.belts.drive_file import load
-from ancf.cli import main
 from ancf.common.params import InputError
 from ancf.common.paths import REPO
 from ancf.scenes import SCENES
@@ -30,15 +29,6 @@ SHORT = sum((("--set", s) for s in ("run.t_end=0.1", "run.steady_window=0.03",
 @pytest.fixture(scope="module", autouse=True)
 def cache(workdir):
     return workdir
-
-
-def _cli(capsys, *argv):
-    try:
-        rc = main(list(argv))
-    except SystemExit as exc:
-        rc = exc.code
-    out, err = capsys.readouterr()
-    return rc, out, err
 
 
 @pytest.mark.parametrize("name", ["three_pulleys.toml", "serpentine.toml"])
@@ -62,12 +52,12 @@ def test_model_parameters_resolve_to_the_files_values_and_move_out_of_set():
 
 
 @pytest.mark.slow
-def test_sweep_and_recommend_a_drive_file(tmp_path, capsys):
+def test_sweep_and_recommend_a_drive_file(tmp_path, cli):
     """Two meshes of three_pulleys.toml, 0.1 s: both rows scored against the steady
     reference; recommend from the rows picks the cheaper where both meet the tolerance,
     and reports no model where none does."""
     out = tmp_path / "drive.csv"
-    rc, stdout, err = _cli(capsys, "sweep", "belt-drive", "--file", THREE, *SHORT, "--grid",
+    rc, stdout, err = cli("sweep", "belt-drive", "--file", THREE, *SHORT, "--grid",
                            "n_elements=40,60", "--out", str(out), "--workers", "2",
                            "--no-progress", "--json")
     assert rc == 0, err
@@ -77,12 +67,12 @@ def test_sweep_and_recommend_a_drive_file(tmp_path, capsys):
     assert list(df["n_elements"]) == [40, 60] and np.all(np.isfinite(df["error"]))
     assert df["work"].iloc[0] < df["work"].iloc[1]
     tol = float(1.01 * df["error"].max())
-    rc, stdout, _ = _cli(capsys, "recommend", "belt-drive", "--file", THREE, *SHORT, "--tol",
+    rc, stdout, _ = cli("recommend", "belt-drive", "--file", THREE, *SHORT, "--tol",
                          f"{tol!r}", "--data", str(out), "--json")
     rec = json.loads(stdout)
     assert rc == 0 and rec["found"] and rec["params"]["n_elements"] == 40
     assert rec["error"] == pytest.approx(df["error"].iloc[0], rel=1e-12)
-    rc, stdout, _ = _cli(capsys, "recommend", "belt-drive", "--file", THREE, *SHORT, "--tol",
+    rc, stdout, _ = cli("recommend", "belt-drive", "--file", THREE, *SHORT, "--tol",
                          f"{float(0.5 * df['error'].min())!r}", "--data", str(out), "--json")
     assert rc == 3 and not json.loads(stdout)["found"]
 
@@ -93,6 +83,6 @@ def test_sweep_and_recommend_a_drive_file(tmp_path, capsys):
     (("sweep", "cantilever", "--file", THREE), "error: --file: scene 'cantilever' takes no file"),
     (("sweep", "belt-drive", "--set", "friction.mu=-1"), "error: friction.mu = -1"),
 ])
-def test_drive_sweep_bad_input(capsys, argv, text, tmp_path):
-    rc, _, err = _cli(capsys, *argv, "--out", str(tmp_path / "x.csv"), "--no-progress")
+def test_drive_sweep_bad_input(cli, argv, text, tmp_path):
+    rc, _, err = cli(*argv, "--out", str(tmp_path / "x.csv"), "--no-progress")
     assert rc == 2 and err.startswith(text) and len(err.strip().splitlines()) == 1, err
