@@ -14,16 +14,9 @@ import pytest
 meshio = pytest.importorskip("meshio")
 
 import ancf  # noqa: E402
-from ancf.cli import main  # noqa: E402
 from ancf.scenes.base import Scene  # noqa: E402
 
 PER_ELEMENT = 8
-
-
-def _cli(capsys, *argv):
-    rc = main(list(argv))
-    out, err = capsys.readouterr()
-    return rc, out, err
 
 
 def _series(directory, scene):
@@ -33,10 +26,10 @@ def _series(directory, scene):
     return [(float(d.get("timestep")), meshio.read(directory / d.get("file"))) for d in sets]
 
 
-def test_static_beam_is_its_centreline(tmp_path, capsys):
+def test_static_beam_is_its_centreline(tmp_path, cli):
     n = 4
-    rc, out, err = _cli(capsys, "run", "cantilever", "--set", f"n_elements={n}", "--json",
-                        "--vtk", str(tmp_path / "out"))
+    rc, out, err = cli("run", "cantilever", "--set", f"n_elements={n}", "--json",
+                   "--vtk", str(tmp_path / "out"))
     assert rc == 0 and err == ""
     res = json.loads(out)["results"]  # stdout stays the JSON alone
     series = _series(tmp_path / "out", "cantilever")
@@ -56,9 +49,9 @@ def test_static_beam_is_its_centreline(tmp_path, capsys):
     assert np.all(np.diff(x) > 0)
 
 
-def test_without_json_the_cli_says_what_it_wrote(tmp_path, capsys):
-    rc, out, err = _cli(capsys, "run", "pendulum", "--set", "n_elements=2", "--set",
-                        "t_end=0.02", "--set", "output_dt=0.01", "--vtk", str(tmp_path))
+def test_without_json_the_cli_says_what_it_wrote(tmp_path, cli):
+    rc, out, err = cli("run", "pendulum", "--set", "n_elements=2", "--set",
+                   "t_end=0.02", "--set", "output_dt=0.01", "--vtk", str(tmp_path))
     assert rc == 0 and err == ""
     assert f"vtk: wrote {tmp_path / 'pendulum.pvd'} (3 steps)" in out.splitlines()
 
@@ -88,11 +81,11 @@ def test_plate_is_quads_on_its_nodes(tmp_path):
         r.results["center_deflection_m"], rel=1e-12)
 
 
-def test_belt2d_has_axial_force_speed_and_contact_pressure(tmp_path, capsys):
+def test_belt2d_has_axial_force_speed_and_contact_pressure(tmp_path, cli):
     n = 20
-    rc, out, err = _cli(capsys, "run", "belt2d", "--set", f"n_elements={n}", "--set",
-                        "t_end=0.004", "--set", "output_dt=0.002", "--json",
-                        "--vtk", str(tmp_path / "b"))
+    rc, out, err = cli("run", "belt2d", "--set", f"n_elements={n}", "--set",
+                   "t_end=0.004", "--set", "output_dt=0.002", "--json",
+                   "--vtk", str(tmp_path / "b"))
     assert rc == 0, err
     res = json.loads(out)["results"]
     series = _series(tmp_path / "b", "belt2d")
@@ -137,7 +130,7 @@ def test_belt3d_has_axial_force_speed_and_contact_pressure(tmp_path):
 
 
 @pytest.mark.parametrize("how", ["file", "under-file", "unwritable", "uncreatable"])
-def test_bad_vtk_path_is_one_error_line_before_the_run(tmp_path, capsys, monkeypatch, how):
+def test_bad_vtk_path_is_one_error_line_before_the_run(tmp_path, monkeypatch, how, cli):
     f = tmp_path / "a-file"
     f.write_text("x")
     if how == "file":
@@ -159,24 +152,22 @@ def test_bad_vtk_path_is_one_error_line_before_the_run(tmp_path, capsys, monkeyp
     def boom(self, overrides=None):
         raise AssertionError("the run started")
     monkeypatch.setattr(Scene, "execute", boom)
-    rc, out, err = _cli(capsys, "run", "cantilever", "--vtk", str(target), "--json")
+    rc, out, err = cli("run", "cantilever", "--vtk", str(target), "--json")
     assert rc == 2 and out == ""
     assert err.count("\n") == 1 and err.startswith("error: --vtk ") and str(target) in err
     with pytest.raises(ancf.InputError, match="--vtk"):
         ancf.run("cantilever", vtk=target)
 
 
-def test_bad_input_wins_over_the_directory(tmp_path, capsys):
-    rc, _, err = _cli(capsys, "run", "cantilever", "--set", "n_elements=0", "--vtk",
-                      str(tmp_path / "never"))
+def test_bad_input_wins_over_the_directory(tmp_path, cli):
+    rc, _, err = cli("run", "cantilever", "--set", "n_elements=0", "--vtk",
+                 str(tmp_path / "never"))
     assert rc == 2 and err.startswith("error: n_elements") and not (tmp_path / "never").exists()
 
 
-def test_vtk_is_only_on_run(tmp_path, capsys):
-    with pytest.raises(SystemExit) as exc:  # argparse: an unknown option of `analytic`
-        main(["analytic", "reissner", "--vtk", str(tmp_path)])
-    err = capsys.readouterr().err
-    assert exc.value.code == 2 and err.count("\n") == 1 and "--vtk" in err
+def test_vtk_is_only_on_run(tmp_path, cli):
+    rc, _, err = cli("analytic", "reissner", "--vtk", str(tmp_path))  # argparse: unknown option
+    assert rc == 2 and err.count("\n") == 1 and "--vtk" in err
 
 
 @pytest.mark.slow
