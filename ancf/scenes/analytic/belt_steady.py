@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from analytic import belt_steady
 from ancf.common.params import Param
+from ancf.scenes.analytic.shared import (BELT_STRAIN, CREEP_SHARE, SPEED_OVER_WAVE, Bound,
+                                         Validity, speed_over_wave)
 from ancf.scenes.base import NUM, STR, Scene, SceneResult, field, nullable
 
 #: its place in the list of references (ancf scenes, reports/schemas.md)
@@ -53,6 +55,34 @@ def _three_pulleys(p) -> list:
              "law": "driven", "torque": p["torque"]}]
 
 
+def _strain(p, r) -> float:
+    """Largest span strain T / EA."""
+    return max(s["tension_N"] for s in r.results["spans"]) / p["EA"]
+
+
+def _creep_share(p, r) -> float:
+    """Largest creep arc / wrap over the pulleys."""
+    return max(q["creep_arc_rad"] / q["wrap_rad"] for q in r.results["pulleys"])
+
+
+def _span_speed(p, r) -> float:
+    """Largest v / c over the spans (:func:`speed_over_wave`)."""
+    return max(speed_over_wave(s["speed"], s["tension_N"], p["EA"], p["rhoA"])
+               for s in r.results["spans"])
+
+
+#: the range of validity (issue 33): Bechtel's (:mod:`ancf.scenes.analytic.bechtel`) on
+#: every span and pulley
+VALIDITY = Validity((
+    Bound("the belt strain max T / EA", _strain, "the linear law T = EA (lambda - 1) of a belt",
+          hi=BELT_STRAIN),
+    Bound("the creep arc over the wrap max creep / wrap", _creep_share, "a stick arc at each "
+          "entry sets the pulleys' speeds: near the whole wrap the belt slips", hi=CREEP_SHARE),
+    Bound("a span's speed over its wave speed max v / sqrt(T lambda / rhoA)", _span_speed,
+          "the belt presses on the pulleys with (T - rhoA v^2 / lambda) / R, which vanishes "
+          "there: it lifts off", hi=SPEED_OVER_WAVE)))
+
+
 def _belt_steady(p):
     pulleys = _three_pulleys(p)
     L0 = belt_steady.path_length(pulleys) / (1.0 + p["T_i"] / p["EA"])
@@ -88,4 +118,5 @@ REFERENCE = Scene(
     "belt-steady", "Steady extensible belt (Bechtel's model) on N pulleys, here three: a "
     "driver, an idler or tensioner on its slack span and a driven pulley; span tensions "
     "and speeds, per pulley creep and stick arcs, slip, torque and a tensioner's angle "
-    "(any layout: analytic.belt_steady.solve).", PARAMS, _belt_steady, results=RESULTS)
+    "(any layout: analytic.belt_steady.solve).", PARAMS, _belt_steady, results=RESULTS,
+    warn=VALIDITY)

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from analytic import moving_string
 from ancf.common.params import Param
-from ancf.scenes.analytic.shared import count_param, magnitudes
+from ancf.scenes.analytic.shared import SPEED_OVER_WAVE, Bound, Validity, count_param, magnitudes
 from ancf.scenes.base import NUM, Scene, SceneResult, field, nullable
 
 #: its place in the list of references (ancf scenes, reports/schemas.md)
@@ -25,6 +25,13 @@ PARAMS = (
 )
 
 
+#: the range of validity (issue 33): a string, well below its critical speed
+VALIDITY = Validity((
+    Bound("the speed over the wave speed |v| / c", lambda p, r: abs(p["v"]) / r.results[
+        "wave_speed_m_s"], "a string: near c its frequencies vanish as 1 - v^2 / c^2 and the "
+        "neglected bending stiffness decides them", hi=SPEED_OVER_WAVE),))
+
+
 def _moving_string(p):
     f = moving_string.span_frequencies(p["T"], p["rho_A"], p["v"], p["L"], count=p["count"])
     c = moving_string.wave_speed(p["T"], p["rho_A"], p["L"])
@@ -41,4 +48,5 @@ RESULTS = {
 REFERENCE = Scene(
     "moving-string", "Transverse frequencies of an axially moving string span between "
     "fixed guides (the belt's free span).", PARAMS, _moving_string,
-    magnitudes(moving_string.check_speed, "T", "rho_A", "v", "L"), results=RESULTS)
+    magnitudes(moving_string.check_speed, "T", "rho_A", "v", "L"), results=RESULTS,
+    warn=VALIDITY)

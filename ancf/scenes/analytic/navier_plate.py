@@ -1,12 +1,35 @@
 """``ancf analytic navier-plate``: the simply supported Kirchhoff plate under pressure (Navier)."""
 from __future__ import annotations
 
+import math
+
 from analytic import navier_plate
-from ancf.scenes.analytic.shared import NAVIER, magnitudes
+from ancf.scenes.analytic.shared import (NAVIER, PLATE_KAPPA, SHEAR_SHARE, Bound, Validity,
+                                         magnitudes)
 from ancf.scenes.base import INT, Scene, SceneResult, field, nullable
 
 #: its place in the list of references (ancf scenes, reports/schemas.md)
 ORDER = 50
+
+#: centre deflection / thickness of the linear (Kirchhoff) plate: membrane action adds
+#: about (w / h)^2 / 2 to the stiffness of a plate held at its edges, 5 % at 0.3 h (the
+#: plate-square scene's bound, ancf.scenes.sense.THIN_PLATE_W_OVER_H)
+MAX_W_OVER_H = 0.3
+
+
+def _shear_share(p, r) -> float:
+    """Mindlin's first-order correction of the deflection's fundamental term, (k h)^2 /
+    (6 kappa (1 - nu)) with k^2 = pi^2 (1 / a^2 + 1 / b^2): shear adds about this share."""
+    k2 = math.pi ** 2 * (1.0 / p["a"] ** 2 + 1.0 / p["b"] ** 2)
+    return k2 * p["h"] ** 2 / (6.0 * PLATE_KAPPA * (1.0 - p["nu"]))
+
+
+#: the range of validity (issue 33): small deflection against the thickness, a thin plate
+VALIDITY = Validity((
+    Bound("the centre deflection |w| / h", lambda p, r: abs(r.results["center_deflection_m"])
+          / p["h"], "linear plate theory: no membrane stretching", hi=MAX_W_OVER_H),
+    Bound("the Kirchhoff shear share (k h)^2 / (6 kappa (1 - nu))", _shear_share,
+          "Kirchhoff's thin plate neglects shear: h small against the sides", hi=SHEAR_SHARE)))
 
 
 def _navier(p):
@@ -26,4 +49,5 @@ REFERENCE = Scene(
     "navier-plate", "Simply supported Kirchhoff plate under uniform pressure: Navier series "
     "centre deflection, summed as Levy's single series; 'terms' counts its correction "
     "terms (D = E h^3 / (12 (1 - nu^2))).", NAVIER, _navier,
-    magnitudes(navier_plate.check_magnitudes, "a", "b", "h", "E", "nu", "p"), results=RESULTS)
+    magnitudes(navier_plate.check_magnitudes, "a", "b", "h", "E", "nu", "p"), results=RESULTS,
+    warn=VALIDITY)

@@ -6,12 +6,24 @@ import numpy as np
 from analytic.dynamics_refs import rigid_pendulum
 from ancf.common.inputs import check_sampling, following, intervals
 from ancf.common.params import Param
+from ancf.scenes.analytic.shared import Bound, Validity
 from ancf.scenes.base import Scene, SceneResult, series
 
 #: its place in the list of references (ancf scenes, reports/schemas.md)
 ORDER = 100
 #: a reference the dynamic scenes are measured against (DYNAMIC_REFERENCES)
 DYNAMIC = True
+
+
+#: largest swing between two samples, rad: the tip's path drawn through the samples cuts the
+#: arc by L (1 - cos(dtheta / 2)) ~ L dtheta^2 / 8, 1 % of L at 0.28 rad
+MAX_SAMPLE_SWING = 0.28
+
+#: the range of validity (issue 33): a history that resolves the swing
+VALIDITY = Validity((
+    Bound("the swing between samples max |d theta|", lambda p, r: float(np.max(np.abs(np.diff(
+        r.results["theta"])), initial=0.0)), "a sampled history: the swing between its samples "
+        "resolved (a smaller output_dt)", hi=MAX_SAMPLE_SWING),))
 
 
 def _rigid(p):
@@ -41,4 +53,4 @@ REFERENCE = Scene(
      Param("t_end", 1.0, float, "s", "simulated time", lo=0, lo_open=True, hi=1e4),
      Param("output_dt", following(0.01, "t_end"), float, "s",
            "sampling interval (default 0.01 s, at most t_end)", lo=0, lo_open=True, hi=10)),
-    _rigid, check_sampling, results=RESULTS)
+    _rigid, check_sampling, results=RESULTS, warn=VALIDITY)

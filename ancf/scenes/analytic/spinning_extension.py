@@ -6,12 +6,20 @@ import math
 
 from analytic.dynamics_refs import spinning_extension
 from ancf.common.params import Param
+from ancf.scenes.analytic.shared import SMALL_STRAIN, Bound, Validity
 from ancf.scenes.base import Scene, SceneResult, nullable
 
 #: its place in the list of references (ancf scenes, reports/schemas.md)
 ORDER = 90
 #: a reference the dynamic scenes are measured against (DYNAMIC_REFERENCES)
 DYNAMIC = True
+
+
+#: the range of validity (issue 33): Eq. 2.36 is linear elasticity; its strain u' =
+#: cos(a x) / cos(a L) - 1 is largest at the axis, 1 / cos(a L) - 1
+VALIDITY = Validity((
+    Bound("the strain at the axis 1 / cos(a L) - 1", lambda p, r: 1.0 / math.cos(r.results["al"])
+          - 1.0, "Eq. 2.36 is linear elasticity, small strains", hi=SMALL_STRAIN),))
 
 
 def _extension(p):
@@ -43,4 +51,4 @@ REFERENCE = Scene(
      Param("h", 3.675e-2, float, "m", "section height (thesis)", lo=0, lo_open=True),
      Param("A_mass", 7.2968e-5, float, "m^2",
            "area in rho A of the thesis variant (Wu & Haug's tabulated A)", lo=0, lo_open=True)),
-    _extension, results=RESULTS)
+    _extension, results=RESULTS, warn=VALIDITY)
