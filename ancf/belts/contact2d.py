@@ -278,14 +278,22 @@ def contact_state(E, V, S0, centres, radii, omegas, prm):
 
 @njit(cache=True)
 def contact_state_moving(E, V, S0, centres, odot, radii, omegas, prm):
-    """Contact quantities at every Gauss point for post-processing (no bounding test),
-    the pulley centres moving at odot (np, 2) m/s.
+    """:func:`contact_state_stepped` with a friction law's state 0 over a step of 0 s (its
+    damper alone: a stateless law's whole force, not a law with a state's)."""
+    z = np.zeros((S0.shape[0], S0.shape[1], radii.shape[0]))
+    return contact_state_stepped(E, V, S0, centres, odot, radii, omegas, prm, z, 0.0)
+
+
+@njit(cache=True)
+def contact_state_stepped(E, V, S0, centres, odot, radii, omegas, prm, z, h):
+    """Contact quantities at every point of S0 for post-processing (no bounding test),
+    the pulley centres moving at odot (np, 2) m/s (rdot - odot enters the law, as in the
+    march), a friction law with a state stepped from z (nel, ng, np) m over h (s) as the
+    march steps it (:func:`contact_forces_moving`; a stateless law ignores z and h).
 
     Returns ``r`` (nel, ng, 2) centreline positions, m, and, each (nel, ng, np):
     penetration ``d`` (m, negative out of contact), normal force ``F_n`` (N/m),
-    friction ``phi`` along t (N/m, signed) and sliding velocity ``v_t`` (m/s).  A
-    friction law with a state is evaluated at state 0 over a step of 0 s (its damper
-    alone): its state is known at the march's contact Gauss points only.
+    friction ``phi`` along t (N/m, signed) and sliding velocity ``v_t`` (m/s).
     """
     nel, ng = S0.shape[0], S0.shape[1]
     npul = radii.shape[0]
@@ -300,6 +308,6 @@ def contact_state_moving(E, V, S0, centres, odot, radii, omegas, prm):
             for p in range(npul):
                 _, dd, F, vtp, _ = _point_law(r0 - centres[p, 0], r1 - centres[p, 1],
                                               v0 - odot[p, 0], v1 - odot[p, 1], radii[p],
-                                              omegas[p], prm, f, 0.0, 0.0, z1)
+                                              omegas[p], prm, f, z[e, g, p], h, z1)
                 d[e, g, p], Fn[e, g, p], phi[e, g, p], vt[e, g, p] = dd, F, f[0], vtp
     return r, d, Fn, phi, vt

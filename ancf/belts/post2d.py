@@ -3,7 +3,11 @@
 Along the belt (``npts`` points per element, belt arc coordinate s = reference
 arc length from node 0, m): position, velocity, belt speed |r'|, axial force
 N = E A alpha1 eps_l (Eq. 3.17, N) and the contact state (penetration, normal and
-friction force per unit length, relative velocity; :func:`ancf.belts.contact2d.contact_state`).
+friction force per unit length, relative velocity, the pulley centres' velocities
+included: :func:`ancf.belts.contact2d.contact_state_stepped`).  A friction law with a
+state (the bristle law) is evaluated on the march's state, carried from its contact Gauss
+points to the sample points (:func:`friction_state`): its spring's force is what carries
+the tension change over a wrap, the damper alone does not.
 
 On the spans: the point where the belt crosses a span's perpendicular bisector
 (its "midpoint", Figs 3.10-3.11) and the mean axial force over the belt points
@@ -18,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ancf.belts.contact2d import contact_state_moving
+from ancf.belts.contact2d import contact_state_stepped
 from ancf.elements.basis import cubic2d_S
 
 
@@ -46,15 +50,40 @@ def _shapes(drive, npts: int):
     return xi, np.ascontiguousarray(S0.reshape(l.size, npts, 6))
 
 
-def sample(drive, x, v, t: float, npts: int = 8) -> BeltSample:
-    """The belt at system state (x, v), time t (s)."""
+def friction_state(drive, xi, state=None) -> tuple:
+    """(z (nel, len(xi), np) m, h s): a friction law's state at the points xi ([0, 1]) of
+    every element and the step it is stepped over, from ``state`` = (z0 (nel, ng, np), h),
+    the march's at its contact Gauss points (``res.extra["friction_state"][i]``: the state
+    the step ending at sample i started from, and that step), or, without it, the drive's
+    own ``z[0]`` over 0 s: the state its last march ended in (the final sample's);
+    linear along the belt between the Gauss points, periodic (the belt is closed).
+    Zeros for a drive without a state."""
+    nel, npul = drive.mesh.n_elements, drive.radii.size
+    if state is None:
+        own = getattr(drive, "z", None)
+        state = (None, 0.0) if own is None else (own[0], 0.0)
+    z0, h = state
+    if z0 is None:
+        return np.zeros((nel, np.size(xi), npul)), 0.0
+    at = (np.arange(nel)[:, None] + np.asarray(xi)[None, :]).ravel()
+    g = (np.arange(nel)[:, None] + drive.xi[None, :]).ravel()
+    z = np.stack([np.interp(at, g, z0[:, :, p].ravel(), period=nel) for p in range(npul)], -1)
+    return np.ascontiguousarray(z.reshape(nel, np.size(xi), npul)), float(h)
+
+
+def sample(drive, x, v, t: float, npts: int = 8, state=None) -> BeltSample:
+    """The belt at system state (x, v), time t (s); a friction law with a state on
+    ``state`` (:func:`friction_state`: by default the drive's own, right at the state its
+    last march ended in)."""
     q, qd = drive.belt(x), drive.belt(v)
     dm = drive.mesh.dofmap
     E, V = q[dm].reshape(-1, 6, 2), qd[dm].reshape(-1, 6, 2)
     xi, S0 = _shapes(drive, npts)
     omegas = drive.omegas(t, v)
     o, odot = drive.moved(x, v)
-    r, d, Fn, phi, vt = contact_state_moving(E, V, S0, o, odot, drive.radii, omegas, drive.prm)
+    z, h = friction_state(drive, xi, state)
+    r, d, Fn, phi, vt = contact_state_stepped(E, V, S0, o, odot, drive.radii, omegas, drive.prm,
+                                              z, h)
     s = (np.arange(drive.mesh.n_elements)[:, None] + xi[None, :]) * drive.mesh.lengths[0]
     N = drive.element.axial_force(q[dm], xi)
     flat = lambda a: np.asarray(a).reshape(s.size, *np.shape(a)[2:])  # noqa: E731
