@@ -37,7 +37,7 @@ SERPENTINE_FILE, SERPENTINE_SET = EXAMPLES / "serpentine.toml", ()
 THREAD_NAMES = ("THREAD tight span force", "THREAD slack span force", th.OMEGA_ROW,
                 th.FINEST_ROW, "THREAD driver torque", "THREAD axial force along the belt, RMS",
                 "THREAD torque balance (T_t − T_s) R = load + damping",
-                "THREAD span tensions vs the steady reference (worst span)")
+                "THREAD span tensions vs the steady reference (worst span)", th.WRAP_ROW)
 
 
 def _name(path) -> str:
