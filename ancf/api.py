@@ -75,6 +75,7 @@ from pathlib import Path
 import numpy as np
 
 import ancf.scenes  # noqa: F401 - cheap (loads no scene); makes ``ancf.scenes`` the callable package
+from ancf.common.inputs import flag, is_boolean, mapping, merged, number, path, text
 from ancf.common.params import InputError
 from ancf.common.strict_json import dumps
 
@@ -219,18 +220,32 @@ def _as_set(value):
     return value
 
 
+def _sets(overrides, params: dict) -> dict:
+    """The parameters of a call: the positional dict ``overrides`` and the keywords, as the
+    texts ``--set`` would carry; a name given in both with different values is refused
+    (as the command line refuses two different ``--set`` of one name)."""
+    both = merged(mapping("overrides", overrides), params, ("overrides", "a keyword"))
+    return {k: _as_set(v) for k, v in both.items()}
+
+
+def _known(command: str, name, registry) -> str:
+    """``name`` if it names an entry of ``registry`` (any other type or name: InputError)."""
+    if not isinstance(name, str) or name not in registry:
+        raise InputError(f"{command}: unknown name {name!r}; allowed: {', '.join(registry)}")
+    return name
+
+
 def _execute(command: str, name: str, overrides, params: dict, vtk=None) -> Result:
     from ancf.scenes import SCENES
     if command == "run":
         registry = SCENES
     else:
         from ancf.scenes.analytic import REFERENCES as registry
-    if not isinstance(name, str) or name not in registry:
-        raise InputError(f"{command}: unknown name {name!r}; allowed: {', '.join(registry)}")
-    sets = {k: _as_set(v) for k, v in {**dict(overrides or {}), **params}.items()}
-    sc = registry[name]
+    sc = registry[_known(command, name, registry)]
+    sets = _sets(overrides, params)
     if vtk is not None:  # bad input first, then the directory, then the run
         from ancf.scenes.vtk import check_directory
+        path("vtk", vtk)
         sc.resolve(sets)
         check_directory(vtk)
     out, res = sc.execute(sets)
@@ -269,8 +284,14 @@ def modes(scene: str, overrides: dict | None = None, /, *, count=None, about="re
     (7850.0, (20, 2))
     """
     from ancf.scenes.modes import execute
-    sets = {k: _as_set(v) for k, v in {**dict(overrides or {}), **params}.items()}
-    out, res = execute(scene, sets, count, about)
+    if not isinstance(scene, str):
+        raise InputError(f"modes: unknown name {scene!r}; allowed: a scene name (see "
+                         "ancf.scenes())")
+    if count is not None and (is_boolean(count) or not isinstance(count, (int, str, np.integer))):
+        raise InputError(f"count: {count!r} is not valid; allowed: an integer >= 1 (below "
+                         "the reduced size of the model), or None")
+    text("about", about, "one of reference, equilibrium")
+    out, res = execute(scene, _sets(overrides, params), count, about)
     return _result("modes", scene, out, res)
 
 
@@ -305,6 +326,10 @@ def scenes() -> list[dict]:
     return catalogue()
 
 
+GRID_ALLOWED = ("a dict {parameter: value or [values]}, a list of such dicts, or None (the "
+                "scene's grid)")
+
+
 def _grid(scene: str, grid, quantity: str = "results") -> list | dict | None:
     """``grid`` ({param: value or [values]} or a list of them) parsed by the scene's
     parameters (InputError naming the field, as ``--grid``)."""
@@ -312,26 +337,42 @@ def _grid(scene: str, grid, quantity: str = "results") -> list | dict | None:
         return None
     from ancf.study.references import runner
     params = {p.name: p for p in runner(scene, quantity).params}
-    grids = [grid] if isinstance(grid, dict) else list(grid)
+    if isinstance(grid, dict):
+        grids = [grid]
+    elif isinstance(grid, (list, tuple)) and grid:
+        grids = list(grid)
+    else:
+        raise InputError(f"grid: {grid!r} is not valid; allowed: {GRID_ALLOWED}")
     out = []
     for g in grids:
+        if not isinstance(g, dict) or not g:
+            raise InputError(f"grid: {g!r} is not valid; allowed: {GRID_ALLOWED}, each naming "
+                             "at least one parameter")
         parsed = {}
-        for k, vals in dict(g).items():
+        for k, vals in g.items():
             if k not in params:
                 raise InputError(f"{k}: unknown parameter of scene {scene!r}; allowed: "
                                  f"{', '.join(params)}")
-            vals = [vals] if isinstance(vals, (str, int, float)) else list(vals)
-            if not vals:
-                raise InputError(f"grid {k}: no values")
-            parsed[k] = list(dict.fromkeys(params[k].parse(v) for v in vals))
+            parsed[k] = list(dict.fromkeys(params[k].parse(v) for v in _values(k, vals)))
         out.append(parsed)
     return out[0] if isinstance(grid, dict) else out
+
+
+def _values(name: str, vals) -> list:
+    """A grid entry's values: one value (a number or a string) or a list / tuple / range /
+    array of them, at least one (None, a dict or a set is refused, naming ``name``)."""
+    if isinstance(vals, (str, int, float, np.integer, np.floating)):
+        return [vals]
+    if isinstance(vals, (list, tuple, range, np.ndarray)) and len(vals):
+        return list(vals)
+    raise InputError(f"grid {name}: {vals!r} is not valid; allowed: a value or a non-empty "
+                     "list of values")
 
 
 def sweep(scene: str, grid=None, *, fixed: dict | None = None, out=None,
           reference: str | None = None, workers: int | None = None, scheduler=None,
           time_limit: float = 600.0, retry_failed: bool = False, progress: bool = False,
-          log=None, quantity: str = "results"):
+          log=None, quantity: str = "results", force: bool = False):
     """Run the cartesian product of ``grid`` ({param: [values]}, or a list of such grids;
     default: the scene's speed-accuracy grid) with ``fixed`` overrides, as ``ancf sweep``;
     returns a pandas DataFrame, one row per run (parameters, status, results, the error
@@ -339,25 +380,28 @@ def sweep(scene: str, grid=None, *, fixed: dict | None = None, out=None,
     and resumes an interrupted sweep; without it the rows go to a temporary file that is
     removed.  ``log``: a function of one line (default: silent).  ``quantity="frequency"``:
     ``ancf modes`` runs (``fixed={"count": K}``: the lowest K bending frequencies) against
-    the analytic frequencies (cantilever, simply-supported, plate-square).
+    the analytic frequencies (cantilever, simply-supported, plate-square).  ``force``: run
+    more than :data:`ancf.study.sweep.MAX_RUNS` runs, or more ``workers`` than cores (as
+    ``--force``).  Every argument is checked as the command line checks its own
+    (InputError naming it); ``df.attrs["sweep"]`` holds the call's counts.
 
     >>> import ancf
     >>> df = ancf.sweep("axial-bar", grid={"n_elements": [1, 2]}, workers=1)  # doctest: +SKIP
     """
     from ancf.scenes import SCENES
     from ancf.study.sweep import run_sweep
-    if scene not in SCENES:
-        raise InputError(f"sweep: unknown scene {scene!r}; allowed: {', '.join(SCENES)}")
+    _known("sweep", scene, SCENES)
     from ancf.study.references import runner
+    text("quantity", quantity, "results or frequency")
     grids = _grid(scene, grid, quantity)
+    fixed = mapping("fixed", fixed)
     if fixed:
         runner(scene, quantity).resolve(fixed)
-    log = log or (lambda msg: None)
     kw = dict(fixed=fixed, reference=reference, workers=workers, scheduler=scheduler,
-              time_limit=time_limit, retry_failed=retry_failed, progress=progress, log=log,
-              quantity=quantity)
+              time_limit=time_limit, retry_failed=retry_failed, progress=progress,
+              log=log or (lambda msg: None), quantity=quantity, force=force)
     if out is not None:
-        return run_sweep(scene, grids, out=out, **kw)
+        return run_sweep(scene, grids, out=path("out", out), **kw)
     with tempfile.TemporaryDirectory(prefix="ancf-sweep-") as tmp:
         return run_sweep(scene, grids, out=os.path.join(tmp, f"sweep-{scene}.parquet"), **kw)
 
@@ -379,7 +423,14 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     >>> ancf.run("cantilever", **rec["params"]).converged  # doctest: +SKIP
     True
     """
+    from ancf.scenes import SCENES
     from ancf.study.recommend import public, recommend as _recommend
+    _known("recommend", scene, SCENES)
+    if data is not None:
+        path("data", data)
+    if workers is not None:
+        number("workers", workers, lo=1, lo_open=False, integer=True)
+    flag("progress", progress)
     res = _recommend(scene, tol, fixed=fixed, reference=reference, data=data, workers=workers,
                      scheduler=scheduler, time_limit=time_limit, progress=progress,
                      log=log or (lambda msg: None), quantity=quantity)

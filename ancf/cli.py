@@ -30,12 +30,18 @@ def _registries():
 
 
 def _parse_sets(items):
+    """``--set key=value`` items as a dict; one key set twice to different values is a
+    conflict (InputError naming both), not the last one silently winning."""
     out = {}
     for item in items or []:
         k, eq, v = item.partition("=")
         if not (eq and k.strip()):
             raise InputError(f"--set {item!r}: expected key=value")
-        out[k.strip()] = v.strip()
+        k, v = k.strip(), v.strip()
+        if k in out and out[k] != v:
+            raise InputError(f"--set {k}: given twice ({k}={out[k]}, {k}={v}); allowed: one "
+                             "value per key")
+        out[k] = v
     return out
 
 
@@ -103,6 +109,9 @@ def _overrides(args) -> dict:
         if args.name not in FILE_SCENES:
             raise InputError(f"--file: scene {args.name!r} takes no file; allowed: the scenes "
                              f"{', '.join(FILE_SCENES)}")
+        if sets.get("file", path) != path:
+            raise InputError(f"--file {path} and --set file={sets['file']}: two drive files; "
+                             "allowed: one of them")
         sets["file"] = path
     return sets
 
@@ -152,20 +161,36 @@ def _sweep(args) -> int:
         df = run_sweep(args.name, grid, out=out, fixed=sets,
                        reference=args.reference, workers=args.workers, scheduler=args.scheduler,
                        time_limit=args.time_limit, retry_failed=args.retry_failed,
-                       progress=not args.no_progress, quantity=args.quantity)
+                       progress=not args.no_progress, quantity=args.quantity, force=args.force)
     except KeyboardInterrupt:
-        print(f"interrupted: the finished rows are in {out}; the same command resumes",
-              file=sys.stderr)
+        print(_interrupted(out), file=sys.stderr)
         return 130
     counts = {k: int(v) for k, v in df["status"].value_counts().items()} if len(df) else {}
+    this = df.attrs.get("sweep", {})
     if args.json:
         print(dumps({"scene": args.name, "out": str(out), "rows": int(len(df)),
-                          "status": counts,
-                          "reference": args.reference
-                          or spec(args.name, args.quantity).default_reference}))
+                     "status": counts,
+                     "reference": args.reference
+                     or spec(args.name, args.quantity).default_reference,
+                     "lost_workers": this.get("lost_workers", 0),
+                     "retried_runs": this.get("retried_runs", 0)}))
     else:
         print(out)
+    if this.get("runs") and not this.get("succeeded"):
+        print(f"error: sweep {args.name}: none of its {this['runs']} runs converged (each one "
+              f"not converged, failed, timed out or invalid; rows: "
+              f"{', '.join(f'{k} {v}' for k, v in counts.items())}; see the "
+              f"message column of {out})", file=sys.stderr)
+        return 3
     return 0
+
+
+def _interrupted(out) -> str:
+    """The line of an interrupted sweep, naming its rows file only where it exists."""
+    from pathlib import Path
+    if Path(out).exists():
+        return f"interrupted: the finished rows are in {out}; the same command resumes"
+    return "interrupted: no run had finished, nothing was written; the same command starts again"
 
 
 def _recommend(args) -> int:
@@ -272,6 +297,8 @@ def main(argv=None) -> int:
     p.add_argument("--time-limit", type=_positive(float), default=600.0, metavar="SECONDS",
                    help="per run; a run over it is killed and recorded (default 600)")
     p.add_argument("--retry-failed", action="store_true", help="rerun failed / timed-out rows")
+    p.add_argument("--force", action="store_true", help="run a grid above the run limit "
+                   "(100 000) and start more --workers than cores")
     _quantity(p)
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.add_argument("--json", action="store_true", help="print a JSON summary")

@@ -25,7 +25,7 @@ from ancf.belts import drive_data as dd
 from ancf.belts.friction import ALL_PARAMS as FRICTION_LAWS
 from ancf.belts.path import Pulley, PulleyPath
 from ancf.common.inputs import MAX_INTERVALS, MAX_STEPS, intervals
-from ancf.common.params import InputError, Param
+from ancf.common.params import InputError, Param, is_boolean
 
 TOP_KEYS = ("gravity", "belt", "pulleys", "friction", "contact", "run")
 
@@ -116,12 +116,23 @@ def _values(table: dict, prefix: str, keys: dict, optional=(), why: str = "") ->
     out = {}
     for name, key in keys.items():
         if name in table:
+            _no_boolean(prefix + name, table[name], key)
             out[name] = replace(key, name=prefix + name).parse(table[name])
         elif key.default is not dd.REQUIRED or name in optional:
             out[name] = key.default
         else:
             raise _missing(key, prefix, why)
     return out
+
+
+def _no_boolean(name: str, value, key) -> None:
+    """TOML's true / false, as a key's value or an entry of a vector or table, is not a
+    number (Python would read it as 1 or 0: ``E = true`` as 1 Pa)."""
+    rows = value if isinstance(value, (list, tuple)) else [value]
+    entries = [x for row in rows for x in (row if isinstance(row, (list, tuple)) else [row])]
+    if any(is_boolean(x) for x in entries):
+        raise InputError(f"{name} = {value!r} is not valid (a boolean); allowed: "
+                         f"{key.allowed()}")
 
 
 def _one_of(values: dict, prefix: str, keys: dict) -> None:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from ancf.common.params import InputError
+from ancf.common.params import InputError, is_boolean
 
 MAX_INTERVALS = 100_000  # output samples per time history: at most MAX_INTERVALS + 1
 MAX_STEPS = 10_000_000   # steps of any integrator (fixed-step schedules are allocated upfront)
@@ -55,3 +55,71 @@ def validate_fixed(scene, fixed: dict) -> None:
             raise InputError(f"{k}: unknown parameter of scene {scene.name!r}; allowed: "
                              f"{', '.join(params)}")
         params[k].parse(v)
+
+
+# ---------------------------------------------------------------------------------------
+# the Python API's arguments, checked as the command line checks its own
+# ---------------------------------------------------------------------------------------
+
+def number(name: str, value, *, lo: float = 0.0, lo_open: bool = True,
+           integer: bool = False) -> float | int:
+    """``value`` as a finite number above ``lo`` (at ``lo`` too unless ``lo_open``; an
+    integer for ``integer``); InputError naming ``name`` and the range otherwise (a
+    boolean, a string or None is not a number)."""
+    kind = "an integer" if integer else "a number"
+    allowed = f"allowed: {kind} in {'(' if lo_open else '['}{lo:g}, inf)"
+    ok_type = isinstance(value, (int, float)) or type(value).__module__ == "numpy"
+    if is_boolean(value) or not ok_type:
+        raise InputError(f"{name}: {value!r} is not valid; {allowed}")
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: {value!r} is not valid; {allowed}") from None
+    if (not math.isfinite(v) or (v <= lo if lo_open else v < lo)
+            or (integer and not v.is_integer())):
+        raise InputError(f"{name} = {value!r} is out of range; {allowed}")
+    return int(v) if integer else v
+
+
+def flag(name: str, value) -> bool:
+    """``value`` if it is True or False; InputError otherwise (``"no"`` is not False)."""
+    if not is_boolean(value):
+        raise InputError(f"{name}: {value!r} is not valid; allowed: True or False")
+    return bool(value)
+
+
+def text(name: str, value, allowed: str) -> str:
+    """``value`` if it is a string; InputError naming ``allowed`` otherwise."""
+    if not isinstance(value, str):
+        raise InputError(f"{name}: {value!r} is not valid; allowed: {allowed}")
+    return value
+
+
+def path(name: str, value):
+    """``value`` if it is a file name (a string or a path object, not empty)."""
+    import os
+    if not isinstance(value, (str, os.PathLike)) or not str(os.fspath(value)).strip():
+        raise InputError(f"{name}: {value!r} is not valid; allowed: a file name (a string "
+                         "or a pathlib.Path)")
+    return value
+
+
+def mapping(name: str, value) -> dict:
+    """``value`` as a dict ({} for None); InputError for anything else."""
+    if value is None:
+        return {}
+    if not isinstance(value, dict) or not all(isinstance(k, str) for k in value):
+        raise InputError(f"{name}: {value!r} is not valid; allowed: a dict "
+                         "{parameter name: value}")
+    return dict(value)
+
+
+def merged(first: dict, second: dict, names: tuple[str, str]) -> dict:
+    """``first`` and ``second`` (e.g. a positional dict and keywords) as one dict; a key
+    in both with different values is a conflict (InputError naming the key and both
+    places), never silently one of them."""
+    for k in first.keys() & second.keys():
+        if first[k] != second[k]:
+            raise InputError(f"{k}: given as {names[0]} ({first[k]!r}) and as {names[1]} "
+                             f"({second[k]!r}); allowed: one value")
+    return {**first, **second}

@@ -10,6 +10,13 @@ class InputError(ValueError):
     """Bad user input; the message names the field and its allowed range."""
 
 
+def is_boolean(value) -> bool:
+    """``True``/``False`` (Python's or numpy's): never a parameter's value, although
+    Python counts them as 1 and 0 (a drive file's ``E = true`` would run at 1 Pa)."""
+    return isinstance(value, bool) or (type(value).__module__ == "numpy"
+                                       and type(value).__name__ in ("bool", "bool_"))
+
+
 @dataclass(frozen=True)
 class Param:
     """A scene parameter. ``lo``/``hi`` bound numbers (``lo_open``: strict lower bound);
@@ -39,6 +46,9 @@ class Param:
     def parse(self, value):
         if value is None and self.default is None:
             return None  # a parameter computed when not given: resolved sets round-trip
+        if is_boolean(value):
+            raise InputError(f"{self.name}: {value!r} is not valid (a boolean); allowed: "
+                             f"{self.allowed()}")
         try:
             if self.kind is int:
                 v = float(value)

@@ -24,6 +24,7 @@ from ancf.study.cost import calibrate, counts, with_work, work
 from ancf.study.references import (ReferenceFailed, cache_root, model_physics, runner, spec,
                                    stable_hash)
 from ancf.study.selection import WORK_TIE, cheapest_first, tie_group
+from ancf.common.inputs import mapping, number
 from ancf.common.params import InputError
 from ancf.study.sweep import check_table, read_rows, rows_for, run_sweep
 
@@ -152,14 +153,16 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     ``count`` bending frequencies (``ancf modes``) against the scene's frequency
     reference (:data:`ancf.study.references.FREQUENCY_SPECS`)."""
     from ancf.scenes import SCENES
-    if scene not in SCENES:
+    if not isinstance(scene, str) or scene not in SCENES:
         raise InputError(f"scene: unknown name {scene!r}; allowed: {', '.join(SCENES)}")
-    if not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol > 0):
-        raise InputError(f"tol = {tol!r} is out of range; allowed: a number > 0")
+    number("tol", tol)
+    if data is not None and (workers is not None or scheduler is not None):
+        raise InputError("--data and --workers / --scheduler: both given; allowed: --data (the "
+                         "answer from a sweep file: nothing runs) or --workers / --scheduler")
     s = spec(scene, quantity)
     sc = runner(scene, quantity)
     ref = s.reference(reference)
-    fixed = dict(fixed or {})
+    fixed = mapping("fixed", fixed)
     base = sc.resolve(fixed)
     physical = s.physical(base)
     fixed_knobs = {k: base[k] for k in fixed if k in s.knobs}

@@ -133,8 +133,10 @@ def _with_work(df: pd.DataFrame) -> pd.DataFrame:
     return df.assign(work=[work(row_counts(r)) for _, r in df.iterrows()])
 
 
-def summary(df: pd.DataFrame, scene: str, out, seconds: float, session: str) -> str:
-    """The closing line of a sweep: rows, converged, not converged, failed, time."""
+def summary(df: pd.DataFrame, scene: str, out, seconds: float, session: str,
+            lost: dict | None = None) -> str:
+    """The closing line of a sweep: rows, converged, not converged, failed, time, and the
+    Dask workers lost and runs retried (``lost``: sweep_dask.lost_and_retried's counts)."""
     st = df["status"].value_counts().to_dict() if len(df) else {}
     failed = {k: v for k, v in st.items() if k not in ("ok", "not-converged")}
     mine = df[df["session"] == session] if "session" in df else df.iloc[0:0]
@@ -142,7 +144,14 @@ def summary(df: pd.DataFrame, scene: str, out, seconds: float, session: str) -> 
     kinds = f" ({', '.join(f'{k} {v}' for k, v in failed.items())})" if failed else ""
     return (f"sweep {scene}: {len(df)} rows in {out}: {st.get('ok', 0)} converged, "
             f"{st.get('not-converged', 0)} not converged, {sum(failed.values())} failed{kinds}; "
-            f"{len(mine)} run now in {seconds:.1f} s wall ({cpu:.2f} s CPU in the runs)")
+            f"{len(mine)} run now in {seconds:.1f} s wall ({cpu:.2f} s CPU in the runs)"
+            + _lost_words(lost or {}))
+
+
+def _lost_words(lost: dict) -> str:
+    """``; 1 Dask worker lost, 2 runs retried`` (nothing when none was)."""
+    w, r = lost.get("lost_workers", 0), lost.get("retried_runs", 0)
+    return f"; {w} Dask worker(s) lost, {r} run(s) retried" if w or r else ""
 
 
 def _order(df: pd.DataFrame, param_names, keys_in_order) -> pd.DataFrame:

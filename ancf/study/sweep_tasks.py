@@ -88,7 +88,7 @@ def make_tasks(scene: str, overrides: list[dict], reference: str | None = None,
             tasks.append(t)
             continue
         t.update(params={k: _jsonable(v) for k, v in params.items()},
-                 key=run_key(scene, params, quantity))
+                 key=run_key(scene, params, quantity), paths=_absolute(params))
         pk = stable_hash(s.physical(params))
         if pk not in refs:
             try:
@@ -98,6 +98,17 @@ def make_tasks(scene: str, overrides: list[dict], reference: str | None = None,
         t["ref_values"], t["ref_error"] = refs[pk]
         tasks.append(t)
     return tasks
+
+
+#: parameters that name a file: a task carries them as absolute paths too (``paths``), so
+#: that a worker started in another folder (a Dask worker) reads the file the driver read
+PATH_PARAMS = ("file",)
+
+
+def _absolute(params: dict) -> dict:
+    """The file parameters of ``params`` as absolute paths (from this process's folder)."""
+    return {k: str(Path(params[k]).absolute()) for k in PATH_PARAMS
+            if isinstance(params.get(k), str) and params[k]}
 
 
 def _jsonable(v):
@@ -136,7 +147,8 @@ def run_case(task: dict) -> dict:
     t0 = time.perf_counter()
     try:
         with np.errstate(all="ignore"):
-            out, _ = runner(task["scene"], quantity).execute(task["params"])
+            out, _ = runner(task["scene"], quantity).execute({**task["params"],
+                                                               **task.get("paths", {})})
     except InputError as exc:
         return failure_row(task, "invalid", f"invalid input: {exc}", time.perf_counter() - t0)
     except Exception as exc:  # noqa: BLE001 - a failing run is data, not a crash

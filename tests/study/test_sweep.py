@@ -96,7 +96,7 @@ def test_resume_of_a_finished_sweep_runs_nothing(workdir, interrupted_and_resume
     msgs = []
     df = run_sweep("cantilever", parse_grid("cantilever", GRID), out=out, workers=2,
                    progress=False, log=msgs.append)
-    assert f"{N_RUNS} already in" in msgs[0] and "0 to run" in msgs[0]
+    assert f"{N_RUNS} already in" in msgs[1] and "0 to run" in msgs[1]
     assert len(df) == N_RUNS
 
 
@@ -149,11 +149,11 @@ def test_failures_are_rows_and_do_not_stop_the_others(workdir):
     msgs = []
     run_sweep("cantilever", grids, out=out, workers=1, time_limit=0.5, progress=False,
               log=msgs.append)
-    assert "5 already in" in msgs[0]
+    assert "5 already in" in msgs[1]
     msgs = []
     run_sweep("cantilever", grids, out=out, workers=1, time_limit=0.5, progress=False,
               log=msgs.append, retry_failed=True)
-    assert "1 to run" in msgs[0]  # only the timeout is a retryable failure
+    assert "1 to run" in msgs[1]  # only the timeout is a retryable failure
 
 
 def test_grid_parsing_and_expansion():
