@@ -19,6 +19,10 @@ from ancf.core.quadrature import gauss01
 
 N_AXIAL, N_SECTION = 3, 3  # check points per element: 3 Gauss points along x x 3 across y
 AREA_FACTOR = 2.0  # det F beyond [1 / AREA_FACTOR, AREA_FACTOR]: strains far past the material's range
+#: ``extra`` key of a static scene result: True when Newton converged and the stability check
+#: alone refused the point (``ancf modes`` vibrates about it: its negative or zero eigenvalues
+#: are what it reports)
+UNSTABLE = "unstable"
 
 
 _BASES = weakref.WeakKeyDictionary()  # element -> shape-function derivatives at the check points
@@ -72,14 +76,16 @@ def _inverted(det, element, n) -> str:
 def check_static(res, assembly, q0):
     """A converged static point with an inverted element becomes non-convergence
     (results kept, flagged by the message, as for an unstable equilibrium); one whose
-    area changes by more than AREA_FACTOR somewhere gets a warning."""
-    if not res.converged:
+    area changes by more than AREA_FACTOR somewhere gets a warning.  A point Newton
+    reached that the stability check alone refused (``res.extra[UNSTABLE]`` true) is
+    checked alike: inverted, it is no longer merely unstable."""
+    if not (res.converged or res.extra.get(UNSTABLE)):
         return res
     d = deformation_dets(assembly.groups, res.extra["q"], q0)
     lo, hi = d.min(axis=-1), d.max(axis=-1)
     n = lo.size
     if lo.min() <= 0:
-        res.converged = False
+        res.converged, res.extra[UNSTABLE] = False, False
         res.message = ("No convergence to a physical equilibrium: "
                        + _inverted(float(lo.min()), int(lo.argmin()), n))
         return res

@@ -15,7 +15,9 @@ depend on the machine's core count.
 A static scene that ``ancf modes`` serves (:mod:`ancf.scenes.modes`) also declares
 ``modal``: ``params -> ModalModel``, its model with a density, and ``modal_params``, the
 parameters ``ancf modes`` adds to the scene's own (the density, where the static run
-needs none: :data:`STEEL_DENSITY`).
+needs none: :data:`STEEL_DENSITY`).  ``ancf modes --about equilibrium`` vibrates about the
+scene's run (or its ``equilibrium``, where the run is a linear solve), checked and warned
+exactly as ``ancf run`` checks it.
 
 A scene also declares its result keys (``results``: :func:`field` per key, the JSON
 schema of :mod:`ancf.study.schemas` is built from them) and what sweeps measure it against
@@ -126,7 +128,8 @@ class SceneResult:
 
 
 class Equilibrium(NamedTuple):
-    """A static solve's outcome as ``ancf modes --about equilibrium`` needs it."""
+    """A static solve's outcome (what :attr:`ModalModel.equilibrium` returned to ``ancf
+    modes`` before it took the scene's checked run instead)."""
 
     q: object                # global coordinates reached
     converged: bool
@@ -139,14 +142,15 @@ class ModalModel:
     """A static scene's model for ``ancf modes``: the element groups with their density
     (``assembly``: tangent stiffness and consistent mass), the reduced numbering of the
     scene's constraints (``pattern``, as its static solve eliminates them), the reference
-    state ``q0``, a function solving for the static equilibrium, and ``points``: global
-    coordinates -> positions (m, dim) of the sample points of the mode shapes (linear in
+    state ``q0``, ``equilibrium`` (not read: ``ancf modes`` takes the equilibrium from the
+    scene, :attr:`Scene.equilibrium` or its run, with the run's checks; None), and
+    ``points``: global coordinates -> positions (m, dim) of the sample points of the mode shapes (linear in
     the coordinates), ``sampling`` naming them; ``mesh`` for the result's arrays."""
 
     assembly: object
     pattern: object
     q0: object
-    equilibrium: Callable[[], Equilibrium]
+    equilibrium: Callable[[], Equilibrium] | None
     points: Callable
     sampling: str
     mesh: object
@@ -177,6 +181,10 @@ class Scene:
     # it adds to the scene's own
     modal: Callable[[dict], ModalModel] | None = None
     modal_params: tuple = ()
+    # ancf modes --about equilibrium: params -> the static equilibrium of the modal model
+    # (extra["q"]) with the checks of ``run`` (None: ``run`` itself, when the run is that
+    # nonlinear equilibrium); ``warn`` is applied to it as to a run
+    equilibrium: Callable[[dict], SceneResult] | None = None
     # in the reports' speed-accuracy sweeps (False: a drive-file scene, whose model
     # choices live in its file)
     swept: bool = True

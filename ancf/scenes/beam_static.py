@@ -19,8 +19,9 @@ from ancf.elements.catalogue import ELEMENTS, element_kwargs
 from ancf.core.mesh import BeamMesh
 from ancf.core.pattern import ReducedPattern
 from ancf.core.quadrature import RectangularSection
+from ancf.core.validity import UNSTABLE
 from ancf.common.params import InputError, Param
-from ancf.scenes.base import Equilibrium, ModalModel, SceneResult
+from ancf.scenes.base import ModalModel, SceneResult
 from ancf.solvers.linear import ZERO_EIGENVALUE_REL
 from ancf.solvers.static import NewtonOptions, solve_static, stability_at
 
@@ -95,7 +96,7 @@ def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn,
     converged, message = res.converged, res.message
     results.update(results_fn(res.q) if converged else dict.fromkeys(results_fn(q0)))
     if converged:
-        neg, zero, lowest = ((None, None, None) if p["stability_check"] == "off"
+        neg, zero, lowest = ((None, None, None) if p.get("stability_check") == "off"
                              else stability_at(assembly, res.pattern, res.q, forces, res.tangent))
         results["negative_tangent_eigenvalues"] = neg
         results["zero_tangent_eigenvalues"] = zero
@@ -111,7 +112,8 @@ def solve(p: dict, mesh, q0, assembly, elim: Elimination, Qk, results_fn,
                        f"largest: a zero-energy mode of the integration scheme)")
     return SceneResult(converged, message, results,
                        extra={"q": res.q, "q0": q0, "mesh": mesh, "residuals": res.residual_history,
-                              "assembly": assembly, "pattern": res.pattern})
+                              "assembly": assembly, "pattern": res.pattern,
+                              UNSTABLE: res.converged and not converged})
 
 
 def centreline(mesh):
@@ -124,17 +126,12 @@ def centreline(mesh):
 def modal(p: dict, mesh, q0, assembly, elim: Elimination, Qk, points=None,
           sampling: str = "centreline") -> ModalModel:
     """The model of a scene solved by :func:`solve` for ``ancf modes``: its constraints'
-    reduced numbering, its static equilibrium under ``Qk`` (Newton options from ``p``) and
-    the sample points (default: the beam's :func:`centreline`)."""
+    reduced numbering and the sample points (default: the beam's :func:`centreline`);
+    ``p`` and the load ``Qk`` are those of the scene's ``setup`` (its run, with the run's
+    checks, is the equilibrium ``ancf modes`` vibrates about)."""
     T, _, _ = elim.build()
     pattern = ReducedPattern(assembly.n_dofs, [grp.dofmap for grp in assembly.groups], T)
-
-    def equilibrium() -> Equilibrium:
-        res = solve_static(assembly, elim, Qk, q0, newton_options(p))
-        return Equilibrium(res.q, res.converged, res.message, res.iterations)
-
-    return ModalModel(assembly, pattern, q0, equilibrium,
-                      points or centreline(mesh), sampling, mesh)
+    return ModalModel(assembly, pattern, q0, None, points or centreline(mesh), sampling, mesh)
 
 
 #: the meshes of the beams' frequency sweeps

@@ -9,7 +9,11 @@ stiffness
   free belt's laid shape, which is pre-stressed and no equilibrium);
 * ``about = equilibrium``: at the scene's static equilibrium under its load, the
   pre-stressed tangent: a compressive load lowers the bending frequencies, and a
-  frequency going to zero marks a limit (buckling) point.
+  frequency going to zero marks a limit (buckling) point.  The equilibrium is the scene's
+  own run (:func:`equilibrium`), checked as ``ancf run`` checks it: an inverted element
+  ends the run (exit 3), the strain range, the thin-plate range and the scene's ``warn``
+  give their warnings; only the stability check's refusal is left to the modes, whose
+  negative eigenvalues show it.
 
 Solved by :func:`ancf.solvers.eigen.lowest` (dense LAPACK for small systems, else
 shift-invert Lanczos on the band or sparse LU).  The output has the shape of
@@ -31,6 +35,7 @@ from functools import partial
 import numpy as np
 
 from ancf.common.params import InputError, Param
+from ancf.core.validity import UNSTABLE
 from ancf.scenes import scene
 from ancf.scenes.base import ModalModel, Scene, SceneResult
 from ancf.solvers.eigen import EigenFailure, lowest
@@ -74,16 +79,16 @@ def frequency_scene(name: str) -> Scene:
     study layer finds ``count`` bending modes among them; the results are ``ancf
     modes``'s."""
     sc = modal_scene(name)
-    return replace(sc, params=sc.params + (COMPARED,), run=partial(_run_compared, sc.modal))
+    return replace(sc, params=sc.params + (COMPARED,), run=partial(_run_compared, scene(name)))
 
 
-def _run_compared(modal, p: dict) -> SceneResult:
-    mm = modal(p)
+def _run_compared(static: Scene, p: dict) -> SceneResult:
+    mm = static.modal(p)
     n = mm.pattern.n
     if n < 2:
         raise InputError(f"n_elements = {p.get('n_elements')} is out of range for modes: the "
                          "reduced system has fewer than 2 unknowns")
-    return _run(lambda _: mm, min(2 * p["count"] + 2, n - 1), "reference", p)
+    return _run(static, min(2 * p["count"] + 2, n - 1), "reference", p, mm)
 
 
 def _count(value) -> int | None:
@@ -116,7 +121,7 @@ def execute(name: str, overrides: dict | None = None, count=None, about="referen
     sc = modal_scene(name)
     about = ABOUT.parse(about)
     count = _count(count)
-    return replace(sc, run=partial(_run, sc.modal, count, about)).execute(overrides)
+    return replace(sc, run=partial(_run, scene(name), count, about)).execute(overrides)
 
 
 def _signed_hz(lam: np.ndarray) -> list:
@@ -162,29 +167,44 @@ def _empty(about, count, n, mm: ModalModel, q, newton) -> dict:
             "solves": None, "shift_rad2_s2": None, "sturm_count": None, "missed_modes": None}
 
 
-def _run(modal, count, about, p: dict) -> SceneResult:
-    mm = modal(p)
+def equilibrium(static: Scene, p: dict) -> SceneResult:
+    """The static equilibrium ``--about equilibrium`` vibrates about: the scene's own
+    ``equilibrium`` or its run at the same parameters, with every check ``ancf run`` makes
+    (an inverted element: no equilibrium; strain range, thin-plate range, the scene's
+    ``warn``: warnings), but one: a point the stability check alone refused (``extra[
+    UNSTABLE]``) is kept, since the modes about it show its instability as negative
+    eigenvalues (warned by :func:`_warnings`)."""
+    res = (static.equilibrium or static.run)(p)
+    if res.extra.get(UNSTABLE):
+        res.converged, res.message = True, "converged (unstable)"
+    res.warnings += static.warn(p, res) if static.warn else []
+    return res
+
+
+def _run(static: Scene, count, about, p: dict, mm: ModalModel | None = None) -> SceneResult:
+    mm = mm or static.modal(p)
     n = mm.pattern.n
     count = _check_count(count, n)
-    q, newton = mm.q0, 0
+    q, newton, checked = mm.q0, 0, []
     extra = {"mesh": mm.mesh, "q0": mm.q0, "model": mm}
     if about == "equilibrium":
-        eq = mm.equilibrium()
-        q, newton = eq.q, eq.newton_iterations
+        eq = equilibrium(static, p)
+        q, newton = eq.extra.get("q", mm.q0), eq.results.get("newton_iterations") or 0
+        checked = eq.warnings
         if not eq.converged:
             return SceneResult(False, f"No equilibrium to vibrate about: {eq.message}",
-                               _empty(about, count, n, mm, q, newton), extra | {"q": q})
+                               _empty(about, count, n, mm, q, newton), extra | {"q": q}, checked)
     extra["q"] = q
     try:
         pairs = _eigen(mm, q, count)
         ref = _eigen(mm, mm.q0, 1).values[0] if about == "equilibrium" else None
     except EigenFailure as exc:
         return SceneResult(False, f"No eigenpairs: {exc}", _empty(about, count, n, mm, q, newton),
-                           extra)
+                           extra, checked)
     results, warnings = _results(mm, pairs, q, about, count, newton, ref)
     extra["vectors"] = np.stack([mm.pattern.expand(v, np.zeros(mm.pattern.n_dofs))
                                  for v in pairs.vectors.T], axis=1)
-    return SceneResult(True, "converged", results, extra, warnings)
+    return SceneResult(True, "converged", results, extra, checked + warnings)
 
 
 def _results(mm, pairs, q, about, count, newton, ref) -> tuple[dict, list]:

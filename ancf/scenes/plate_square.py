@@ -13,7 +13,8 @@ deflection scale p a^4 / D leave double precision are refused, naming the field.
 
 ``ancf modes plate-square`` vibrates the same model (density ``rho``, default steel);
 about the equilibrium it is Newton's nonlinear equilibrium under the pressure (the
-linear solve's deflection is small against h, so the two differ little).  Its
+linear solve's deflection is small against h, so the two differ little), refused and
+warned as the run (:func:`equilibrium`: round-off, the thin-plate range).  Its
 ``supports`` (``ancf modes`` only) are ``simple`` (the static run's) or ``free``: no
 coordinate fixed, the free-free plate of Exudyn's ``TestModels/ANCFThinPlateTests.py``,
 whose six rigid motions are its zero-frequency modes; it has no equilibrium under a
@@ -22,15 +23,13 @@ pressure, so ``--about equilibrium`` finds none (exit 3, saying so).
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
 from analytic import navier_plate
 from ancf.core.constraints import Elimination
 from ancf.models.plate import grid_points, simply_supported, simply_supported_model
 from ancf.common.params import InputError, Param
 from ancf.scenes import sense
-from ancf.scenes.base import (INT, STEEL_DENSITY, Equilibrium, Scene, SceneResult, field,
-                              nullable)
+from ancf.scenes.base import INT, STEEL_DENSITY, Scene, SceneResult, field, nullable
 
 SUPPORTS = Param("supports", "simple", str, doc="edge supports (ancf modes only): 'simple' "
                  "(the static run's) or 'free' (no coordinate fixed: six rigid-body modes)",
@@ -61,16 +60,23 @@ def check(p: dict) -> None:
                          "integer in [2, 128] (the centre must be a node)")
 
 
-def run(p: dict) -> SceneResult:
-    geo = dict(h=p["h"], E=p["E"], nu=p["nu"], p=p["p"])
+def _unsolvable(p: dict) -> SceneResult | None:
+    """The failed result of a plate no solve can hold (None: it can be solved): a bending
+    rigidity outside double precision, or lost in round-off (:func:`sense.near_singular`)."""
     D = navier_plate.rigidity(p["E"], p["nu"], p["h"])
     if not (math.isfinite(D) and D > 0):
         return SceneResult(False, f"No solution: the bending rigidity E h^3/(12 (1 - nu^2)) = "
                                   f"{D:g} N m is not a positive finite number in double precision",
                            _failed())
     singular = sense.near_singular(p["h"], p["a"] / p["n_elements"])
-    if singular:
-        return SceneResult(False, singular, _failed())
+    return SceneResult(False, singular, _failed()) if singular else None
+
+
+def run(p: dict) -> SceneResult:
+    failed = _unsolvable(p)
+    if failed:
+        return failed
+    geo = dict(h=p["h"], E=p["E"], nu=p["nu"], p=p["p"])
     m, u = simply_supported(p["n_elements"], p["a"], p["a"], ng=p["ng"], **geo)
     w = float(u[m.dof(m.node(p["n_elements"] // 2, p["n_elements"] // 2), "r", 2)])
     w_ref, terms = navier_plate.centre_deflection(p["a"], p["a"], **geo)
@@ -95,16 +101,33 @@ def warn(p: dict, res: SceneResult) -> list:
     return [] if w is None else sense.thin_plate(w, p["h"])
 
 
-def modal(p: dict):
-    from ancf.scenes import beam_static as bs  # its modal model; not needed by ancf run
+def _model(p: dict):
+    """(mesh, q0, assembly, elimination, load) of the nonlinear plate of ``ancf modes``."""
     m, q0, asm, elim, load = simply_supported_model(p["n_elements"], p["a"], p["a"], p["h"],
                                                     p["E"], p["nu"], p["p"], p["ng"], p["rho"])
-    if p["supports"] == "simple":
-        return bs.modal(p, m, q0, asm, elim, load, grid_points(m), "mid-surface grid")
-    free = bs.modal(p, m, q0, asm, Elimination(m.n_dofs), load, grid_points(m),
-                    "mid-surface grid")
-    return replace(free, equilibrium=lambda: Equilibrium(
-        q0, False, "a free plate has no static equilibrium under a pressure", 0))
+    return m, q0, asm, (elim if p["supports"] == "simple" else Elimination(m.n_dofs)), load
+
+
+def modal(p: dict):
+    from ancf.scenes import beam_static as bs  # its modal model; not needed by ancf run
+    m, q0, asm, elim, load = _model(p)
+    return bs.modal(p, m, q0, asm, elim, load, grid_points(m), "mid-surface grid")
+
+
+def equilibrium(p: dict) -> SceneResult:
+    """``ancf modes --about equilibrium``: Newton's nonlinear equilibrium under the
+    pressure (default Newton options, the stability check), refused as the run refuses a
+    plate (:func:`_unsolvable`), its ``center_deflection_m`` judged by :func:`warn` as the
+    run's; a free plate has none."""
+    from ancf.scenes import beam_static as bs  # not needed by ancf run
+    failed = _unsolvable(p)
+    if failed or p["supports"] == "free":
+        return failed or SceneResult(
+            False, "a free plate has no static equilibrium under a pressure", _failed())
+    m, q0, asm, elim, load = _model(p)
+    c = m.dof(m.node(p["n_elements"] // 2, p["n_elements"] // 2), "r", 2)
+    return bs.solve(p, m, q0, asm, elim, load,
+                    lambda q: {"center_deflection_m": float(q[c] - q0[c])})
 
 
 PLATE_KNOBS = ("n_elements", "ng")
@@ -168,5 +191,5 @@ SCENE = Scene(
     "plate-square",
     "Simply supported square thin plate under uniform pressure, linear, against Navier.",
     params(), run, check, warn=warn, modal=modal,
-    modal_params=(STEEL_DENSITY, SUPPORTS),
+    modal_params=(STEEL_DENSITY, SUPPORTS), equilibrium=equilibrium,
     results=RESULTS, study=study, frequency_study=frequency_study)
