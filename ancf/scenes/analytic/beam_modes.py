@@ -33,9 +33,9 @@ def _eb_share(p, r) -> float:
 #: sections over a half-wave, a rectangle's shear factor
 VALIDITY = Validity((
     Bound("the Euler-Bernoulli shear and rotary-inertia share (beta_n h)^2 (1 + E / (ks G)) "
-          "/ 24", _eb_share, "euler_bernoulli_hz neglects them: slender beams", hi=SHEAR_SHARE),
+          "/ 24", _eb_share, "euler_bernoulli_hz neglects them: a slender beam", hi=SHEAR_SHARE),
     Bound("the highest mode's half-wave over the height pi / (beta_n h)",
-          lambda p, r: math.pi / _beta_h(p, r), "plane sections over a half-wave, "
+          lambda p, r: math.pi / _beta_h(p, r), "plane sections over a half-wave, for "
           "frequencies_hz too", lo=MIN_LENGTH_OVER_HEIGHT),
     shear_factor()))
 

@@ -22,8 +22,8 @@ MAX_SAMPLE_SWING = 0.28
 #: the range of validity (issue 33): a history that resolves the swing
 VALIDITY = Validity((
     Bound("the swing between samples max |d theta|", lambda p, r: float(np.max(np.abs(np.diff(
-        r.results["theta"])), initial=0.0)), "a sampled history: the swing between its samples "
-        "resolved (a smaller output_dt)", hi=MAX_SAMPLE_SWING),))
+        r.results["theta"])), initial=0.0)), "a sampled history that resolves the swing: a "
+        "smaller output_dt", hi=MAX_SAMPLE_SWING),))
 
 
 def _rigid(p):

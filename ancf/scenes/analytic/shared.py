@@ -114,7 +114,7 @@ class Bound:
         if math.isnan(v) or self.lo <= v <= self.hi:
             return None
         side = f"> {self.hi:g}" if v > self.hi else f"< {self.lo:g}"
-        return (f"outside the reference's range of validity: {self.quantity} = {v:.3g} {side} "
+        return (f"outside the reference's range of validity: {self.quantity} = {v:.4g} {side} "
                 f"({self.reason})")
 
 
@@ -150,5 +150,5 @@ def shear_factor() -> Bound:
 def span_over_height() -> Bound:
     """L / h of a beam (:data:`SECTION`) at least :data:`MIN_LENGTH_OVER_HEIGHT`."""
     return Bound("the slenderness L / h", lambda p, r: p["L"] / p["h"],
-                 "a beam theory: plane sections, which the St-Venant zones of about one height "
-                 "at the supports and the load leave no room for", lo=MIN_LENGTH_OVER_HEIGHT)
+                 "beam theory: plane sections, which St-Venant zones of about one height at "
+                 "the supports and loads leave no room for", lo=MIN_LENGTH_OVER_HEIGHT)
