@@ -85,7 +85,8 @@ class Rig:
     the time (s, an array): the angular velocity (rad/s) of a pulley turned by it, the
     load torque T_a (N m) of a free one, and the tensioners' ``arms`` (na, ARM_COLUMNS)
     (:mod:`ancf.belts.arm2d`; their angles are free coordinates too, with an inertia and
-    a damping)."""
+    a damping) and how each free coordinate's load acts, ``loads`` (k,)
+    (:func:`ancf.belts.pulleys.load_records`; None: every load signed)."""
 
     names: tuple
     centres: np.ndarray
@@ -95,6 +96,7 @@ class Rig:
     damping: np.ndarray
     laws: tuple[Callable, ...]
     arms: np.ndarray = field(default_factory=lambda: np.zeros((0, ARM_COLUMNS)))
+    loads: np.ndarray | None = None  # (k,) LOAD records (ancf.belts.pulleys; None: signed)
 
 
 def thesis_rig(spec: BeltSpec, speed, torque, dim: int = 2) -> Rig:

@@ -37,7 +37,9 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   ``omega_final`` rad/s, ``t0``, ``t1`` s, or ``table`` with ``speed_table``),
   ``driven`` (``inertia``, ``damping`` and ``load``: a law of
   :data:`ancf.belts.pulleys.TORQUE_LAWS` with ``load_torque`` N m, ``t0``, ``t1``,
-  ``constant`` with ``load_torque``, or ``table`` with ``load_table``), ``idler``
+  ``constant`` with ``load_torque``, or ``table`` with ``load_table``; ``load_acts``, how
+  it acts, :data:`ancf.belts.pulleys.LOAD_LAWS`: ``signed`` by default, or ``resisting``
+  with ``omega_reg`` rad/s, default 0.1), ``idler``
   (``inertia``, ``damping``), ``tensioner`` (an idler on an arm turning about ``pivot``:
   the arm's ``arm_inertia`` about the pivot, torsion spring ``arm_stiffness`` and
   ``arm_preload``, ``arm_damping``; the arm's length is |centre - pivot|) and ``fixed``.
@@ -71,7 +73,7 @@ from ancf.belts.contact2d import SUPPORTED_POINTS
 from ancf.belts.contact3d import SUPPORTED_RULES
 from ancf.belts.forces import DAMPING_JACOBIANS
 from ancf.belts.path import PulleyPath
-from ancf.belts.pulleys import FILE_SPEED_LAWS, FILE_TORQUE_LAWS
+from ancf.belts.pulleys import FILE_SPEED_LAWS, FILE_TORQUE_LAWS, LOAD_LAWS
 from ancf.common.inputs import MAX_STEPS
 from ancf.common.params import InputError, Param
 from ancf.solvers.alpha_march import ACCEPT, REFRESH, REFRESH_RATIO
@@ -249,7 +251,15 @@ ROLES = {role.name: role for role in (
     PulleyRole(name="driven", free=True, law_key="load", laws=FILE_TORQUE_LAWS,
                keys=(_INERTIA, _DAMPING,
                      Param("load", REQUIRED, str, doc="load torque law",
-                           choices=tuple(FILE_TORQUE_LAWS))),
+                           choices=tuple(FILE_TORQUE_LAWS)),
+                     Param("load_acts", "signed", str, doc="how the load torque acts "
+                           "(ancf.belts.pulleys.LOAD_LAWS): 'signed', T_a(t) against "
+                           "counter-clockwise rotation whatever the pulley does; 'resisting', "
+                           "|T_a(t)| tanh(omega / omega_reg) against its rotation (a brake: "
+                           "it cannot drive the belt)", choices=tuple(LOAD_LAWS)),
+                     Param("omega_reg", 0.1, float, "rad/s", "the resisting load's "
+                           "regularising speed (tanh(omega / omega_reg); load_acts = "
+                           "'resisting' only)", lo=0, lo_open=True, hi=1e3)),
                steady=lambda p: {"torque": p["load_torque"], "damping": p["damping"]}),
     PulleyRole(name="idler", free=True, keys=(_INERTIA, _DAMPING),
                steady=lambda p: {"damping": p["damping"]}),

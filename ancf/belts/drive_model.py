@@ -9,7 +9,8 @@ the centreline at that radius.  Each pulley's law becomes a row of the
 :class:`ancf.belts.drive2d.Rig`: ``prescribed`` its angular velocity law, ``fixed``
 zero, ``driven`` a free pulley with its inertia, damping and load torque law, ``idler``
 a free one without load, ``tensioner`` a free one without load on an arm whose angle is
-one more free coordinate (after the pulleys', :mod:`ancf.belts.arm2d`).  A pulley on the
+one more free coordinate (after the pulleys', :mod:`ancf.belts.arm2d`); how each free
+pulley's load acts (``load_acts``) is its row of the rig's ``loads``.  A pulley on the
 belt's back (``side = -1``) is contact like any other.  The belt's strain-rate damping
 (``damping_axial`` dEA, ``damping_bending`` dEI) acts on its axial and bending strain
 rates (:func:`ancf.elements.dufva2d.damping_forces`).  The element takes the file's
@@ -31,6 +32,7 @@ from ancf.belts.arm2d import ARM_COLUMNS, arm_row
 from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
 from ancf.belts.drive3d import Belt3DDrive, Plate3DSpec
 from ancf.belts.friction import ALL_PARAMS
+from ancf.belts.pulleys import load_records
 from ancf.belts.drive_data import ROLES, DriveDescription, element_modulus, laid_factor
 
 
@@ -68,7 +70,10 @@ def rig(d: DriveDescription, dim: int = 2) -> Rig:
                np.array([p.params["damping"] for p in chosen]
                         + [p.params["arm_damping"] for p in arms], dtype=float),
                tuple(r.time_law(p.params) for p, r in zip(d.pulleys, roles)),
-               _arms(d, free))
+               _arms(d, free), load_records(
+                   [(p.params.get("load_acts"), i, p.params)
+                    for i, (p, r) in enumerate(zip(d.pulleys, roles)) if r.free]
+                   + [(None, -1, {})] * len(arms)))
 
 
 def _friction(d: DriveDescription) -> tuple:

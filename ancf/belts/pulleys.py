@@ -26,6 +26,15 @@ hold the laws ``law(t, final, t0, t1)`` of the time (s, an array) that are 0 up 
 laws of :data:`FILE_SPEED_LAWS` and :data:`FILE_TORQUE_LAWS` (a table, a constant).  A
 new law is one function and one TimeLaw here; tests/belts/test_pulley_laws.py holds
 every law of SPEED_LAWS and TORQUE_LAWS to that contract.
+
+How a free pulley's load torque acts is a :class:`LoadLaw` of :data:`LOAD_LAWS` (a drive
+file's ``load_acts``): ``signed``, T_a(t) as given, resisting counter-clockwise rotation
+whatever the pulley does (Eq. 3.26; a load above what the belt carries turns the pulley
+backwards), or ``resisting``, a brake or accessory that opposes the motion and cannot
+drive the belt: |T_a(t)| tanh(omega / omega_reg) against the pulley's angular velocity
+omega (rad/s), smooth through omega = 0 for Newton (``omega_reg`` rad/s; at |omega| = 3
+omega_reg it is 99.5 % of |T_a|).  The march reads it from a :data:`LOAD` record per free
+pulley by field name (:func:`load_records`; :func:`ancf.belts.system.load_terms`).
 """
 from __future__ import annotations
 
@@ -122,3 +131,46 @@ def driver_shift(t, u0: float, t0: float = T0) -> tuple:
     rate (m/s)."""
     t = np.asarray(t, dtype=float)
     return u0 * np.clip(t / t0, 0.0, 1.0), np.where(t < t0, u0 / t0, 0.0)
+
+
+@dataclass(frozen=True, kw_only=True)
+class LoadLaw:
+    """How a free pulley's load torque T_a(t) (N m) acts on it at angular velocity omega
+    (rad/s): ``name``, ``code`` (the :data:`LOAD` record's ``law``), ``keys`` the drive-file
+    keys of its parameters in the order ``torque`` takes them, ``torque(T_a, omega,
+    *parameters)`` the moment (N m) against counter-clockwise rotation."""
+
+    name: str
+    code: int
+    keys: tuple[str, ...]
+    torque: Callable
+
+
+def signed(Ta, omega):
+    """T_a as given (N m), whatever omega (rad/s)."""
+    return Ta + 0.0 * np.asarray(omega)
+
+
+def resisting(Ta, omega, omega_reg: float):
+    """|T_a| tanh(omega / omega_reg) (N m): against the rotation, at omega (rad/s)."""
+    return np.abs(Ta) * np.tanh(np.asarray(omega) / omega_reg)
+
+
+#: load laws by name (a drive file's driven pulley ``load_acts``; default ``signed``)
+LOAD_LAWS = _by_name(LoadLaw(name="signed", code=0, keys=(), torque=signed),
+                     LoadLaw(name="resisting", code=1, keys=("omega_reg",), torque=resisting))
+SIGNED, RESISTING = (LOAD_LAWS[k].code for k in ("signed", "resisting"))
+#: the march's record of a free pulley's load law: its code, the row of the pulley laws
+#: holding T_a(t) (-1: none, a tensioner's arm), omega_reg rad/s (the resisting law's)
+LOAD = np.dtype((np.record, [("law", "i8"), ("row", "i8"), ("omega_reg", "f8")]))
+
+
+def load_records(laws) -> np.ndarray:
+    """The :data:`LOAD` records (k,) of the free coordinates, ``laws`` one (name, row,
+    parameters dict) each (name None: none, signed)."""
+    out = np.zeros(len(laws), LOAD)
+    for rec, (name, row, params) in zip(out, laws):
+        law = LOAD_LAWS[name or "signed"]
+        rec.law, rec.row = law.code, row
+        rec.omega_reg = params.get("omega_reg", 1.0)
+    return out

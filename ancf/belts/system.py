@@ -9,6 +9,9 @@ off its diagonal: :mod:`ancf.belts.forces`):
     M z'' + dU/dz - Q_c(z, z', omega(t), theta') - F_g = 0          (Eqs 2.27, 3.27)
     I_j theta_j'' - T_c,p(z, z', theta_j') + T_a,p(t) + c_j theta_j' = 0     (Eq. 3.26)
 
+(T_a,p(t) signed; a ``resisting`` load |T_a,p(t)| tanh(theta_j' / omega_reg) instead,
+:func:`load_terms`)
+
 with the contact forces Q_c, the pulley moments T_c,p and the belt's weight F_g
 (:mod:`ancf.belts.forces`); ``tabs`` (nlaws, nts) holds the pulley laws at every step
 time (the drive's ``laws(ts)``).  The iteration matrix is bordered: a band block for
@@ -43,6 +46,7 @@ from numba import njit
 
 from ancf.belts import friction
 from ancf.belts.forces import evaluate
+from ancf.belts.pulleys import RESISTING, load_records
 from ancf.common.dispatch import implements
 from ancf.solvers import banded
 from ancf.solvers.alpha_march import (system_accept, system_factor, system_prepare,
@@ -59,6 +63,7 @@ class BeltSystem(NamedTuple):
     mass_rows: tuple     # its nonzeros by row (mass_rows): row pointers, columns, values
     kl: int              # half-bandwidth
     tabs: np.ndarray     # pulley laws at the step times (nlaws, nts)
+    loads: np.ndarray    # (k,) how each free coordinate's load acts (pulleys.LOAD records)
     steps: np.ndarray    # (nts,) the step ending at each step time, s (0 at the first)
     zs: np.ndarray       # (nslots, ...) the friction state at the start of the step that
     #                      ended at each output slot (a law with a state; else (0, ...))
@@ -86,13 +91,40 @@ def belt_system(drive, ts, nslots: int = 0, mean_from: float = np.inf) -> BeltSy
     kernel = drive.kernel()
     shape = (0, 0, 0, 0) if kernel.z is None else (nslots, *kernel.z.shape[1:])
     return BeltSystem(drive=kernel, Mb=drive.Mb, mass_rows=mass_rows(drive.Mb, drive.pattern.kl),
-                      kl=drive.pattern.kl, tabs=drive.laws(ts), steps=steps(ts),
+                      kl=drive.pattern.kl, tabs=drive.laws(ts), loads=loads_of(drive),
+                      steps=steps(ts),
                       zs=np.zeros(shape), hs=np.zeros(shape[0]),
                       window=window_weights(ts, mean_from), weight=np.zeros(1),
                       sums=np.zeros((3, kernel.radii.size)), S=drive.pattern.zeros_matrix(),
                       piv=np.zeros(n, dtype=np.int64), U=np.zeros((k, n)), row=np.zeros((k, n)),
                       col=np.zeros((k, n)), corner=np.zeros((k, k)), schur=np.zeros((k, k)),
                       spiv=np.zeros(k, dtype=np.int64))
+
+
+def loads_of(drive) -> np.ndarray:
+    """The rig's :data:`ancf.belts.pulleys.LOAD` records (k,), every load signed where it
+    has none (the thesis drives)."""
+    loads = drive.rig.loads
+    return load_records([(None, -1, {})] * drive.k) if loads is None else loads
+
+
+@njit(cache=True)
+def load_terms(loads, laws, v, gp, want_J, r, corner):
+    """Each free coordinate's load law (:data:`ancf.belts.pulleys.LOAD`, read by field):
+    :func:`ancf.belts.forces.evaluate` puts the signed torque T_a = laws[row] (N m) into
+    its residual r[n + j]; a ``resisting`` law's torque |T_a| tanh(omega / omega_reg)
+    against the angular velocity omega = v[n + j] (rad/s) replaces it, with its
+    derivative by omega, gp |T_a| (1 - tanh^2) / omega_reg, in the ``corner``."""
+    n = v.size - loads.size
+    for j in range(loads.size):
+        rec = loads[j]
+        if rec.law != RESISTING:
+            continue
+        Ta = laws[rec.row]
+        s = np.tanh(v[n + j] / rec.omega_reg)
+        r[n + j] += abs(Ta) * s - Ta
+        if want_J:
+            corner[j, j] += gp * abs(Ta) * (1.0 - s * s) / rec.omega_reg
 
 
 def mass_rows(Mb, kl: int) -> tuple:
@@ -236,6 +268,7 @@ def _residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r):
     n = x1.size - inertia.size
     count[PAIRS] += evaluate(x1, v1, system.tabs[:, k], system.drive, want_J, bp, gp, r,
                              system.S, system.col, system.row, system.corner)
+    load_terms(system.loads, system.tabs[:, k], v1, gp, want_J, r, system.corner)
     add_mass_times(system.mass_rows, acc1, r)
     for j in range(inertia.size):
         r[n + j] += inertia[j] * acc1[n + j]

@@ -155,31 +155,15 @@ def warn(p: dict, res: SceneResult) -> list:
 
 
 def sense_checks(p: dict, res: SceneResult) -> list:
-    """Pre-tension, capstan bound and steady window from the input; reversal, gross slip,
-    compression and drift over the steady window of a finished run (not when the window
-    lies in the driver ramp: its values are transient anyway)."""
-    k, R1, R2 = p["E"] * p["b"] * p["h"], p["R1"], p["R2"]
+    """The belt drives' physical-sense checks (:func:`ancf.scenes.sense.drive`) on the
+    thesis drive's numbers (:func:`ancf.scenes.belt_common.sense_drive`)."""
+    k = p["E"] * p["b"] * p["h"]
     T0 = sense.membrane_force(k, bc.path_of(p).length / bc.belt_length(p))
-    wrap = sense.min_wrap(R1, R2, 2 * bc.X_CENTRE)
-    out = (sense.pretension(T0, p["rho"] * p["b"] * p["h"] * (p["omega_final"] * R1) ** 2)
-           + sense.capstan(p["Ta_max"], sense.capstan_torque(T0, p["mu"], wrap, R2), T0,
-                           p["mu"], wrap))
-    ramp = sense.steady_window(p["t_end"], STEADY_WINDOW, {"driver ramp (Eq. 3.29)": T1})
     r = res.results
-    if ramp or not res.converged or r.get("tension_tight_mean_N") is None:
-        return out + ramp
-    means = {"tight": r["tension_tight_mean_N"], "slack": r["tension_slack_mean_N"]}
-    out += sense.span_samples(means)
-    t = np.asarray(r["times"])
-    sel = t >= t[-1] - STEADY_WINDOW - 1e-12
-    rim_d = float(np.mean(np.asarray(r["omega_driver"])[sel])) * R1
-    rim_n = float(np.mean(np.asarray(r["omega_driven"])[sel])) * R2
-    out += sense.reversed_driven(rim_d, rim_n)
-    if rim_d > 0:
-        out += sense.gross_slip(1.0 - rim_n / rim_d, r["tension_tight_mean_N"],
-                                r["tension_slack_mean_N"], k)
-    out += sense.compression(means)
-    return out + sense.drift(t[sel], np.asarray(r["omega_driven"])[sel], STEADY_WINDOW)
+    spans = ({"tight": r["tension_tight_mean_N"], "slack": r["tension_slack_mean_N"]}
+             if res.converged and r.get("tension_tight_mean_N") is not None else None)
+    return sense.drive(bc.sense_drive(p, res, bc.path_of(p), T0, k, p["b"] * p["h"],
+                                      STEADY_WINDOW, {"driver ramp (Eq. 3.29)": T1}, spans))
 
 
 def penetration(p: dict, res: SceneResult) -> list:

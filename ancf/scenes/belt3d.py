@@ -195,31 +195,19 @@ def run(p: dict) -> SceneResult:
 
 
 def warn(p: dict, res: SceneResult) -> list:
-    """The physical-sense checks of :mod:`ancf.scenes.sense`: pre-tension, capstan bound and
-    steady window from the input; reversal, gross slip (membrane span tensions), compression
-    and drift over the steady window of a finished run (not when the window lies in a ramp)."""
+    """The belt drives' physical-sense checks (:func:`ancf.scenes.sense.drive`) on the
+    thesis drive's numbers (:func:`ancf.scenes.belt_common.sense_drive`; the membrane's
+    span tensions)."""
     k, R = p["E"] * p["h"] * p["width"], p["R"]
     L0 = res.results.get("belt_length_m") or belt_length(p)
     T0 = sense.membrane_force(k, (path_of(p).length + 2.0 * p["u0"]) / L0)
-    out = (sense.pretension(T0, p["rho"] * p["h"] * p["width"] * (p["omega_final"] * R) ** 2)
-           + sense.capstan(p["Ta_max"], sense.capstan_torque(T0, p["mu"], math.pi, R), T0,
-                           p["mu"], math.pi))
     ramps = {"driver ramp (Eq. 3.29)": p["t1"]}
     if p["Ta_max"] > 0:
         ramps["load torque ramp (Eq. 4.47)"] = TA_T1
-    ramp = sense.steady_window(p["t_end"], p["steady_window"], ramps)
     r = res.results
-    if ramp or not res.converged or not r.get("tensions"):
-        return out + ramp
-    t = np.asarray(r["times"])
-    sel = t >= t[-1] - p["steady_window"] - 1e-12
-    wd, wn = np.asarray(r["omega_driver"])[sel], np.asarray(r["omega_driven"])[sel]
-    out += sense.reversed_driven(float(wd.mean()) * R, float(wn.mean()) * R)
-    T = r["tensions"]["membrane"]
-    if r["slip_driven"] is not None:
-        out += sense.gross_slip(r["slip_driven"], T["tight"], T["slack"], k)
-    out += sense.compression({"tight": T["tight"], "slack": T["slack"]})
-    return out + sense.drift(t[sel], wn, p["steady_window"])
+    spans = (dict(r["tensions"]["membrane"]) if res.converged and r.get("tensions") else None)
+    return sense.drive(bc.sense_drive(p, res, path_of(p), T0, k, p["h"] * p["width"],
+                                      p["steady_window"], ramps, spans))
 
 
 BELT3D_KNOBS = ("n_elements", "contact_points", "integrator", "dt", "rho_inf", "newton_tol",

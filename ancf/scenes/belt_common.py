@@ -8,12 +8,15 @@ import sys
 
 import numpy as np
 
+from ancf.belts import post2d, post3d
 from ancf.belts.contact2d import SUPPORTED_POINTS
+from ancf.belts.drive3d import Belt3DDrive
 from ancf.belts.dynamics import BeltOptions, simulate
 from ancf.belts.path import TwoPulleyPath
 from ancf.belts.pretension import settle
 from ancf.common.inputs import MAX_STEPS, check_sampling, following, intervals
 from ancf.common.params import InputError, Param
+from ancf.scenes import sense
 from ancf.scenes.base import SceneResult
 
 #: Table 3.1
@@ -177,3 +180,38 @@ def run(drive, p: dict, march, results_of, keep_unsettled: bool) -> SceneResult:
                    pretension_iterations=0 if pre is None else pre.iterations)
     return SceneResult(res.converged, res.message, results,
                        extra={"result": res, "drive": drive})
+
+
+def penetrations(drive, res) -> np.ndarray:
+    """The belt's largest penetration into each pulley at the last sample of ``res`` (np,),
+    m: the 2D belt's centreline at 8 points per element (:func:`ancf.belts.post2d.sample`),
+    the plate belt's contact points (:func:`ancf.belts.post3d.contact_sample`)."""
+    x, v, t = res.q[-1], res.v[-1], float(res.t[-1])
+    if isinstance(drive, Belt3DDrive):
+        d = post3d.contact_sample(drive, x, v, t)[1]
+    else:
+        d = post2d.sample(drive, x, v, t).d
+    return np.asarray(d).reshape(-1, drive.radii.size).max(axis=0)
+
+
+def sense_drive(p: dict, res: SceneResult, path, T0: float, k: float, area: float,
+                window: float, ramps: dict, spans: dict | None) -> sense.Drive:
+    """The thesis drive's numbers (driver and driven pulley on ``path``, the driven one
+    under ``Ta_max``) for :func:`ancf.scenes.sense.drive`: pre-tension T0 (N), axial
+    stiffness k (N), section ``area`` (m^2), the steady ``window`` (s) and ``ramps``
+    {name: end s}; ``spans`` {tight, slack: mean N} of a finished run (None: the run's
+    checks are left out)."""
+    r, drive = res.results, res.extra.get("drive")
+    names, roles, loads = ("driver", "driven"), ("prescribed", "driven"), (0.0, p["Ta_max"])
+    radii, wraps = (path.R1, path.R2), path.wrap
+    t = np.asarray(r.get("times", []), dtype=float)
+    sel = t >= t[-1] - window - 1e-12 if spans else np.zeros(t.size, dtype=bool)
+    W = [np.asarray(r.get(key, []), dtype=float)[sel] for key in ("omega_driver", "omega_driven")]
+    pen = penetrations(drive, res.extra["result"]) if spans else (None, None)
+    pulleys = tuple(sense.Pulley(n, role, R, 1, wrap, load=Ta,
+                                 omega=p["omega_final"] if role == "prescribed" else 0.0,
+                                 omega_mean=float(w.mean()) if w.size else None,
+                                 trace=tuple(w), penetration=None if d is None else float(d))
+                    for n, role, R, wrap, Ta, w, d in zip(names, roles, radii, wraps, loads, W, pen))
+    return sense.Drive(pulleys, T0, k, p["rho"] * area, p["mu"], p["t_end"], window, ramps,
+                       finished=spans is not None, spans=spans or {}, times=tuple(t[sel]))

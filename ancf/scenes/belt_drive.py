@@ -13,9 +13,10 @@ section.key=value`` overrides a key of the file (``friction.mu=1.0``,
 Results: the sample times; per pulley its angular velocity and the belt's moment on it
 (the friction's, counter-clockwise positive) at every sample, their means over every time
 step of ``run.steady_window`` (the march's, :func:`ancf.belts.dynamics.simulate`: a
-moment fluctuating faster than the samples does not alias into them) and the slip over
+moment fluctuating faster than the samples does not alias into them), the slip over
 the window (1 - its mean rim speed / the driver's, the driver the first prescribed
-pulley); per span (pulley k to k + 1) the mean axial force
+pulley; signed, rim speeds side x omega x radius) and the belt's largest penetration into
+it at t_end; per span (pulley k to k + 1) the mean axial force
 over its middle third at t_end and averaged over the samples of the steady window; the
 axial force, the speed, the position and the contact forces (normal and friction per unit
 length, summed over the pulleys) along the belt at t_end; per tensioner its arm's angle; the run
@@ -25,16 +26,18 @@ length integrated across the width there.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ancf.belts.arm2d import BETA0, COORD, PULLEY
 from ancf.belts.contact2d import contact_forces_moving
+from ancf.belts.drive_data import ROLES, element_modulus, time_law
 from ancf.belts.drive_file import load
 from ancf.belts import post3d
 from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, simulate
+from ancf.belts.path import PulleyPath
 from ancf.belts.post2d import sample, span_tension
 from ancf.belts.pretension import settle
 from ancf.common.params import InputError, Param
@@ -138,16 +141,19 @@ def _moments(desc, drive, res) -> np.ndarray:
                      for x, v, t, z in zip(res.q, res.v, res.t, states)])
 
 
-def _pulleys(desc, drive, res) -> list:
+def _pulleys(desc, drive, res, penetration) -> list:
+    """Per pulley its speeds, moments, signed slip and the belt's largest penetration
+    into it at t_end (``penetration`` (np,), m)."""
     W = np.array([drive.omegas(float(t), v) for t, v in zip(res.t, res.v)])
     T = _moments(desc, drive, res)
     mean, moment = res.extra["step_means"]
     d = next(i for i, q in enumerate(desc.pulleys) if q.law == "prescribed")
-    rim = np.abs(mean) * drive.radii
-    slip = 1.0 - rim / rim[d] if rim[d] > 0 else np.full(rim.size, np.nan)
+    rim = np.array([q.side for q in desc.pulleys]) * mean * drive.radii
+    slip = 1.0 - rim / rim[d] if rim[d] != 0 else np.full(rim.size, np.nan)
     return [{"name": q.name, "omega": W[:, i].tolist(), "torque_Nm": T[:, i].tolist(),
              "omega_mean": float(mean[i]), "torque_mean_Nm": float(moment[i]),
-             "slip": float(slip[i])} for i, q in enumerate(desc.pulleys)]
+             "slip": float(slip[i]), "penetration_max_m": float(penetration[i])}
+            for i, q in enumerate(desc.pulleys)]
 
 
 def _arms(drive, res, window) -> list:
@@ -162,7 +168,8 @@ def _arms(drive, res, window) -> list:
 
 def _results(desc, drive, res) -> dict:
     window = np.flatnonzero(res.t >= res.t[-1] - desc.run["steady_window"] - 1e-12)
-    out = {"times": res.t.tolist(), "pulleys": _pulleys(desc, drive, res),
+    out = {"times": res.t.tolist(),
+           "pulleys": _pulleys(desc, drive, res, bc.penetrations(drive, res)),
            "arms": _arms(drive, res, window)}
     end = _end3d if desc.belt["element"] == "plate36" else _end2d
     out.update(end(desc, drive, res, window))
@@ -194,41 +201,87 @@ def run(p: dict) -> SceneResult:
 
 
 def warn(p: dict, res: SceneResult) -> list:
-    """A steady window reaching into a pulley law's ramp, and a penetration beyond half
-    the pre-stretch per wrap (as belt2d)."""
+    """The physical-sense checks of every belt drive (:func:`ancf.scenes.sense.drive` on
+    :func:`sense_drive`'s numbers) and a penetration beyond half the pre-stretch per wrap
+    (as belt2d)."""
     desc = res.extra.get("description")
-    if desc is None or not res.converged:
+    if desc is None:
         return []
-    out = []
-    t_end, window = desc.run["t_end"], desc.run["steady_window"]
-    ramps = [q.params["t1"] for q in desc.pulleys if "t1" in q.params]
-    if ramps and t_end - window < max(ramps):
-        out.append(f"run.steady_window = {window:g} s starts at {t_end - window:g} s, before "
-                   f"the pulley laws settle at {max(ramps):g} s: the means are not steady")
-    out += _sense(desc, res.results)
+    out = sense.drive(sense_drive(desc, res.results if res.converged else None))
     pre = -desc.belt["prestretch"] * desc.path.length / (2 * np.pi)
-    pen = res.results["penetration_max_m"]
-    if pre > 0 and pen > 0.5 * pre:
+    pen = res.results.get("penetration_max_m") if res.converged else None
+    if pen is not None and pre > 0 and pen > 0.5 * pre:
         out.append(f"penetration {1e3 * pen:.2g} mm = {pen / pre:.2g} x the pre-stretch per "
                    f"wrap ({1e3 * pre:.2g} mm): contact.k_p = {desc.contact['k_p']:g} N/m^2 is "
                    "too soft for the pre-tension; raise it")
     return out
 
 
-def _sense(desc, r: dict) -> list:
-    """Spans in compression and pulleys still drifting over the steady window
-    (:mod:`ancf.scenes.sense`; not when the window lies in a ramp)."""
-    t_end, window = desc.run["t_end"], desc.run["steady_window"]
-    if any(t_end - window < q.params["t1"] for q in desc.pulleys if "t1" in q.params):
-        return []
-    out = sense.compression({f"{s['from']}-{s['to']}": s["tension_mean_N"] for s in r["spans"]})
-    t = np.asarray(r["times"])
-    sel = t >= t[-1] - window - 1e-12
-    for q, pul in zip(desc.pulleys, r["pulleys"]):
-        if q.law != "prescribed":
-            out += [f"{q.name}: {w}" for w in sense.drift(t[sel], np.asarray(pul["omega"])[sel],
-                                                          window)]
+def pretension(desc) -> float:
+    """The belt's pre-tension T0 (N) on its path at rest, by the element's axial law at the
+    stretch path / reference length (the plate belt's membrane: the uniaxial Green law on
+    E h b; the Dufva belt's: E A alpha1 with its ``axial_strain``)."""
+    b = desc.belt
+    lam = desc.path.length / b["length"]
+    if b["element"] == "plate36":
+        return sense.membrane_force(b["E"] * b["h"] * b["b"], lam)
+    k = element_modulus(b) * b["b"] * b["h"] * b["alpha1"]
+    return sense.membrane_force(k, lam) if b["axial_strain"] == "green" else k * (lam - 1.0)
+
+
+def _ramps(desc) -> dict:
+    """The end time (s) of every pulley law that changes with time: a ramp's or step's t1,
+    a table's last row."""
+    out = {}
+    for q in desc.pulleys:
+        ends = [q.params[k] for k in ("t1",) if k in q.params] + [
+            q.params[k][-1][0] for k in ("speed_table", "load_table") if k in q.params]
+        if ends:
+            out[f"{q.name}'s law"] = max(ends)
     return out
+
+
+def _arm_into(desc, i: int) -> float:
+    """+1 if turning tensioner i's arm counter-clockwise lengthens the belt's path (presses
+    its pulley into the belt), else -1."""
+    q, path = desc.pulleys[i], desc.path
+    P, c = np.asarray(q.params["pivot"]), np.asarray(q.centre)
+    a = np.arctan2(*(c - P)[::-1]) + 1e-6
+    moved = list(path.pulleys)
+    moved[i] = replace(moved[i], centre=tuple(P + q.params["arm_length"]
+                                              * np.array([np.cos(a), np.sin(a)])))
+    return float(np.sign(PulleyPath(moved).length - path.length))
+
+
+def sense_drive(desc, results: dict | None) -> sense.Drive:
+    """The drive's numbers for :func:`ancf.scenes.sense.drive`: from the description, and
+    from the ``results`` of a finished run (None: none)."""
+    r, b, t_end = desc.run, desc.belt, desc.run["t_end"]
+    final = [float(time_law(q)(np.array([t_end]))[0]) for q in desc.pulleys]
+    got = results or {}
+    ran = got.get("pulleys") or [{}] * len(desc.pulleys)
+    times = np.asarray(got.get("times", []), dtype=float)
+    sel = times >= t_end - r["steady_window"] - 1e-12 if times.size else times.astype(bool)
+    pulleys = tuple(sense.Pulley(
+        q.name, q.law, q.radius + b["contact_offset"], q.side, wrap,
+        load=f if q.law == "driven" else 0.0, omega=f if q.law == "prescribed" else 0.0,
+        omega_mean=o.get("omega_mean"), trace=tuple(np.asarray(o.get("omega", []))[sel])
+        if o else (), penetration=o.get("penetration_max_m"))
+        for q, wrap, f, o in zip(desc.pulleys, desc.path.wraps, final, ran))
+    arms = tuple(sense.Arm(q.name, q.params["arm_preload"], _arm_into(desc, i))
+                 for i, q in enumerate(desc.pulleys) if ROLES[q.law].arm)
+    if got.get("arms"):
+        arms = tuple(replace(a, turn=float(np.max(np.abs(np.asarray(o["angle_rad"])
+                                                         - o["angle_rad"][0]))))
+                     for a, o in zip(arms, got["arms"]))
+    area = b["b"] * b["h"]
+    k = (b["E"] if b["element"] == "plate36" else element_modulus(b)) * area
+    return sense.Drive(pulleys, pretension(desc), k, b["rho"] * area, desc.friction["mu"],
+                       t_end, r["steady_window"], _ramps(desc), arms,
+                       finished=bool(got.get("spans")),
+                       spans={f"{s['from']}-{s['to']}": s["tension_mean_N"]
+                              for s in got.get("spans") or []},
+                       times=tuple(times[sel]))
 
 
 @dataclass(frozen=True)
@@ -317,7 +370,11 @@ RESULTS = {
         "torque_mean_Nm": field(NUM, "mean of the belt's moment on it over every time "
                                      "step of run.steady_window, N m"),
         "slip": field(NUM, "1 - its mean rim speed / the driver's (the first prescribed "
-                           "pulley) over the window")}),
+                           "pulley) over the window, signed: rim speed = side x omega_mean x "
+                           "radius along the belt's running direction, so above 1 it turns "
+                           "against its belt and below 0 it runs ahead of the driver"),
+        "penetration_max_m": field(NUM, "the belt's largest penetration into it at t_end "
+                                        "(<= 0: no contact over its wrap), m")}),
     "arms": field("array", "per tensioner, in belt order (null when the run stopped)",
                   items="object", nullable=True, keys={
         "name": field(STR, "the tensioner pulley's name"),

@@ -5,12 +5,22 @@ Each check is a function of plain numbers returning a list of one-line warnings 
 the check passes), so that the scenes' ``warn`` functions only gather the numbers.  The
 thresholds are named here and listed in the README's table "Physical-sense checks".
 
-Belt drives (``belt2d``, ``belt3d``, ``belt-drive``), the means over the steady window:
+Belt drives (``belt2d``, ``belt3d``, ``belt-drive``, 2D and plate belts alike) run one set,
+:func:`drive`, on the numbers of a :class:`Drive` (its pulleys, spans and tensioner arms);
+from the input: :func:`pretension`, :func:`capstan` per loaded pulley and the driver,
+:func:`arm_preload` and :func:`steady_window`; from the means over the steady window of a
+finished run: :func:`reversed_driven` per free pulley, :func:`gross_slip` per free pulley,
+:func:`compression` and :func:`undefined_spans`, :func:`off_pulley` per pulley (at t_end),
+:func:`arm_travel` and :func:`drift`.  The checks of two numbers each:
 
-* :func:`reversed_driven`: the driven pulley turns against the driver;
-* :func:`gross_slip`: the driven rim lags the driver's by more than the belt's creep
-  ``(T_t - T_s) / (k + T_t)`` (steady mass flow through the spans, ``k`` = E A) plus
-  :data:`SLIP_EXCESS`;
+* :func:`reversed_driven`: a free pulley's rim runs against its belt (below
+  -:data:`REVERSE_REL` x the driver's);
+* :func:`gross_slip`: a free pulley's rim lags (or leads) the driver's by more than the
+  belt's creep ``(T_t - T_s) / (k + T_t)`` (steady mass flow through the spans, ``k`` =
+  E A; T_t, T_s the largest and smallest span tensions) plus :data:`SLIP_EXCESS`;
+* :func:`off_pulley`: no belt point inside a pulley at t_end (the belt is off it);
+* :func:`arm_travel`: a tensioner arm turned more than :data:`ARM_TRAVEL` from its start;
+  :func:`arm_preload`: its spring turns it away from the belt;
 * :func:`compression`: a span mean tension below zero (a belt cannot push);
 * :func:`pretension`: a pre-tension ``T_0`` not above the centrifugal tension
   ``rho A v^2`` of the driver's rim speed (the belt lifts off; ``T_0 <= 0``: a belt as
@@ -18,6 +28,8 @@ Belt drives (``belt2d``, ``belt3d``, ``belt-drive``), the means over the steady 
 * :func:`capstan`: the load torque above the capstan bound ``2 T_0 r tanh(mu theta / 2)``
   (``T_t / T_s = exp(mu theta)`` with ``T_t + T_s = 2 T_0``, theta the smaller wrap);
 * :func:`steady_window`: a steady window that starts before the prescribed ramps end;
+* :func:`undefined_spans`: a span mean tension that is undefined (no belt point in its
+  middle third at some sample: null in the JSON);
 * :func:`drift`: the driven speed's trend over the window (least-squares slope times
   the window) above :data:`DRIFT_REL` of its mean.
 
@@ -29,6 +41,7 @@ check's factor).  Statics: :func:`circle` (the free belt's shape against its cir
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -44,6 +57,9 @@ REVERSE_REL = 0.01
 DRIFT_REL = 0.05
 #: below this speed (rad/s) a pulley is at rest for the drift and reversal checks
 SPEED_FLOOR = 1e-9
+#: a tensioner arm's largest turn from its start, rad: 30 degrees (the serpentine
+#: example's arm turns 0.3 degrees; a spring pulling away from the belt: 143 degrees)
+ARM_TRAVEL = math.radians(30.0)
 #: thin-plate (Kirchhoff, linear) range: centre deflection below this times h (membrane
 #: action adds about (w/h)^2 / 2 to the stiffness: 0.3 h changes w by about 5 %)
 THIN_PLATE_W_OVER_H = 0.3
@@ -61,35 +77,33 @@ def membrane_force(k: float, stretch: float) -> float:
     return 0.5 * k * stretch * (stretch * stretch - 1.0)
 
 
-def min_wrap(R1: float, R2: float, distance: float) -> float:
-    """The smaller wrap angle (rad) of an open belt on two pulleys of radii R1, R2 (m)
-    whose centres are ``distance`` (m) apart: pi - 2 asin(|R2 - R1| / distance)."""
-    return math.pi - 2.0 * math.asin(abs(R2 - R1) / distance)
-
-
 def capstan_torque(T0: float, mu: float, wrap: float, r: float) -> float:
     """Largest torque (N m) on a pulley of radius r (m) at pre-tension T0 (N): 2 T0 r
     tanh(mu wrap / 2), from T_t / T_s = exp(mu wrap) and T_t + T_s = 2 T0."""
     return 2.0 * max(T0, 0.0) * r * math.tanh(0.5 * mu * wrap)
 
 
-def reversed_driven(rim_driver: float, rim_driven: float) -> list[str]:
-    """Mean rim speeds (m/s, the driver's direction positive) of the two pulleys."""
+def reversed_driven(rim_driver: float, rim_driven: float,
+                    name: str = "the driven pulley") -> list[str]:
+    """Mean rim speeds (m/s, along the belt's running direction: the driver's positive)
+    of the driver and of a free pulley called ``name``."""
     if rim_driven >= -REVERSE_REL * abs(rim_driver) - SPEED_FLOOR:
         return []
-    return [f"the driven pulley turns against the driver (rim speed {rim_driven:.4g} m/s "
-            f"against {rim_driver:.4g} m/s over the steady window): the belt does not drive it"]
+    return [f"{name} turns against its belt (rim speed {rim_driven:.4g} m/s against the "
+            f"driver's {rim_driver:.4g} m/s over the steady window): the belt does not drive "
+            "it"]
 
 
 def gross_slip(slip: float, T_t: float, T_s: float, k: float) -> list[str]:
-    """``slip`` = 1 - driven rim speed / driver's (window means), span tensions T_t, T_s
-    (N) and the belt's axial stiffness k = E A (N)."""
+    """``slip`` = 1 - a pulley's rim speed / the driver's (window means, signed), span
+    tensions T_t, T_s (N: the largest and smallest) and the belt's axial stiffness k = E A
+    (N): its rim lags (or runs ahead of) the driver's by more than the creep explains."""
     creep = (T_t - T_s) / (k + T_t) if k + T_t > 0 else 0.0
-    if not (math.isfinite(slip) and slip > max(creep, 0.0) + SLIP_EXCESS):
+    if not (math.isfinite(slip) and abs(slip) > max(creep, 0.0) + SLIP_EXCESS):
         return []
-    return [f"gross slip: the driven pulley's rim lags the driver's by {slip:.3g} against a "
-            f"creep (T_t - T_s)/(k + T_t) = {creep:.3g} of the span tensions (bound: creep + "
-            f"{SLIP_EXCESS:g}): the belt slides over the whole wrap"]
+    return [f"gross slip: its rim {'lags' if slip > 0 else 'runs ahead of'} the driver's by "
+            f"{abs(slip):.3g} against a creep (T_t - T_s)/(k + T_t) = {creep:.3g} of the span "
+            f"tensions (bound: creep + {SLIP_EXCESS:g}): the belt slides over the whole wrap"]
 
 
 def compression(tensions: dict) -> list[str]:
@@ -147,9 +161,185 @@ def drift(t, omega, window: float) -> list[str]:
     mean = abs(float(omega.mean()))
     if trend <= DRIFT_REL * mean or trend <= SPEED_FLOOR:
         return []
-    return [f"not steady: the driven speed changes by {trend:.3g} rad/s over the {window:g} s "
+    return [f"not steady: the speed changes by {trend:.3g} rad/s over the {window:g} s "
             f"window (trend), {trend / max(mean, SPEED_FLOOR):.3g} of its mean {mean:.3g} "
             f"rad/s (bound {DRIFT_REL:g}): run longer"]
+
+
+def undefined_spans(tensions: dict) -> list[str]:
+    """Span mean tensions {name: N} that are None (null in the JSON) or NaN."""
+    return span_samples({k: float("nan") if v is None else v for k, v in tensions.items()})
+
+
+def off_pulley(name: str, penetration: float) -> list[str]:
+    """The largest penetration (m) of the belt into a pulley at t_end: none (<= 0) means
+    no contact over its whole wrap."""
+    if penetration > 0:
+        return []
+    return [f"the belt is off pulley {name} at t_end (no contact over its wrap: largest "
+            f"penetration {1e3 * penetration:.3g} mm): it neither carries nor guides the belt"]
+
+
+def arm_travel(name: str, turn: float) -> list[str]:
+    """A tensioner arm's largest turn (rad) from its start over the run."""
+    if not abs(turn) > ARM_TRAVEL:
+        return []
+    return [f"tensioner {name}: its arm turned {math.degrees(abs(turn)):.3g} deg from its "
+            f"start (bound {math.degrees(ARM_TRAVEL):g} deg): the arm is beyond its travel, "
+            "the layout is not the file's"]
+
+
+def arm_preload(name: str, preload: float, into: float) -> list[str]:
+    """A tensioner's spring preload (N m, counter-clockwise positive) against ``into``
+    (+1 if turning its arm counter-clockwise presses the pulley into the belt, -1 if
+    clockwise does)."""
+    if not preload * into < 0:
+        return []
+    return [f"tensioner {name}: its spring preload {preload:g} N m turns the arm away from "
+            "the belt (change its sign): the spring slackens the belt instead of tensioning it"]
+
+
+@dataclass(frozen=True)
+class Pulley:
+    """A pulley as the drive checks see it: ``name``; ``role`` its law (``prescribed``,
+    ``driven``, ``idler``, ``tensioner``, ``fixed``); contact ``radius`` (m); ``side`` (+1
+    the belt's inner side on it, -1 its back); ``wrap`` the belt's wrap on it (rad);
+    ``load`` its final load torque T_a (N m, resisting its running direction; 0: none);
+    ``omega`` its final law's angular velocity (a prescribed pulley's, rad/s); from a run:
+    ``omega_mean`` over the steady window (rad/s), ``trace`` its angular velocity at the
+    window's samples (rad/s), ``penetration`` the belt's largest into it at t_end (m)."""
+
+    name: str
+    role: str
+    radius: float
+    side: int = 1
+    wrap: float = math.pi
+    load: float = 0.0
+    omega: float = 0.0
+    omega_mean: float | None = None
+    trace: tuple = ()
+    penetration: float | None = None
+
+    @property
+    def free(self) -> bool:
+        return self.role in FREE_ROLES
+
+    def rim(self, omega: float) -> float:
+        """Its rim speed (m/s) at angular velocity omega (rad/s) along the belt's
+        counter-clockwise running direction: side omega radius."""
+        return self.side * omega * self.radius
+
+
+@dataclass(frozen=True)
+class Arm:
+    """A tensioner's arm: its pulley's ``name``, ``preload`` (N m, counter-clockwise),
+    ``into`` (+1: turning the arm counter-clockwise presses the pulley into the belt, -1:
+    clockwise does) and, from a run, ``turn`` its largest turn from its start (rad)."""
+
+    name: str
+    preload: float
+    into: float
+    turn: float | None = None
+
+
+@dataclass(frozen=True)
+class Drive:
+    """A belt drive's numbers for :func:`drive`: ``pulleys`` (:class:`Pulley`, the driver
+    the first prescribed one), the belt's pre-tension ``T0`` (N, on the path at rest),
+    axial stiffness ``k`` = E A (N), mass per length ``rhoA`` (kg/m), friction ``mu``,
+    ``t_end``, ``window`` (s) and the laws' ``ramps`` {name: end time s}; ``arms``
+    (:class:`Arm`); from a finished run (``finished``): ``spans`` {name: mean tension N or
+    None} and the window's sample ``times`` (s)."""
+
+    pulleys: tuple
+    T0: float
+    k: float
+    rhoA: float
+    mu: float
+    t_end: float
+    window: float
+    ramps: dict = field(default_factory=dict)
+    arms: tuple = ()
+    finished: bool = False
+    spans: dict = field(default_factory=dict)
+    times: tuple = ()
+
+    @property
+    def driver(self) -> Pulley:
+        return next(q for q in self.pulleys if q.role == "prescribed")
+
+
+#: the roles whose pulleys turn freely (their speed is the belt's doing)
+FREE_ROLES = ("driven", "idler", "tensioner")
+
+
+def _direction(d: Drive) -> float:
+    """The belt's running direction (+1 counter-clockwise): the driver's mean rim speed's
+    sign, else its final law's, else +1."""
+    dr = d.driver
+    rim = dr.rim(dr.omega_mean) if dr.omega_mean else dr.rim(dr.omega)
+    return -1.0 if rim < 0 else 1.0
+
+
+def slips(d: Drive) -> list:
+    """Per pulley, 1 - its mean rim speed / the driver's (:meth:`Pulley.rim`, signed: above
+    1 it runs against the belt, below 0 ahead of the driver); NaN where the driver's is 0
+    or a mean is missing."""
+    dr = d.driver
+    rim_d = dr.rim(dr.omega_mean) if dr.omega_mean is not None else 0.0
+    return [1.0 - q.rim(q.omega_mean) / rim_d if rim_d and q.omega_mean is not None
+            else float("nan") for q in d.pulleys]
+
+
+def loads(d: Drive) -> list[str]:
+    """The capstan bound (:func:`capstan`) of every loaded pulley on its own wrap, and of
+    the driver for the sum of the loads brought to its radius (sum |T_a| r_d / r)."""
+    out = []
+    for q in d.pulleys:
+        if q.load:
+            out += [f"{q.name}: {w}" for w in capstan(
+                abs(q.load), capstan_torque(d.T0, d.mu, q.wrap, q.radius), d.T0, d.mu, q.wrap)]
+    dr = d.driver
+    total = sum(abs(q.load) * dr.radius / q.radius for q in d.pulleys if q.load)
+    if total and not out:
+        out += [f"{dr.name} (driver, the loads at its radius): {w}" for w in capstan(
+            total, capstan_torque(d.T0, d.mu, dr.wrap, dr.radius), d.T0, d.mu, dr.wrap)]
+    return out
+
+
+def _slip_lines(d: Drive) -> list[str]:
+    """Turning against the belt, else gross slip (against the largest and smallest span
+    tensions), per free pulley."""
+    T = [v for v in d.spans.values() if v is not None and math.isfinite(v)] or [0.0]
+    sign, dr = _direction(d), d.driver
+    rim_d = sign * dr.rim(dr.omega_mean or 0.0)
+    out = []
+    for q, s in zip(d.pulleys, slips(d)):
+        if not q.free or q.omega_mean is None:
+            continue
+        out += reversed_driven(rim_d, sign * q.rim(q.omega_mean), q.name) or [
+            f"{q.name}: {w}" for w in gross_slip(s, max(T), min(T), d.k)]
+    return out
+
+
+def drive(d: Drive) -> list[str]:
+    """Every belt drive's physical-sense checks (module docstring) on its numbers: the
+    input's always, the run's when it finished and its window lies after the ramps."""
+    dr = d.driver
+    out = (pretension(d.T0, d.rhoA * dr.rim(dr.omega) ** 2) + loads(d)
+           + [w for a in d.arms for w in arm_preload(a.name, a.preload, a.into)])
+    ramp = steady_window(d.t_end, d.window, d.ramps)
+    if ramp or not d.finished:
+        return out + ramp
+    out += undefined_spans(d.spans) + compression(d.spans) + _slip_lines(d)
+    out += [w for q in d.pulleys if q.penetration is not None
+            for w in off_pulley(q.name, q.penetration)]
+    out += [w for a in d.arms if a.turn is not None for w in arm_travel(a.name, a.turn)]
+    sel = np.asarray(d.times, dtype=float)
+    for q in d.pulleys:
+        if q.free and len(q.trace) == sel.size:
+            out += [f"{q.name}: {w}" for w in drift(sel, q.trace, d.window)]
+    return out
 
 
 def thin_plate(w: float, h: float) -> list[str]:
