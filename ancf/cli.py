@@ -4,6 +4,12 @@
 ``--json`` prints one JSON object ``{scene, params, converged, message, results,
 cpu_time_s, compile_cpu_s, warnings}``.  Exit codes: 0 ok, 2 bad input (one line on stderr naming the
 field and its allowed range), 3 no convergence (the JSON is still printed).
+
+``ancf sweep``: the run count on stderr at once; a grid of more than
+:data:`ancf.study.sweep.MAX_RUNS` runs, or more ``--workers`` than cores, only with
+``--force``; a ``--scheduler`` where no Dask scheduler answers is bad input (exit 2,
+within :data:`ancf.study.sweep_dask.SCHEDULER_TIMEOUT` seconds); a sweep none of whose
+runs converged exits 3 (its rows are still written).
 """
 from __future__ import annotations
 

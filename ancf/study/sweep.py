@@ -30,6 +30,10 @@ combination in worker processes, one row per run, into a Parquet or CSV file:
   environment (:func:`_take_runner`): a worker's start (interpreter, imports, a warm-up
   solve) costs about 1.6 CPU seconds, and ``make reports`` runs some 27 sweeps; an
   interrupted or failed sweep ends its workers;
+* bounded up front: the run count is logged before any run is resolved; more than
+  :data:`MAX_RUNS` runs are refused (the count and the least time in one line) and more
+  workers than cores capped (a ``warning:``), both unless ``force``; a parameter both in
+  the grid and fixed with other values, or ``workers`` beside ``scheduler``, is refused;
 * ``scheduler=ADDRESS`` runs the same tasks on a Dask cluster (dask.distributed); each
   Dask worker thread drives one such worker process, so time limits, isolation and
   the numbers are the same as on one machine.

@@ -244,3 +244,60 @@ def test_a_run_in_another_folder_reads_the_drivers_file(tmp_path, monkeypatch, e
     row = run_case(task)
     assert row["status"] in ("ok", "not-converged") and "no such file" not in row["message"]
     assert row["file"] == "drive.toml"
+
+
+@pytest.fixture
+def cluster_elsewhere(tmp_path, monkeypatch):
+    """A local Dask cluster (127.0.0.1) whose worker processes start in another folder."""
+    from distributed import LocalCluster
+    elsewhere = tmp_path / "workers-start-here"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                      dashboard_address=None) as cluster:
+        monkeypatch.chdir(tmp_path)
+        yield cluster
+
+
+@pytest.mark.slow
+def test_dask_workers_in_another_folder_read_a_relative_drive_file(cluster_elsewhere, tmp_path,
+                                                                   examples):
+    """Before: every row 'invalid: ... no such file' and exit 0."""
+    _short_drive(tmp_path, examples)
+    df = ancf.sweep("belt-drive", grid={"n_elements": [60, 64]}, fixed={"file": "drive.toml"},
+                    scheduler=cluster_elsewhere.scheduler_address, out=tmp_path / "d.csv")
+    assert len(df) == 2 and not df["message"].str.contains("no such file").any()
+    assert set(df["status"]) <= {"ok", "not-converged"}, df[["status", "message"]]
+    assert (df["file"] == "drive.toml").all()
+
+
+@pytest.mark.slow
+def test_a_dask_worker_lost_mid_run_is_counted(cluster_elsewhere, tmp_path):
+    """A worker killed while it holds a run: the scheduler runs it again on the other one,
+    and the summary says so (before: without a word)."""
+    from distributed import Client
+    address = cluster_elsewhere.scheduler_address
+    killed = []
+
+    def kill_one():
+        with Client(address, timeout=30) as c:
+            deadline = time.monotonic() + 120
+            while time.monotonic() < deadline and not killed:
+                for worker, keys in c.processing().items():
+                    if any(str(k).startswith("ancf-sweep-") for k in keys):
+                        pid = c.run(os.getpid, workers=[worker])[worker]
+                        os.kill(pid, signal.SIGKILL)
+                        killed.append(worker)
+                        break
+                time.sleep(0.05)
+
+    killer = threading.Thread(target=kill_one)
+    killer.start()
+    said = []
+    df = ancf.sweep("axial-bar", grid={"n_elements": [1, 2]}, scheduler=address,
+                    out=tmp_path / "lost.csv", log=said.append)
+    killer.join()
+    assert len(killed) == 1
+    assert df.attrs["sweep"]["lost_workers"] == 1 and df.attrs["sweep"]["retried_runs"] >= 1
+    assert "1 Dask worker(s) lost, " in said[-1]
+    assert set(df["status"]) == {"ok"}  # the run itself came back from the other worker
