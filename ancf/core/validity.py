@@ -89,22 +89,34 @@ def check_static(res, assembly, q0):
         res.message = ("No convergence to a physical equilibrium: "
                        + _inverted(float(lo.min()), int(lo.argmin()), n))
         return res
-    factor = np.maximum(hi, 1.0 / lo)
-    k = int(factor.argmax())
-    if factor[k] > AREA_FACTOR:
-        res.warnings.append(f"element {k + 1} of {n} changes its area by a factor {factor[k]:.3g}: "
-                            "strains far beyond the small-strain range of the St Venant-Kirchhoff "
-                            "material, the result is a property of the model, not of a beam")
+    res.warnings += _strained(np.maximum(hi, 1.0 / lo))
     return res
+
+
+def _strained(factor, when: str = "") -> list[str]:
+    """The warning of an area change beyond AREA_FACTOR (``factor``: per element, >= 1)."""
+    k = int(factor.argmax())
+    if not factor[k] > AREA_FACTOR:
+        return []
+    return [f"element {k + 1} of {factor.size} changes its area by a factor {factor[k]:.3g}"
+            f"{when}: strains far beyond the small-strain range of the St Venant-Kirchhoff "
+            "material, the result is a property of the model, not of a beam"]
 
 
 def check_dynamic(res, assembly, q0, t, Q):
     """The first sample with an inverted element ends trust in the run (a run that
-    already failed keeps its own message first)."""
+    already failed keeps its own message first); an area changed by more than
+    AREA_FACTOR at any sample (the static check's range) gets a warning."""
     Q = np.asarray(Q, dtype=float)
     if Q.size == 0:
         return res
-    d = deformation_dets(assembly.groups, Q, q0).min(axis=-1)  # (samples, elements)
+    dets = deformation_dets(assembly.groups, Q, q0)  # (samples, elements, points)
+    d = dets.min(axis=-1)
+    with np.errstate(all="ignore"):
+        factor = np.maximum(dets.max(axis=-1), 1.0 / np.where(d > 0, d, np.inf))
+    worst = np.nanmax(np.where(np.isfinite(factor), factor, 0.0), axis=1)
+    s = int(np.argmax(worst))
+    res.warnings += _strained(np.nan_to_num(factor[s], posinf=0.0), f" at t = {t[s]:.6g} s")
     bad = np.flatnonzero(d.min(axis=-1) <= 0)
     if bad.size:
         k = int(bad[0])

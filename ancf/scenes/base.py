@@ -38,6 +38,7 @@ from ancf.common.compile_time import compile_cpu
 from ancf.common.diagnostics import nonfinite, numerical_warnings
 from ancf.common.params import InputError, Param
 from ancf.common.threads import blas_pinned
+from ancf.solvers.linear import Singular
 
 #: the density ``ancf modes`` adds to the scenes of steel beams and plates, whose static
 #: runs need no mass: steel, the material of their E = 2.07e11 (2.1e11) Pa
@@ -217,7 +218,10 @@ class Scene:
         params = self.resolve(overrides)
         t0 = time.process_time()
         with blas_pinned(), numerical_warnings() as noted, compile_cpu() as compiled:
-            res = self.run(params)
+            try:
+                res = self.run(params)
+            except Singular as exc:  # a solve no solver layer turned into non-convergence
+                res = SceneResult(False, f"No solution: a singular solve ({exc})", {})
         cpu = max(time.process_time() - t0 - compiled.seconds, 0.0)
         res.warnings += noted + (self.warn(params, res) if self.warn else [])
         bad = nonfinite(res.results) if res.converged else []

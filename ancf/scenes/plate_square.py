@@ -29,6 +29,7 @@ from ancf.core.constraints import Elimination
 from ancf.models.plate import grid_points, simply_supported, simply_supported_model
 from ancf.common.params import InputError, Param
 from ancf.scenes import sense
+from ancf.scenes.plate_strip import check_cost
 from ancf.scenes.base import INT, STEEL_DENSITY, Scene, SceneResult, field, nullable
 
 SUPPORTS = Param("supports", "simple", str, doc="edge supports (ancf modes only): 'simple' "
@@ -102,7 +103,9 @@ def warn(p: dict, res: SceneResult) -> list:
 
 
 def _model(p: dict):
-    """(mesh, q0, assembly, elimination, load) of the nonlinear plate of ``ancf modes``."""
+    """(mesh, q0, assembly, elimination, load) of the nonlinear plate of ``ancf modes``
+    (refused before it is built when it would not fit in memory)."""
+    check_cost(p["n_elements"], p["n_elements"])
     m, q0, asm, elim, load = simply_supported_model(p["n_elements"], p["a"], p["a"], p["h"],
                                                     p["E"], p["nu"], p["p"], p["ng"], p["rho"])
     return m, q0, asm, (elim if p["supports"] == "simple" else Elimination(m.n_dofs)), load

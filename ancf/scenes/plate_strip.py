@@ -24,7 +24,7 @@ import math
 from ancf.scenes import accuracy
 from ancf.models.plate import edge_load, grid_points, strip_model, tip_mean
 from ancf.scenes import beam_static as bs
-from ancf.common.params import Param
+from ancf.common.params import InputError, Param
 from ancf.scenes.base import STATIC_RESULTS, STEEL_DENSITY, Scene, nullable
 
 
@@ -47,9 +47,26 @@ def params() -> tuple:
     )
 
 
+#: plate36 coordinates per node (r, r_x, r_y in 3D)
+PER_NODE = 9
+
+
+def check_cost(nx: int, ny: int) -> None:
+    """InputError, the estimate stated, for an nx x ny plate36 grid whose band solve would
+    not fit in memory (:func:`ancf.solvers.cost.affordable`)."""
+    from ancf.solvers.cost import affordable, grid_bytes
+    refused = affordable(grid_bytes(nx, ny, PER_NODE),
+                         f"n_elements = {nx}: with {ny} across, the plate model "
+                         f"({PER_NODE * (nx + 1) * (ny + 1)} coordinates)",
+                         "a coarser mesh (fewer elements along or across)")
+    if refused:
+        raise InputError(refused)
+
+
 def setup(p):
     """(mesh, q0, assembly, elimination, load vector) of the strip (density ``p["rho"]``
-    if given)."""
+    if given); refused before anything is built when it would not fit in memory."""
+    check_cost(p["n_elements"], p["n_width"])
     m, q0, asm, elim = strip_model(p["n_elements"], p["n_width"], p["L"], p["b"], p["h"],
                                    p["E"], p["nu"], p["ng"], p.get("rho", 0.0))
     return m, q0, asm, elim, edge_load(m, p["F"])

@@ -31,7 +31,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ancf.core.pattern import ReducedPattern
-from ancf.solvers.linear import factor
+from ancf.solvers.linear import Singular, factor
 from ancf.solvers.result import DynamicResult, finish
 
 IVP_METHODS = {"rk45": si.RK45, "dop853": si.DOP853, "radau": si.Radau, "bdf": si.BDF}
@@ -303,8 +303,8 @@ def integrate_ivp(model, x0, v0, t_out, method="dop853", rtol=1e-8, atol=1e-10,
                                  X, count)
         except _Abort as exc:
             ok, msg = False, str(exc)
-        except (np.linalg.LinAlgError, ValueError, RuntimeError) as exc:
-            ok, msg = False, f"stopped: {exc}"
+        except (np.linalg.LinAlgError, ValueError, RuntimeError, Singular) as exc:
+            ok, msg = False, f"stopped: {exc} (a singular or ill-conditioned solve)"
     cpu = time.process_time() - t0
     X = np.array(X)
     finite = np.all(np.isfinite(X), axis=1)
