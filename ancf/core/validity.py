@@ -76,16 +76,14 @@ def _inverted(det, element, n) -> str:
 def check_static(res, assembly, q0):
     """A converged static point with an inverted element becomes non-convergence
     (results kept, flagged by the message, as for an unstable equilibrium); one whose
-    area changes by more than AREA_FACTOR somewhere gets a warning.  A point Newton
-    reached that the stability check alone refused (``res.extra[UNSTABLE]`` true) is
-    checked alike: inverted, it is no longer merely unstable."""
-    if not (res.converged or res.extra.get(UNSTABLE)):
+    area changes by more than AREA_FACTOR somewhere gets a warning."""
+    if not res.converged:
         return res
     d = deformation_dets(assembly.groups, res.extra["q"], q0)
     lo, hi = d.min(axis=-1), d.max(axis=-1)
     n = lo.size
     if lo.min() <= 0:
-        res.converged, res.extra[UNSTABLE] = False, False
+        res.converged = False
         res.message = ("No convergence to a physical equilibrium: "
                        + _inverted(float(lo.min()), int(lo.argmin()), n))
         return res
