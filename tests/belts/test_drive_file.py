@@ -230,7 +230,8 @@ BAD = [  # (overrides, or an edit of the thesis file's data; the one line it giv
      "dufva2d, plate36"),
     (["beltt.E=1"], "beltt: unknown key; allowed: gravity, belt, pulleys, friction, contact, run"),
     (_without(("pulleys", 1, "inertia")), r"pulleys.1.inertia: missing \(law 'driven': inertia, "
-     r"damping, load, load_torque, t0, t1\); allowed: a number in \(0, 1000\] kg m\^2"),
+     r"damping, load, load_acts, omega_reg, load_torque, t0, t1\); allowed: a number in "
+     r"\(0, 1000\] kg m\^2"),
     (["pulleys.0.inertia=1"], r"pulleys.0.inertia: unknown key \(law 'prescribed': speed, "
      r"omega_final, t0, t1\); allowed: name, centre, radius, side, law, speed, omega_final"),
     (["pulleys.0.law=spinning"], "pulleys.0.law = 'spinning' is out of range; allowed: one of "
