@@ -6,5 +6,6 @@ the equations of motion with scipy's integrators (``dynamics``) and generalised-
 with its one compiled march (``alpha_march``), which serves every system whose
 residual, factorisation and solve are registered for its record type
 (``ancf.common.dispatch``): the beams' elimination form (``alpha_compiled``, its element
-assembly from ``ancf.elements``), the belt drives (``ancf.belts.system``).
+assembly from ``ancf.elements``), the belt drives (``ancf.belts.system``); the memory a model
+would need, estimated before it is built (``cost``).
 """
