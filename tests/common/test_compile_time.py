@@ -25,9 +25,12 @@ def test_nested_lock_spans_count_once():
 
 @pytest.mark.slow
 def test_compilation_is_timed_apart_from_the_solve(tmp_path):
-    """With an empty numba cache, the first run in a process compiles its kernels; its
-    ``cpu_time_s`` stays within 2x of the same run repeated in the warm process, and the
-    compilation is reported as ``compile_cpu_s`` (0 for the repeat)."""
+    """With an empty numba cache, the first run in a process compiles its kernels (seconds),
+    reported as ``compile_cpu_s`` (0 for the repeats); its ``cpu_time_s`` exceeds the warm
+    repeats' by less than 5 % of that compilation.  A first run also pays one-time costs
+    that are not compilation (lazy imports, first-touch memory): 0.02 s idle, 0.06 s on a
+    loaded 2-core CI machine, against about 11 s of compiling, so a ratio of cold to warm
+    ``cpu_time_s`` (0.05 s) would measure the machine's load, not the split."""
     code = ("import json\nfrom ancf.scenes import cantilever\n"
             "over = {'n_elements': '256', 'load_steps': '50'}\n"
             "runs = [cantilever.SCENE.execute(over)[0] for _ in range(3)]\n"
@@ -40,7 +43,7 @@ def test_compilation_is_timed_apart_from_the_solve(tmp_path):
     assert cold_compile > 0 and all(c == 0 for _, c in warm)
     warm_cpu = min(c for c, _ in warm)
     assert cold_compile > 10 * warm_cpu  # compiling dominates a cold first run ...
-    assert cold < 2 * warm_cpu           # ... and is not in its cpu_time_s
+    assert cold - warm_cpu < 0.05 * cold_compile  # ... and is not in its cpu_time_s
 
 
 def test_without_numba_nothing_is_listened_to():
