@@ -21,7 +21,9 @@ from __future__ import annotations
 
 import math
 
-from ancf.scenes import accuracy
+import numpy as np
+
+from ancf.scenes import accuracy, sense
 from ancf.models.plate import edge_load, grid_points, strip_model, tip_mean
 from ancf.scenes import beam_static as bs
 from ancf.common.params import InputError, Param
@@ -82,6 +84,25 @@ def modal(p):
     return bs.modal(p, m, q0, asm, elim, Qk, grid_points(m), "mid-surface grid")
 
 
+def edges(m, q) -> np.ndarray:
+    """Chord lengths (m) of every element's sides A-B (along x, elements 1..nx ny) and A-D
+    (along y, the next nx ny) between the nodes' positions in q."""
+    r = grid_points(m)(q)
+    a, b, d = (m.element_nodes[:, k] for k in (0, 1, 3))
+    return np.concatenate([np.linalg.norm(r[b] - r[a], axis=1),
+                           np.linalg.norm(r[d] - r[a], axis=1)])
+
+
+def warn(p, res) -> list:
+    """The static accuracy checks and, as the beams' area check, an element side stretched
+    or shortened beyond its factor (:func:`ancf.scenes.sense.stretch`)."""
+    out = accuracy.static(p, res)
+    if res.converged and "q" in res.extra:
+        m, q, q0 = res.extra["mesh"], res.extra["q"], res.extra["q0"]
+        out += sense.stretch(edges(m, q), edges(m, q0), "element side", "a plate")
+    return out
+
+
 PLATE_STRIP_KNOBS = ("n_elements", "n_width", "ng", "load_steps", "rtol", "max_iterations",
                      "stability_check")
 
@@ -122,5 +143,5 @@ ORDER = 90
 SCENE = Scene(
     "plate-strip",
     "The cantilever as a clamped thin-plate strip, out-of-plane tip load, large deflection.",
-    params(), run, warn=accuracy.static, modal=modal, modal_params=(STEEL_DENSITY,),
+    params(), run, warn=warn, modal=modal, modal_params=(STEEL_DENSITY,),
     results=RESULTS, study=study)

@@ -368,17 +368,18 @@ def near_singular(h: float, side: float) -> str | None:
             f"{BENDING_ROUNDOFF:g}); a thicker plate or larger elements")
 
 
-def stretch(chords, chords0) -> list[str]:
-    """Element chord lengths (m) deformed and in the reference: a chord stretched or
-    shortened by more than AREA_FACTOR (the 2D area check's factor)."""
+def stretch(chords, chords0, what: str = "element", body: str = "a beam") -> list[str]:
+    """Chord lengths (m) deformed and in the reference (of ``what``: beam elements, plate
+    element sides): a chord stretched or shortened by more than AREA_FACTOR (the 2D area
+    check's factor)."""
     ratio = np.asarray(chords, dtype=float) / np.asarray(chords0, dtype=float)
     factor = np.maximum(ratio, 1.0 / np.maximum(ratio, 1e-300))
     k = int(np.argmax(factor))
     if not factor[k] > AREA_FACTOR:
         return []
-    return [f"element {k + 1} of {ratio.size} changes its length by a factor {factor[k]:.3g}: "
+    return [f"{what} {k + 1} of {ratio.size} changes its length by a factor {factor[k]:.3g}: "
             "strains far beyond the small-strain range of the St Venant-Kirchhoff material, "
-            "the result is a property of the model, not of a beam"]
+            f"the result is a property of the model, not of {body}"]
 
 
 def circle(radius_mean: float, max_dev: float, radius_ref: float) -> list[str]:

@@ -330,3 +330,35 @@ def test_issue_33_examples_warn(cli, name, setting, quantity, expected):
     assert value > 1e5  # absurd: far outside, as the issue found it
     line = f"outside the reference's range of validity: {quantity} = {value:.4g} > "
     assert f"warning: {line}" in err and any(w.startswith(line) for w in data["warnings"])
+
+
+@pytest.mark.parametrize("L, g, h", [(2.0, 9.81, 0.0), (0.5, 100.0, 0.3)])
+def test_rigid_pendulum_swings_are_the_integrated_periods(L, g, h):
+    """The cost bound counts swings with the large-amplitude period of a horizontal
+    release (theta from 0 to -pi and back); the integrated history
+    reaches the other horizontal (theta = -pi, a minimum) once per period: the swings
+    counted over 20 periods' time match the minima within one."""
+    from analytic.dynamics_refs import rigid_pendulum
+    from ancf.scenes.analytic import rigid_pendulum as ref
+    p = {"L": L, "g": g, "h": h, "t_end": 1.0}
+    t_end = 20.0 / ref.swings(p)
+    t = np.linspace(0.0, t_end, 20001)
+    th, _, _ = rigid_pendulum(L, g, t, h)
+    d = np.diff(th)
+    minima = np.sum((d[:-1] < 0) & (d[1:] >= 0))
+    assert abs(ref.swings({**p, "t_end": t_end}) - minima) <= 1 and minima >= 19
+
+
+def test_rigid_pendulum_beyond_its_swing_budget_is_refused(cli):
+    """Above MAX_SWINGS periods the run is refused before it starts (exit 2, one line
+    naming t_end and the largest allowed); just under it is allowed (not run here)."""
+    from ancf.common.params import InputError
+    from ancf.scenes.analytic import rigid_pendulum as ref
+    p = {"L": 2.0, "g": 100.0, "h": 0.0, "t_end": 1e4, "output_dt": 1.0}
+    top = p["t_end"] * ref.MAX_SWINGS / ref.swings(p)
+    ref.check({**p, "t_end": 0.999 * top})
+    with pytest.raises(InputError):
+        ref.check({**p, "t_end": 1.001 * top})
+    rc, out, err = cli("analytic", "rigid-pendulum", "--set", "t_end=1e4", "--set", "g=100")
+    assert rc == 2 and err.count("\n") == 1 and err.startswith("error: t_end = 10000.0")
+    assert "swings" in err and "t_end <=" in err

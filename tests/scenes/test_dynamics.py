@@ -11,6 +11,7 @@ tolerance), and the published or issue-3 figure as a separate, looser assertion.
 """
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -159,6 +160,19 @@ def test_blow_up_is_a_flag_not_an_exception(integrator):
     assert not res.converged
     assert "blow-up" in res.message
     assert np.all(np.isfinite(res.q))
+
+
+def test_a_singular_mass_solve_is_a_failed_run_not_a_traceback(cli):
+    """rho = 1e-30 makes the mass matrix numerically singular against the stiffness (issue
+    33: a ``Singular`` traceback, exit 1, no JSON): the run stops with a non-finite
+    solution named, exit 3, and its JSON whole on stdout."""
+    out, _ = PEND.execute({"rho": 1e-30, "integrator": "dop853"})
+    assert out["converged"] is False
+    assert "singular or ill-conditioned" in out["message"]
+    rc, stdout, err = cli("run", "pendulum", "--set", "rho=1e-30", "--set", "integrator=dop853",
+                          "--json")
+    assert rc == 3 and "Traceback" not in err
+    assert json.loads(stdout)["message"] == out["message"]
 
 
 @pytest.mark.parametrize("overrides", [

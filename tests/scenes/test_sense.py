@@ -105,3 +105,20 @@ def test_span_samples():
     assert sense.span_samples({"tight": 30.6, "slack": None}) == []
     [line] = sense.span_samples({"tight": 524.0, "slack": float("nan")})  # n_elements = 4
     assert "middle third of the slack span" in line
+
+
+def test_plate_strip_sides_are_the_stretch_checks_chords():
+    """plate-strip's warn measures every element side (nx ny along x, then nx ny along
+    y): the reference gives the mesh's sides; the grid stretched 3x along x flags an x side."""
+    import numpy as np
+    from ancf.models.plate_mesh import PlateMesh
+    from ancf.scenes import plate_strip
+    m = PlateMesh(2.0, 0.1, 4, 2)
+    q0 = m.reference()
+    np.testing.assert_allclose(plate_strip.edges(m, q0), [0.5] * 8 + [0.05] * 8)
+    q = q0.reshape(m.n_nodes, 3, 3).copy()
+    q[:, 0, 0] *= 3.0
+    [line] = sense.stretch(plate_strip.edges(m, q.ravel()), plate_strip.edges(m, q0),
+                           "element side", "a plate")
+    assert line.startswith("element side 1 of 16 changes its length by a factor 3")
+    assert line.endswith("not of a plate")

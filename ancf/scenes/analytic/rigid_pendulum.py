@@ -5,7 +5,7 @@ import numpy as np
 
 from analytic.dynamics_refs import rigid_pendulum
 from ancf.common.inputs import check_sampling, following, intervals
-from ancf.common.params import Param
+from ancf.common.params import InputError, Param
 from ancf.scenes.analytic.shared import Bound, Validity
 from ancf.scenes.base import Scene, SceneResult, series
 
@@ -24,6 +24,33 @@ VALIDITY = Validity((
     Bound("the swing between samples max |d theta|", lambda p, r: float(np.max(np.abs(np.diff(
         r.results["theta"])), initial=0.0)), "a sampled history that resolves the swing: a "
         "smaller output_dt", hi=MAX_SAMPLE_SWING),))
+
+
+#: most swings one command integrates; above it the run is refused before it starts
+MAX_SWINGS = 10_000
+#: CPU seconds per swing at rtol 1e-12 (2-core EPYC: 3660 swings in 17.7 s), for the message
+SECONDS_PER_SWING = 5e-3
+#: 4 K(sin(pi/4)): the period of a release from the horizontal is this over omega_0
+K_HORIZONTAL = 7.4163
+
+
+def swings(p) -> float:
+    """Periods in t_end of the release from the horizontal (large-amplitude period
+    4 K(1/sqrt 2) / omega_0, omega_0^2 = (g L / 2) / (L^2/3 + h^2/12), rad/s)."""
+    omega0 = np.sqrt(p["g"] * p["L"] / 2 / (p["L"] ** 2 / 3 + p["h"] ** 2 / 12))
+    return float(p["t_end"] * omega0 / K_HORIZONTAL)
+
+
+def check(p) -> None:
+    """The sampling (:func:`ancf.common.inputs.check_sampling`) and the cost: at most
+    MAX_SWINGS periods of the swing in t_end."""
+    check_sampling(p)
+    n = swings(p)
+    if n > MAX_SWINGS:
+        raise InputError(f"t_end = {p['t_end']!r} is out of range: {n:.3g} swings of the pendulum "
+                         f"(g = {p['g']:g} m/s^2, L = {p['L']:g} m), about {n * SECONDS_PER_SWING:.3g} s of "
+                         f"integration; allowed: at most {MAX_SWINGS} swings, t_end <= "
+                         f"{p['t_end'] * MAX_SWINGS / n:.4g} s")
 
 
 def _rigid(p):
@@ -53,4 +80,4 @@ REFERENCE = Scene(
      Param("t_end", 1.0, float, "s", "simulated time", lo=0, lo_open=True, hi=1e4),
      Param("output_dt", following(0.01, "t_end"), float, "s",
            "sampling interval (default 0.01 s, at most t_end)", lo=0, lo_open=True, hi=10)),
-    _rigid, check_sampling, results=RESULTS, warn=VALIDITY)
+    _rigid, check, results=RESULTS, warn=VALIDITY)
