@@ -29,6 +29,7 @@ from ancf.core.constraints import Elimination
 from ancf.models.plate import grid_points, simply_supported, simply_supported_model
 from ancf.common.params import InputError, Param
 from ancf.scenes import sense
+from ancf.scenes.analytic.shared import SHEAR_SHARE, kirchhoff_shear_share
 from ancf.scenes.plate_strip import check_cost
 from ancf.scenes.base import INT, STEEL_DENSITY, Scene, SceneResult, field, nullable
 
@@ -97,9 +98,14 @@ def _failed() -> dict:
 
 
 def warn(p: dict, res: SceneResult) -> list:
-    """A centre deflection beyond the linear thin-plate range (:func:`ancf.scenes.sense.thin_plate`)."""
+    """A centre deflection beyond the linear thin-plate range (:func:`ancf.scenes.sense.thin_plate`)
+    and a plate too thick for Kirchhoff's theory (:func:`ancf.scenes.sense.thick_plate`,
+    the element's and its Navier reference's)."""
     w = res.results.get("center_deflection_m")
-    return [] if w is None else sense.thin_plate(w, p["h"])
+    if w is None:
+        return []
+    share = kirchhoff_shear_share(p["a"], p["a"], p["h"], p["nu"])
+    return sense.thin_plate(w, p["h"]) + sense.thick_plate(share, p["h"], p["a"], SHEAR_SHARE)
 
 
 def _model(p: dict):

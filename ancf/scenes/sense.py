@@ -351,6 +351,17 @@ def thin_plate(w: float, h: float) -> list[str]:
             "ignored by the linear solve, would carry the load"]
 
 
+def thick_plate(share: float, h: float, side: float, bound: float) -> list[str]:
+    """A plate (thickness h, side, m) whose Kirchhoff shear share (Mindlin's first-order
+    correction, :func:`ancf.scenes.analytic.shared.kirchhoff_shear_share`) exceeds
+    ``bound``: Kirchhoff's element and Navier's series both neglect the shear."""
+    if not share > bound:
+        return []
+    return [f"a thick plate (h/a = {h / side:.3g}): transverse shear would add about "
+            f"{share:.3g} of the deflection (bound {bound:g}), which the Kirchhoff "
+            "element and Navier's series both neglect: a model's answer, not the plate's"]
+
+
 def bending_roundoff(h: float, side: float) -> float:
     """Relative round-off (-) of a plate element's bending stiffness: eps 12 (side / h)^2,
     the double-precision eps against the ratio (h / side)^2 / 12 of the bending terms

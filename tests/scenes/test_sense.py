@@ -122,3 +122,18 @@ def test_plate_strip_sides_are_the_stretch_checks_chords():
                            "element side", "a plate")
     assert line.startswith("element side 1 of 16 changes its length by a factor 3")
     assert line.endswith("not of a plate")
+
+
+def test_thick_plate_at_its_bound():
+    """plate-square's thick-plate check: Mindlin's shear share of a square plate (side a,
+    thickness h) is 2 pi^2 (h/a)^2 / (6 kappa (1 - nu)); a step of 1e-3 in h either side
+    of the h it puts on SHEAR_SHARE gives no line / one line naming h/a."""
+    import math
+    from ancf.scenes.analytic.shared import PLATE_KAPPA, SHEAR_SHARE, kirchhoff_shear_share
+    a, nu = 2.0, 0.3
+    h = a * math.sqrt(SHEAR_SHARE * 6 * PLATE_KAPPA * (1 - nu) / (2 * math.pi ** 2))
+    for step, lines in ((0.999, 0), (1.001, 1)):
+        share = kirchhoff_shear_share(a, a, step * h, nu)
+        out = sense.thick_plate(share, step * h, a, SHEAR_SHARE)
+        assert len(out) == lines
+    assert out[0].startswith(f"a thick plate (h/a = {1.001 * h / a:.3g})")

@@ -1,11 +1,9 @@
 """``ancf analytic navier-plate``: the simply supported Kirchhoff plate under pressure (Navier)."""
 from __future__ import annotations
 
-import math
-
 from analytic import navier_plate
-from ancf.scenes.analytic.shared import (NAVIER, PLATE_KAPPA, SHEAR_SHARE, Bound, Validity,
-                                         magnitudes)
+from ancf.scenes.analytic.shared import (NAVIER, SHEAR_SHARE, Bound, Validity,
+                                         kirchhoff_shear_share, magnitudes)
 from ancf.scenes.base import INT, Scene, SceneResult, field, nullable
 
 #: its place in the list of references (ancf scenes, reports/schemas.md)
@@ -20,8 +18,7 @@ MAX_W_OVER_H = 0.3
 def _shear_share(p, r) -> float:
     """Mindlin's first-order correction of the deflection's fundamental term, (k h)^2 /
     (6 kappa (1 - nu)) with k^2 = pi^2 (1 / a^2 + 1 / b^2): shear adds about this share."""
-    k2 = math.pi ** 2 * (1.0 / p["a"] ** 2 + 1.0 / p["b"] ** 2)
-    return k2 * p["h"] ** 2 / (6.0 * PLATE_KAPPA * (1.0 - p["nu"]))
+    return kirchhoff_shear_share(p["a"], p["b"], p["h"], p["nu"])
 
 
 #: the range of validity (issue 33): small deflection against the thickness, a thin plate

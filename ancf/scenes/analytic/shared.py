@@ -73,6 +73,14 @@ SHEAR_SHARE = 0.05
 #: the shear correction factor of a plate section in Mindlin's correction (Reissner's 5/6;
 #: Mindlin's pi^2 / 12 differs by 1 %)
 PLATE_KAPPA = 5.0 / 6.0
+
+
+def kirchhoff_shear_share(a: float, b: float, h: float, nu: float) -> float:
+    """Mindlin's first-order correction of a simply supported plate's fundamental
+    deflection term (sides a, b, thickness h in m): shear adds about (k h)^2 / (6 kappa
+    (1 - nu)) of it, k^2 = pi^2 (1 / a^2 + 1 / b^2), kappa = PLATE_KAPPA (-)."""
+    k2 = math.pi ** 2 * (1.0 / a ** 2 + 1.0 / b ** 2)
+    return k2 * h ** 2 / (6.0 * PLATE_KAPPA * (1.0 - nu))
 #: a beam's span (or a mode's half-wave) against its section height: below 2 the St-Venant
 #: zones of about one height at each support, load or node fill it, where plane sections
 #: (Euler-Bernoulli, Timoshenko, Reissner) do not hold
