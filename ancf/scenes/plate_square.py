@@ -29,7 +29,6 @@ from ancf.core.constraints import Elimination
 from ancf.models.plate import grid_points, simply_supported, simply_supported_model
 from ancf.common.params import InputError, Param
 from ancf.scenes import sense
-from ancf.scenes.analytic.shared import SHEAR_SHARE, kirchhoff_shear_share
 from ancf.scenes.plate_strip import check_cost
 from ancf.scenes.base import INT, STEEL_DENSITY, Scene, SceneResult, field, nullable
 
@@ -104,8 +103,8 @@ def warn(p: dict, res: SceneResult) -> list:
     w = res.results.get("center_deflection_m")
     if w is None:
         return []
-    share = kirchhoff_shear_share(p["a"], p["a"], p["h"], p["nu"])
-    return sense.thin_plate(w, p["h"]) + sense.thick_plate(share, p["h"], p["a"], SHEAR_SHARE)
+    share = sense.kirchhoff_shear_share(p["a"], p["a"], p["h"], p["nu"])
+    return sense.thin_plate(w, p["h"]) + sense.thick_plate(share, p["h"], p["a"], sense.SHEAR_SHARE)
 
 
 def _model(p: dict):

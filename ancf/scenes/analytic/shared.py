@@ -9,6 +9,8 @@ from typing import Callable
 
 from ancf.common.params import InputError, Param
 from ancf.scenes.base import SceneResult
+# the plate and shear thresholds the run scenes share (plate-square's thick-plate check)
+from ancf.scenes.sense import PLATE_KAPPA, SHEAR_SHARE, kirchhoff_shear_share  # noqa: F401
 
 #: a rectangular beam section and its material
 SECTION = (
@@ -65,22 +67,6 @@ def magnitudes(check, *fields):
 #: strain of the linear (small-strain) theories: their strain u' differs from the Green
 #: strain u' + u'^2 / 2 of the ANCF elements by half the strain, 0.5 % at 1 %
 SMALL_STRAIN = 0.01
-#: the first-order share of shear deformation and rotary inertia that Euler-Bernoulli and
-#: Kirchhoff neglect (their frequencies or deflection off Timoshenko's or Mindlin's by it):
-#: 5 %, the accuracy the suite reads a thin or slender reference to (Navier at h / a = 0.1:
-#: Mindlin 5.2 % softer, Reddy)
-SHEAR_SHARE = 0.05
-#: the shear correction factor of a plate section in Mindlin's correction (Reissner's 5/6;
-#: Mindlin's pi^2 / 12 differs by 1 %)
-PLATE_KAPPA = 5.0 / 6.0
-
-
-def kirchhoff_shear_share(a: float, b: float, h: float, nu: float) -> float:
-    """Mindlin's first-order correction of a simply supported plate's fundamental
-    deflection term (sides a, b, thickness h in m): shear adds about (k h)^2 / (6 kappa
-    (1 - nu)) of it, k^2 = pi^2 (1 / a^2 + 1 / b^2), kappa = PLATE_KAPPA (-)."""
-    k2 = math.pi ** 2 * (1.0 / a ** 2 + 1.0 / b ** 2)
-    return k2 * h ** 2 / (6.0 * PLATE_KAPPA * (1.0 - nu))
 #: a beam's span (or a mode's half-wave) against its section height: below 2 the St-Venant
 #: zones of about one height at each support, load or node fill it, where plane sections
 #: (Euler-Bernoulli, Timoshenko, Reissner) do not hold
