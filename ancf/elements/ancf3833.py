@@ -1,4 +1,4 @@
-"""The ANCF 3833 shell element: shape functions, consistent mass, gravity force.
+"""The ANCF 3833 shell element: shape functions, mass, gravity, internal force.
 
 A flat rectangular higher-order shell of length L (m, along x), width W (m, along
 y) and thickness H (m, along z, symmetric about the mid-surface): 8 nodes (4
@@ -39,6 +39,10 @@ stacked from z = -H/2 upward), as in Chrono's layered shell; a single layer is t
 homogeneous plate.  s_i s_j has degree 4 in xi, eta and 4 in z, so 3 x 3 x 3 Gauss
 points integrate M exactly (Chrono uses 5 x 5 x 5, for distorted reference shapes
 too); s_i has degree 2 in each, so 2 x 2 x 2 points suffice for Q_g.
+
+Internal force (``internal_force``, ``internal_force_jacobians``): see their section
+below; the reference configuration is the flat plate with r_z = e_z, r_zz = 0
+(``reference_coordinates``).
 """
 from __future__ import annotations
 
@@ -129,3 +133,121 @@ def gravity(L: float, W: float, H: float, rho: float, g, layers=None,
     xi, eta, z, w = _points(L, W, H, rho, layers, n_plane, n_thick)
     q = w @ scalar_shape(xi, eta, z)                      # int rho s_i dV, (24,)
     return np.kron(q, np.asarray(g, dtype=float).reshape(3))
+
+
+# ----------------------------------------------------------------------------------------
+# Internal force: Green-Lagrange strain, isotropic St Venant-Kirchhoff material (the full
+# 3D law over the whole volume, no Poisson split: Chrono's ChMaterialShellANCF, one layer
+# with fibre angle 0), Kelvin-Voigt damping.
+#
+#   F = dr/dX = I + (e - e0) G,  G_aJ = ds_a/dX_J  (X = (x, y, z) in the flat reference)
+#   eps = [E11, E22, E33, 2E23, 2E13, 2E12],  E = (F^T F - I)/2   (Voigt, dimensionless)
+#   sigma = D (eps + alpha deps/dt),  deps/dt = B(F) de/dt       (2nd Piola-Kirchhoff, Pa)
+#   Q = int_V B(F)^T sigma dV                                     (72,), N (N m, N m^2)
+#   K = dQ/de = int_V B^T D (B + alpha B(F')) + (G S G^T) (x) I_3 dV,  R = dQ/de' = alpha int_V B^T D B dV
+#
+# Exact Gauss rules: with r_zz free the integrands have degree <= 8 in xi, eta and z, so
+# 5 x 5 x 5 points are exact (Chrono's element uses 3 x 3 x 2; its stored reference data
+# are exact).  Q is the elastic + viscous force of M e'' + Q(e, e') = Q_ext; Chrono's
+# ComputeInternalForces returns -Q.
+# ----------------------------------------------------------------------------------------
+
+NGAUSS = 5   # exact Gauss points per direction (xi, eta, z)
+_VOIGT = [(0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1)]
+_TENSOR = np.array([[0, 5, 4], [5, 1, 3], [4, 3, 2]])   # Voigt index of S_IJ
+
+
+def reference_coordinates(L: float, W: float) -> np.ndarray:
+    """e0 (72,): the flat L x W plate in z = 0 with corner A at the origin, r_z = (0, 0, 1)
+    and r_zz = 0 at every node (Chrono's test setup)."""
+    e0 = np.zeros((NNODE, 3, 3))
+    e0[:, 0, 0], e0[:, 0, 1] = L * (NODE_XI + 1) / 2, W * (NODE_ETA + 1) / 2
+    e0[:, 1, 2] = 1.0
+    return e0.ravel()
+
+
+def elasticity(E: float, nu: float) -> np.ndarray:
+    """The isotropic 3D law D (6, 6), Pa, Voigt order [11, 22, 33, 23, 13, 12] (shear
+    rows act on the engineering strains 2E_IJ): lambda + 2G on the diagonal of the normal
+    block, lambda off it, G on the shear diagonal."""
+    G = E / (2.0 * (1.0 + nu))
+    lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    D = np.diag([2 * G, 2 * G, 2 * G, G, G, G])
+    D[:3, :3] += lam
+    return D
+
+
+def serendipity_gradient(xi, eta) -> np.ndarray:
+    """(dN_i/dxi, dN_i/deta) (..., 8, 2) of ``serendipity``; dimensionless."""
+    xi, eta = np.broadcast_arrays(*(np.asarray(v, dtype=float)[..., None] for v in (xi, eta)))
+    a, b = NODE_XI * xi, NODE_ETA * eta
+    corner = (NODE_XI * (1 + b) * (2 * a + b) / 4, NODE_ETA * (1 + a) * (a + 2 * b) / 4)
+    mid_x = (-xi * (1 + b), NODE_ETA * (1 - xi**2) / 2)
+    mid_y = (NODE_XI * (1 - eta**2) / 2, -eta * (1 + a))
+    return np.stack([np.where(NODE_XI == 0, mx, np.where(NODE_ETA == 0, my, c))
+                     for c, mx, my in zip(corner, mid_x, mid_y)], axis=-1)
+
+
+def shape_gradient(xi, eta, z, L: float, W: float) -> np.ndarray:
+    """G_aJ = ds_a/dX_J (..., 24, 3) in the flat reference, X = (x, y, z) = (L (xi + 1)/2,
+    W (eta + 1)/2, z): per node (dN/dx, dN/dy, 0), z (dN/dx, dN/dy, N/z), and
+    z^2/2 (dN/dx, dN/dy, 2N/z); 1/m on r, dimensionless on r_z, m on r_zz."""
+    xi, eta, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (xi, eta, z)))
+    n, dn = serendipity(xi, eta), serendipity_gradient(xi, eta)
+    dx, dy, z = dn[..., 0] * 2 / L, dn[..., 1] * 2 / W, z[..., None]
+    g = np.stack([np.stack([dx, dy, 0 * n], -1), np.stack([z * dx, z * dy, n], -1),
+                  np.stack([z**2 / 2 * dx, z**2 / 2 * dy, z * n], -1)], axis=-2)
+    return g.reshape(g.shape[:-3] + (NSHAPE, 3))
+
+
+def _strain_matrix(F: np.ndarray, G: np.ndarray) -> np.ndarray:
+    """B (nq, 6, 72) with d(eps)/dt = B(F) de/dt: row (I, J) = (F_kI G_aJ + F_kJ G_aI)
+    (halved for I = J) at column 3a + k."""
+    P = np.einsum("qkI,qaJ->qIJak", F, G)
+    rows = [P[:, i, j] + P[:, j, i] if i != j else P[:, i, i] for i, j in _VOIGT]
+    return np.stack(rows, axis=1).reshape(F.shape[0], 6, NDOF)
+
+
+def _kinematics(e, G, L, W):
+    """F (nq, 3, 3) and the Voigt Green-Lagrange strain eps (nq, 6) at the points, from
+    the displacement gradient so that eps = 0 exactly at e = e0."""
+    U = (np.asarray(e, dtype=float) - reference_coordinates(L, W)).reshape(NSHAPE, 3)
+    Hu = np.einsum("ak,qaJ->qkJ", U, G)
+    Et = 0.5 * (Hu + np.swapaxes(Hu, 1, 2) + np.einsum("qkI,qkJ->qIJ", Hu, Hu))
+    eps = np.stack([Et[:, i, j] * (1.0 if i == j else 2.0) for i, j in _VOIGT], axis=1)
+    return np.eye(3) + Hu, eps
+
+
+def _evaluate(e, edot, L, W, H, E, nu, alpha, ngauss, tangent):
+    """Q (72,), and if ``tangent`` also K and R (72, 72), by ngauss^3 Gauss points."""
+    edot = np.asarray(edot, dtype=float)
+    xi, eta, z, w = _points(L, W, H, 1.0, None, ngauss, ngauss)   # w: volume, m^3
+    D = elasticity(E, nu)
+    G = shape_gradient(xi, eta, z, L, W)
+    F, eps = _kinematics(e, G, L, W)
+    B = _strain_matrix(F, G)
+    sig = (eps + alpha * B @ edot) @ D.T
+    Q = np.einsum("q,qvi,qv->i", w, B, sig)
+    if not tangent:
+        return Q
+    DB = np.einsum("ij,qjn->qin", D, B)
+    Km = np.einsum("q,qvm,qvn->mn", w, B, DB)
+    Bdot = _strain_matrix(np.einsum("ak,qaJ->qkJ", edot.reshape(NSHAPE, 3), G), G)
+    Kd = np.einsum("q,qvm,qvn->mn", w, DB, Bdot)
+    Kg = np.einsum("q,qaI,qIJ,qbJ->ab", w, G, sig[:, _TENSOR], G)
+    return Q, Km + alpha * Kd + np.kron(Kg, np.eye(3)), alpha * Km
+
+
+def internal_force(e, edot, L, W, H, E, nu, alpha=0.0, *, ngauss=NGAUSS) -> np.ndarray:
+    """The generalised internal force Q(e, e') (72,), N (N m, N m^2 on r_z, r_zz), of the
+    section above: e (72,) in m, edot (72,) in m/s, L, W, H in m, E in Pa, nu
+    dimensionless, alpha in s (Kelvin-Voigt: sigma = D (eps + alpha eps')).  One
+    homogeneous layer; exact for ngauss >= 5.  Chrono's ``ComputeInternalForces`` stores -Q."""
+    return _evaluate(e, edot, L, W, H, E, nu, alpha, ngauss, False)
+
+
+def internal_force_jacobians(e, edot, L, W, H, E, nu, alpha=0.0, *, ngauss=NGAUSS):
+    """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (72, 72), of ``internal_force``
+    (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)`` and ``(H, 0, 1, 0)``."""
+    _, K, R = _evaluate(e, edot, L, W, H, E, nu, alpha, ngauss, True)
+    return K, R
