@@ -38,6 +38,11 @@ Chrono's layered shell; a single layer is the homogeneous plate.  s_i s_j has
 degree 6 in xi, eta and 2 in z, so 4 in-plane and 2 through-thickness Gauss points
 integrate M exactly (Chrono uses 7 x 7 x 3, for distorted reference shapes too);
 s_i has degree 3 and 1, so 2 x 2 x 1 points suffice for Q_g.
+
+Internal force (``internal_force``, ``internal_force_jacobians``) and the layer
+material (``elasticity``, ``orthotropic``, ``rotate_about_z``): see their section below;
+the reference is the flat plate on [0, L] x [0, W] with identity gradients
+(``reference_coordinates``).
 """
 from __future__ import annotations
 
@@ -121,3 +126,161 @@ def gravity(L: float, W: float, H: float, rho: float, g, layers=None,
     xi, eta, z, w = _points(L, W, H, rho, layers, n_plane, n_thick)
     q = w @ scalar_shape(xi, eta, z, L, W)               # int rho s_i dV, (16,)
     return np.kron(q, np.asarray(g, dtype=float).reshape(3))
+
+
+# ----------------------------------------------------------------------------------------
+# Internal force: Green-Lagrange strain, a 3D (orthotropic) St Venant-Kirchhoff law per
+# layer, Kelvin-Voigt damping; no Poisson split and no shear correction.
+#
+#   F = dr/dX = I + (e - e0) G,  G_aJ = ds_a/dX_J, X = (x, y, z) = (L(1+xi)/2, W(1+eta)/2, z)
+#   eps = [E11, E22, E33, 2E23, 2E13, 2E12],  E = (F^T F - I)/2   (Voigt, dimensionless)
+#   sigma = D_k (eps + alpha deps/dt),  deps/dt = B(F) de/dt       (2nd Piola-Kirchhoff, Pa)
+#   Q = int_V B(F)^T sigma dV                                      (48,), N (N m on gradients)
+#   K = dQ/de = int B^T D (B + alpha B(F')) + (G S G^T) (x) I_3 dV,  R = dQ/de' = alpha int B^T D B dV
+#
+# D_k is the layer's full 6 x 6 stiffness (Chrono's ChMaterialShellANCF, one matrix over
+# the whole volume).  Exact Gauss rules: the integrands have degree <= 12 in xi and eta
+# and 4 in z, so 7 x 7 in-plane and 3 through-thickness points (per layer); Chrono's
+# element uses 4 x 4 x 2, its stored reference data are exact.  Q is the elastic + viscous
+# force of M e'' + Q(e, e') = Q_ext; Chrono's ComputeInternalForces returns -Q.
+# ----------------------------------------------------------------------------------------
+
+N_PLANE, N_THICK = 7, 3  # exact Gauss points in-plane (per direction) and per layer
+_VOIGT = [(0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1)]
+_TENSOR = np.array([[0, 5, 4], [5, 1, 3], [4, 3, 2]])   # Voigt index of S_IJ
+
+
+def orthotropic(E, nu, G) -> np.ndarray:
+    """The 3D orthotropic stiffness D (6, 6), Pa, Voigt order [11, 22, 33, 23, 13, 12]
+    (engineering shears), as the inverse of the compliance: E = (E_x, E_y, E_z) in Pa,
+    nu = (nu_xy, nu_xz, nu_yz) with nu_ji = nu_ij E_j / E_i, G = (G_xy, G_xz, G_yz) in Pa
+    (the arguments of Chrono's orthotropic ``ChMaterialShellANCF``)."""
+    (Ex, Ey, Ez), (nxy, nxz, nyz), (Gxy, Gxz, Gyz) = E, nu, G
+    C = np.diag([1 / Ex, 1 / Ey, 1 / Ez])
+    C[0, 1] = C[1, 0] = -nxy / Ex
+    C[0, 2] = C[2, 0] = -nxz / Ex
+    C[1, 2] = C[2, 1] = -nyz / Ey
+    D = np.zeros((6, 6))
+    D[:3, :3] = np.linalg.inv(C)
+    D[3:, 3:] = np.diag([Gyz, Gxz, Gxy])
+    return D
+
+
+def elasticity(E: float, nu: float) -> np.ndarray:
+    """The isotropic D (6, 6), Pa, order [11, 22, 33, 23, 13, 12]: lambda + 2 mu on the
+    diagonal normal block, lambda off it, mu = E/(2(1+nu)) on the shears
+    (Chrono's isotropic ``ChMaterialShellANCF(rho, E, nu)``)."""
+    mu = E / (2.0 * (1.0 + nu))
+    lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    D = np.diag([2 * mu] * 3 + [mu] * 3)
+    D[:3, :3] += lam
+    return D
+
+
+def rotate_about_z(D: np.ndarray, theta: float) -> np.ndarray:
+    """D (6, 6) of a layer whose material axes 1, 2 are turned by theta (rad) about z
+    from the element's x, y (1 along (cos theta, sin theta, 0)): D_elem = T D T^T with
+    T the stress transformation sigma_elem = T sigma_mat (order [11, 22, 33, 23, 13, 12]).
+    Chrono's 3443 (``RotateReorderStiffnessMatrix``) equals rotate_about_z(D, -theta) on the
+    normal/in-plane-shear block but rotate_about_z(D, +theta) on the (23, 13) block: the
+    same for isotropic layers or G_xz = G_yz, or theta = 0 (its stored data); unchecked else."""
+    c, s = np.cos(theta), np.sin(theta)
+    Rm = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])  # columns: material axes
+    T = np.array([[Rm[i, k] * Rm[j, l] + (Rm[i, l] * Rm[j, k] if k != l else 0.0)
+                   for k, l in _VOIGT] for i, j in _VOIGT])
+    return T @ D @ T.T
+
+
+def reference_coordinates(L: float, W: float) -> np.ndarray:
+    """e0 (48,): the flat plate with corners A (0,0,0), B (L,0,0), C (L,W,0), D (0,W,0)
+    and r_x, r_y, r_z = the unit axes at every node."""
+    corners = [(0, 0), (L, 0), (L, W), (0, W)]
+    return np.concatenate([[x, y, 0.0, 1, 0, 0, 0, 1, 0, 0, 0, 1] for x, y in corners]).astype(float)
+
+
+def shape_gradient(xi, eta, z, L: float, W: float) -> np.ndarray:
+    """G_aJ = ds_a/dX_J (..., 16, 3) at xi, eta in [-1, 1], z (m), X = (x, y, z) with
+    dx = L dxi / 2, dy = W deta / 2 (the derivatives of ``scalar_shape``); 1/m for s_r,
+    dimensionless for s_rx, s_ry, s_rz except ds_rz/dx, ds_rz/dy (m/m = 1) too."""
+    xi, eta, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (xi, eta, z)))
+    xi, eta, z = xi[..., None], eta[..., None], z[..., None]
+    a, b = NODE_XI * xi, NODE_ETA * eta
+    q, o = 2 + a + b - xi**2 - eta**2, np.zeros_like(a)
+    d_xi = [(NODE_XI * (1 + b) * q + (1 + a) * (1 + b) * (NODE_XI - 2 * xi)) / 8,
+            -L * (1 + a) * (1 - 3 * a) * (1 + b) / 16,
+            -W * NODE_XI * NODE_ETA * (1 + b) ** 2 * (1 - b) / 16,
+            z * NODE_XI * (1 + b) / 4]
+    d_eta = [(NODE_ETA * (1 + a) * q + (1 + a) * (1 + b) * (NODE_ETA - 2 * eta)) / 8,
+             -L * NODE_XI * NODE_ETA * (1 + a) ** 2 * (1 - a) / 16,
+             -W * (1 + b) * (1 - 3 * b) * (1 + a) / 16,
+             z * NODE_ETA * (1 + a) / 4]
+    d_z = [o, o, o, (1 + a) * (1 + b) / 4]
+    cols = [np.stack(d, axis=-1).reshape(a.shape[:-1] + (NSHAPE,)) * f
+            for d, f in ((d_xi, 2 / L), (d_eta, 2 / W), (d_z, 1.0))]
+    return np.stack(cols, axis=-1)
+
+
+def _strain_matrix(F: np.ndarray, G: np.ndarray) -> np.ndarray:
+    """B (nq, 6, 48) with d(eps)/dt = B(F) de/dt: row (I, J) = F_kI G_aJ + F_kJ G_aI
+    (halved for I = J) at column 3a + k."""
+    P = np.einsum("qkI,qaJ->qIJak", F, G)
+    rows = [P[:, i, j] + P[:, j, i] if i != j else P[:, i, i] for i, j in _VOIGT]
+    return np.stack(rows, axis=1).reshape(F.shape[0], 6, NDOF)
+
+
+def _layer_rule(L, W, H, layers, n_plane, n_thick):
+    """[(D_k, xi, eta, z, w)] per layer, w = dV (m^3) of a tensor Gauss rule; ``layers`` =
+    [(t_k, D_k), ...] from z = -H/2 upward (their thicknesses must add up to H)."""
+    _layers(H, 1.0, [(t, 1.0) for t, _ in layers])     # checks that the t_k add up to H
+    out, z0 = [], -H / 2
+    for t, D in layers:
+        xi, eta, z, w = _points(L, W, t, 1.0, None, n_plane, n_thick)
+        out.append((np.asarray(D, dtype=float), xi, eta, z + z0 + t / 2, w))
+        z0 += t
+    return out
+
+
+def _layer(e, edot, L, W, D, alpha, pts, tangent):
+    """Q (48,) of one layer and, if ``tangent``, K and R (48, 48) (section equations)."""
+    xi, eta, z, w = pts
+    G = shape_gradient(xi, eta, z, L, W)
+    U = (np.asarray(e, dtype=float) - reference_coordinates(L, W)).reshape(NSHAPE, 3)
+    Hu = np.einsum("ak,qaJ->qkJ", U, G)                  # displacement gradient
+    Et = 0.5 * (Hu + np.swapaxes(Hu, 1, 2) + np.einsum("qkI,qkJ->qIJ", Hu, Hu))
+    eps = np.stack([Et[:, i, j] * (1.0 if i == j else 2.0) for i, j in _VOIGT], axis=1)
+    B = _strain_matrix(np.eye(3) + Hu, G)
+    edot = np.asarray(edot, dtype=float)
+    sig = (eps + alpha * B @ edot) @ D.T
+    Q = np.einsum("q,qvi,qv->i", w, B, sig)
+    if not tangent:
+        return Q
+    DB = np.einsum("ij,qjn->qin", D, B)
+    Km = np.einsum("q,qvm,qvn->mn", w, B, DB)
+    Bdot = _strain_matrix(np.einsum("ak,qaJ->qkJ", edot.reshape(NSHAPE, 3), G), G)
+    Kd = np.einsum("q,qvm,qvn->mn", w, DB, Bdot)
+    Kg = np.einsum("q,qaI,qIJ,qbJ->ab", w, G, sig[:, _TENSOR], G)
+    return Q, Km + alpha * Kd + np.kron(Kg, np.eye(3)), alpha * Km
+
+
+def internal_force(e, edot, L, W, H, D, alpha=0.0, *, layers=None,
+                   n_plane=N_PLANE, n_thick=N_THICK) -> np.ndarray:
+    """The generalised internal force Q(e, e') (48,), N (N m on gradient entries): e (48,)
+    in m, edot (48,) in m/s, L, W, H in m, D (6, 6) in Pa (``elasticity``, ``orthotropic``,
+    ``rotate_about_z``), alpha in s (sigma = D (eps + alpha eps')); ``layers`` =
+    [(t_k, D_k), ...] replaces (H, D).  Exact for n_plane >= 7, n_thick >= 3;
+    Chrono's ``ComputeInternalForces`` stores -Q."""
+    layers = [(H, D)] if layers is None else layers
+    return sum(_layer(e, edot, L, W, Dk, alpha, pts, False)
+               for Dk, *pts in _layer_rule(L, W, H, layers, n_plane, n_thick))
+
+
+def internal_force_jacobians(e, edot, L, W, H, D, alpha=0.0, *, layers=None,
+                             n_plane=N_PLANE, n_thick=N_THICK):
+    """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (48, 48), of ``internal_force``
+    (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)`` and ``(H, 0, 1, 0)``."""
+    layers = [(H, D)] if layers is None else layers
+    K, R = np.zeros((NDOF, NDOF)), np.zeros((NDOF, NDOF))
+    for Dk, *pts in _layer_rule(L, W, H, layers, n_plane, n_thick):
+        _, k, r = _layer(e, edot, L, W, Dk, alpha, pts, True)
+        K, R = K + k, R + r
+    return K, R
