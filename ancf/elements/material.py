@@ -1,8 +1,9 @@
 """Materials of the planar continuum beams and the energy terms they are split into.
 
 A material is a 3x3 matrix acting on Voigt Green strains ``[eps_xx, eps_yy, 2 eps_xy]``
-(Pa), or for the spatial beams a 6x6 one on ``[eps_xx, eps_yy, eps_zz, 2 eps_yz,
-2 eps_xz, 2 eps_xy]``.  An element's strain energy is a sum of :class:`EnergyTerm` s, each a part of
+(Pa), or for the spatial beams and Chrono's ANCF elements a 6x6 one on ``[eps_xx,
+eps_yy, eps_zz, 2 eps_yz, 2 eps_xz, 2 eps_xy]`` (``isotropic_3d``, ``orthotropic_3d``,
+``rotate_about_z``).  An element's strain energy is a sum of :class:`EnergyTerm` s, each a part of
 the material integrated with its own rule: this is how selective and reduced
 integration are expressed (``normal=2x2,shear=1x1``; ``e`` = exact across the height).
 """
@@ -13,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ancf.core.quadrature import EXACT
+from ancf.elements.continuum3d import VOIGT
 
 
 @dataclass(frozen=True)
@@ -97,3 +99,45 @@ def scheme_terms(schemes: dict, integration: str, C_normal, C_shear):
         raise ValueError(f"integration spec {integration!r} must give each of 'normal' and "
                          f"'shear' once, or 'all' alone (got {', '.join(groups)})")
     return _merge_same_rule(terms)
+
+
+def isotropic_3d(E: float, nu: float) -> np.ndarray:
+    """The isotropic 3D law D (6, 6), Pa, Voigt order [11, 22, 33, 23, 13, 12] (shear
+    rows on the engineering strains 2E_IJ): lambda + 2 mu on the diagonal of the normal
+    block, lambda off it, mu on the shear diagonal; lambda = E nu/((1+nu)(1-2nu)),
+    mu = E/(2(1+nu)) (Chrono's ``ChMaterialShellANCF(rho, E, nu)``, ``ChMaterialHexaANCF``)."""
+    mu = E / (2.0 * (1.0 + nu))
+    lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    D = np.diag([2.0 * mu] * 3 + [mu] * 3)
+    D[:3, :3] += lam
+    return D
+
+
+def orthotropic_3d(E, nu, G) -> np.ndarray:
+    """The 3D orthotropic stiffness D (6, 6), Pa, Voigt order [11, 22, 33, 23, 13, 12]
+    (engineering shears), as the inverse of the compliance: E = (E_x, E_y, E_z) in Pa,
+    nu = (nu_xy, nu_xz, nu_yz) with nu_ji = nu_ij E_j / E_i, G = (G_xy, G_xz, G_yz) in Pa
+    (the arguments of Chrono's orthotropic ``ChMaterialShellANCF``)."""
+    (Ex, Ey, Ez), (nxy, nxz, nyz), (Gxy, Gxz, Gyz) = E, nu, G
+    C = np.diag([1 / Ex, 1 / Ey, 1 / Ez])
+    C[0, 1] = C[1, 0] = -nxy / Ex
+    C[0, 2] = C[2, 0] = -nxz / Ex
+    C[1, 2] = C[2, 1] = -nyz / Ey
+    D = np.zeros((6, 6))
+    D[:3, :3] = np.linalg.inv(C)
+    D[3:, 3:] = np.diag([Gyz, Gxz, Gxy])
+    return D
+
+
+def rotate_about_z(D: np.ndarray, theta: float) -> np.ndarray:
+    """D (6, 6) of a layer whose material axes 1, 2 are turned by theta (rad) about z
+    from the element's x, y (1 along (cos theta, sin theta, 0)): D_elem = T D T^T with
+    T the stress transformation sigma_elem = T sigma_mat (order [11, 22, 33, 23, 13, 12]).
+    Chrono's 3443 (``RotateReorderStiffnessMatrix``) equals rotate_about_z(D, -theta) on the
+    normal/in-plane-shear block but rotate_about_z(D, +theta) on the (23, 13) block: the
+    same for isotropic layers or G_xz = G_yz, or theta = 0 (its stored data); unchecked else."""
+    c, s = np.cos(theta), np.sin(theta)
+    Rm = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])  # columns: material axes
+    T = np.array([[Rm[i, k] * Rm[j, l] + (Rm[i, l] * Rm[j, k] if k != l else 0.0)
+                   for k, l in VOIGT] for i, j in VOIGT])
+    return T @ D @ T.T
