@@ -26,7 +26,8 @@ multiplied by y = H eta, z = W zeta.  Equations:
     M   = int_V rho S^T S dV        (24, 24), kg (kg m, kg m^2 on gradient entries)
     Q_g = int_V rho S^T g dV        (24,),   N  (N m on gradient entries)
 
-with dV = L H W dxi deta dzeta, evaluated by tensor Gauss-Legendre quadrature.
+with dV = L H W dxi deta dzeta (``continuum3d``, eqs. (1)-(3)), evaluated by tensor
+Gauss-Legendre quadrature.
 s_i s_j has degree 6 in xi and 2 in eta, zeta, so ``ngauss >= 4`` points per
 direction integrate M exactly; S^T g has degree 3 in xi and 1 in eta, zeta,
 so 2 points per direction integrate Q_g exactly.
@@ -39,15 +40,23 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import continuum3d as c3
+from .material import isotropic_3d
+
 NSHAPE = 8   # scalar shape functions
 NDOF = 24    # 3 * NSHAPE coordinates
+
+
+def _coords(*v):
+    """xi, eta, zeta as float arrays broadcast to one shape."""
+    return np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in v))
 
 
 def scalar_shape(xi, eta, zeta, L: float, H: float, W: float) -> np.ndarray:
     """The 8 scalar shape functions s_1..s_8 (module docstring) at xi = x/L in [0, 1],
     eta = y/H, zeta = z/W in [-1/2, 1/2]; arrays broadcast, result (..., 8).
     s_1, s_5, s_3, s_4, s_7, s_8 are dimensionless; s_2, s_6 in m (times a gradient)."""
-    xi, eta, zeta = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (xi, eta, zeta)))
+    xi, eta, zeta = _coords(xi, eta, zeta)
     y, z = H * eta, W * zeta
     return np.stack([
         1.0 - 3.0 * xi**2 + 2.0 * xi**3,
@@ -61,6 +70,18 @@ def scalar_shape(xi, eta, zeta, L: float, H: float, W: float) -> np.ndarray:
     ], axis=-1)
 
 
+def natural_gradient(xi, eta, zeta, L: float, H: float, W: float) -> np.ndarray:
+    """ds_a/d(xi, eta, zeta) (..., 8, 3), in the units of s_a times m (the derivatives of
+    ``scalar_shape`` in its reference coordinates)."""
+    xi, eta, zeta = _coords(xi, eta, zeta)
+    y, z, o = H * eta, W * zeta, np.zeros_like(xi)
+    h = 6.0 * (xi**2 - xi)
+    dxi = [h, L * (1 - 4 * xi + 3 * xi**2), -y, -z, -h, L * (3 * xi**2 - 2 * xi), y, z]
+    deta = [o, o, H * (1.0 - xi), o, o, o, H * xi, o]
+    dzeta = [o, o, o, W * (1.0 - xi), o, o, o, W * xi]
+    return np.stack([np.stack(d, axis=-1) for d in (dxi, deta, dzeta)], axis=-1)
+
+
 def shape(xi: float, eta: float, zeta: float, L: float, H: float, W: float) -> np.ndarray:
     """The shape-function matrix S (3, 24) at one point: S = [s_1 I_3, ..., s_8 I_3],
     so that r(xi, eta, zeta) = S e with e ordered per node [r, r_x, r_y, r_z]."""
@@ -68,30 +89,37 @@ def shape(xi: float, eta: float, zeta: float, L: float, H: float, W: float) -> n
     return np.kron(s.reshape(1, NSHAPE), np.eye(3))
 
 
-def _rule(ngauss: int):
-    """Gauss-Legendre points and weights of ``ngauss`` points on [0, 1] (xi) and on
-    [-1/2, 1/2] (eta, zeta); the weights sum to 1."""
-    t, w = np.polynomial.legendre.leggauss(ngauss)
-    return 0.5 * (t + 1.0), 0.5 * t, 0.5 * w
+def reference_coordinates(L: float) -> np.ndarray:
+    """e0 (24,): the straight beam from (0, 0, 0) to (L, 0, 0) with r_x, r_y, r_z = I."""
+    node = lambda x: [x, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+    return np.array(node(0.0) + node(L))
 
 
-def _points(ngauss: int, nsection: int | None = None):
-    """Tensor rule: coordinates xi, eta, zeta and weights w (nq,) summing to 1 (the
-    reference volume); ``ngauss`` points along xi, ``nsection`` (default ``ngauss``)
-    per section direction, nsection = 1 being the beam axis eta = zeta = 0."""
-    p01, _, w = _rule(ngauss)
-    _, pc, wc = _rule(ngauss if nsection is None else nsection)
-    XI, ET, ZE = np.meshgrid(p01, pc, pc, indexing="ij")
-    WW = w[:, None, None] * wc[None, :, None] * wc[None, None, :]
-    return XI.ravel(), ET.ravel(), ZE.ravel(), WW.ravel()
+def basis(L: float, H: float, W: float) -> c3.Basis:
+    """The element's basis for ``continuum3d`` (natural points (xi, eta, zeta))."""
+    return c3.Basis(lambda p: scalar_shape(*p.T, L, H, W),
+                    lambda p: natural_gradient(*p.T, L, H, W), reference_coordinates(L))
+
+
+def shape_gradient(xi, eta, zeta, L: float, H: float, W: float) -> np.ndarray:
+    """G_aJ = ds_a/dX_J (..., 8, 3), 1/m for s_1, s_5, dimensionless otherwise; X = (x, y, z)
+    = (L xi, H eta, W zeta) in the straight reference (``continuum3d`` eq. (2))."""
+    return c3.physical_gradient(natural_gradient(xi, eta, zeta, L, H, W),
+                                reference_coordinates(L))[0]
+
+
+def rule(naxis: int, nsection: int | None = None):
+    """Tensor Gauss rule on the reference box [0, 1] x [-1/2, 1/2]^2: ``naxis`` points
+    along xi, ``nsection`` (default ``naxis``) per section direction, nsection = 1 being
+    the beam axis eta = zeta = 0; points (nq, 3) and weights summing to 1."""
+    ns = naxis if nsection is None else nsection
+    return c3.gauss_box((naxis, ns, ns), (0.0, -0.5, -0.5), (1.0, 0.5, 0.5))
 
 
 def scalar_mass(L: float, H: float, W: float, rho: float, ngauss: int = 4) -> np.ndarray:
     """The compact mass m_ij = int_V rho s_i s_j dV (8, 8), kg; M = m (x) I_3.
     Exact for ``ngauss >= 4`` (degree 6 along the axis)."""
-    xi, eta, zeta, w = _points(ngauss)
-    s = scalar_shape(xi, eta, zeta, L, H, W)
-    return rho * L * H * W * np.einsum("q,qi,qj->ij", w, s, s)
+    return c3.scalar_mass(basis(L, H, W), [(rho, *rule(ngauss))])
 
 
 def mass_matrix(L: float, H: float, W: float, rho: float, ngauss: int = 4) -> np.ndarray:
@@ -104,20 +132,13 @@ def gravity(L: float, H: float, W: float, rho: float, g, ngauss: int = 2) -> np.
     """The generalised gravity force Q_g = int_V rho S^T g dV (24,), N (N m on the
     gradient entries), for the acceleration g (3,) in m/s^2, e.g. (0, 0, -9.80665).
     Exact for ngauss >= 2 (degree 3 along the axis)."""
-    xi, eta, zeta, w = _points(ngauss)
-    s = scalar_shape(xi, eta, zeta, L, H, W)
-    sbar = rho * L * H * W * (w @ s)                     # int rho s_i dV, (8,)
-    return np.kron(sbar, np.asarray(g, dtype=float).reshape(3))
+    return c3.gravity(basis(L, H, W), [(rho, *rule(ngauss))], g)
 
 
 # ----------------------------------------------------------------------------------------
-# Internal force: Green-Lagrange strain, St Venant-Kirchhoff material with Timoshenko shear
-# correction and the Poisson effect on the beam axis, Kelvin-Voigt damping.
-#
-#   F = dr/dX = I + (e - e0) G,  G_aJ = ds_a/dX_J  (X = (x, y, z) in the straight reference)
-#   eps = [E11, E22, E33, 2E23, 2E13, 2E12],  E = (F^T F - I)/2   (Voigt, dimensionless)
-#   sigma = D (eps + alpha deps/dt),  deps/dt = B(F) de/dt       (2nd Piola-Kirchhoff, Pa)
-#   Q = int_V B(F)^T sigma dV = int_V F S G^T dV                  (24,), N (N m on gradients)
+# Internal force: ``continuum3d`` (Green-Lagrange strain, Kelvin-Voigt stress
+# sigma = D (eps + alpha eps'), Q = int B^T sigma dV, exact K and R) with a St Venant-
+# Kirchhoff material with Timoshenko shear correction and the Poisson effect on the axis:
 #
 # D = D0 + Dv (Nachbagauer, Gruber & Gerstmayr 2012, "enhanced continuum mechanics"):
 # D0 = diag(E, E, E, G, k1 G, k2 G) is integrated over the volume; Dv, the Poisson part
@@ -125,19 +146,10 @@ def gravity(L: float, H: float, W: float, rho: float, g, ngauss: int = 2) -> np.
 # only on the beam axis eta = zeta = 0 times the area H W (against the Poisson locking
 # of the linear section field).  Exact Gauss rules: the integrands have degree 8 in xi
 # (5 points) and 4 in eta, zeta (3 points); Chrono's element uses 3 points along xi,
-# its stored reference data are exact.  Q is the elastic + viscous force of
-# M e'' + Q(e, e') = Q_ext; Chrono's ComputeInternalForces returns -Q.
+# its stored reference data are exact.  Chrono's ComputeInternalForces returns -Q.
 # ----------------------------------------------------------------------------------------
 
 NAXIS, NSECTION = 5, 3   # exact Gauss points along xi and per section direction
-_VOIGT = [(0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1)]
-_TENSOR = np.array([[0, 5, 4], [5, 1, 3], [4, 3, 2]])   # Voigt index of S_IJ
-
-
-def reference_coordinates(L: float) -> np.ndarray:
-    """e0 (24,): the straight beam from (0, 0, 0) to (L, 0, 0) with r_x, r_y, r_z = I."""
-    node = lambda x: [x, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
-    return np.array(node(0.0) + node(L))
 
 
 def elasticity(E: float, nu: float, k1: float, k2: float):
@@ -145,73 +157,20 @@ def elasticity(E: float, nu: float, k1: float, k2: float):
     diag(E, E, E, G, k1 G, k2 G) with G = E/(2(1+nu)) (k1 scales the xz shear 2E13, k2
     the xy shear 2E12), Dv the Poisson part, so D0 + Dv is the isotropic 3D law."""
     G = E / (2.0 * (1.0 + nu))
-    lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
     D0 = np.diag([E, E, E, G, k1 * G, k2 * G])
-    Dv = np.zeros((6, 6))
-    Dv[:3, :3] = lam + (2.0 * G - E) * np.eye(3)
+    Dv = isotropic_3d(E, nu) - np.diag([E, E, E, G, G, G])
+    Dv[3:, 3:] = 0.0
     return D0, Dv
 
 
-def shape_gradient(xi, eta, zeta, L: float, H: float, W: float) -> np.ndarray:
-    """G_aJ = ds_a/dX_J (..., 8, 3), 1/m for s_1, s_5, dimensionless otherwise; X = (x, y, z)
-    = (L xi, H eta, W zeta) in the straight reference (the derivatives of ``scalar_shape``)."""
-    xi, eta, zeta = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (xi, eta, zeta)))
-    y, z, o = H * eta, W * zeta, np.zeros_like(xi)
-    h = 6.0 * (xi**2 - xi) / L
-    dx = [h, 1 - 4 * xi + 3 * xi**2, -y / L, -z / L, -h, 3 * xi**2 - 2 * xi, y / L, z / L]
-    dy = [o, o, 1.0 - xi, o, o, o, xi, o]
-    dz = [o, o, o, 1.0 - xi, o, o, o, xi]
-    return np.stack([np.stack(d, axis=-1) for d in (dx, dy, dz)], axis=-1)
-
-
-def _strain_matrix(F: np.ndarray, G: np.ndarray) -> np.ndarray:
-    """B (nq, 6, 24) with d(eps)/dt = B(F) de/dt: row (I, J) = (F_kI G_aJ + F_kJ G_aI)
-    (halved for I = J) at column 3a + k."""
-    P = np.einsum("qkI,qaJ->qIJak", F, G)
-    rows = [P[:, i, j] + P[:, j, i] if i != j else P[:, i, i] for i, j in _VOIGT]
-    return np.stack(rows, axis=1).reshape(F.shape[0], 6, NDOF)
-
-
-def _kinematics(e, L, H, W, xi, eta, zeta):
-    """At the points: G (nq, 8, 3), F (nq, 3, 3) and the Voigt Green-Lagrange strain eps
-    (nq, 6), from the displacement gradient so that eps = 0 exactly at e = e0."""
-    G = shape_gradient(xi, eta, zeta, L, H, W)
-    U = (np.asarray(e, dtype=float) - reference_coordinates(L)).reshape(NSHAPE, 3)
-    Hu = np.einsum("ak,qaJ->qkJ", U, G)
-    Et = 0.5 * (Hu + np.swapaxes(Hu, 1, 2) + np.einsum("qkI,qkJ->qIJ", Hu, Hu))
-    eps = np.stack([Et[:, i, j] * (1.0 if i == j else 2.0) for i, j in _VOIGT], axis=1)
-    return G, np.eye(3) + Hu, eps
-
-
-def _part(e, edot, L, H, W, D, alpha, rule, tangent):
-    """Q (24,), and if ``tangent`` also K = dQ/de and R = dQ/de' (24, 24), of one
-    constitutive part D integrated by ``rule`` = (naxis, nsection):
-    Q = int B^T sigma dV, R = alpha int B^T D B dV,
-    K = int B^T D (B + alpha B(Fdot)) + (G S G^T) (x) I_3 dV  (S = sigma as a 3x3 tensor)."""
-    edot = np.asarray(edot, dtype=float)
-    xi, eta, zeta, w = _points(*rule)
-    w = w * L * H * W
-    G, F, eps = _kinematics(e, L, H, W, xi, eta, zeta)
-    B = _strain_matrix(F, G)
-    sig = (eps + alpha * B @ edot) @ D.T
-    Q = np.einsum("q,qvi,qv->i", w, B, sig)
-    if not tangent:
-        return Q
-    DB = np.einsum("ij,qjn->qin", D, B)
-    Km = np.einsum("q,qvm,qvn->mn", w, B, DB)
-    Bdot = _strain_matrix(np.einsum("ak,qaJ->qkJ", edot.reshape(NSHAPE, 3), G), G)
-    Kd = np.einsum("q,qvm,qvn->mn", w, DB, Bdot)
-    Kg = np.einsum("q,qaI,qIJ,qbJ->ab", w, G, sig[:, _TENSOR], G)
-    return Q, Km + alpha * Kd + np.kron(Kg, np.eye(3)), alpha * Km
-
-
-def _parts(E, nu, k1, k2, split_poisson, naxis):
-    """[(D, rule)]: D0 over the volume and Dv on the axis, or (split_poisson=False)
-    the whole D0 + Dv over the volume."""
+def poisson_rules(E, nu, k1, k2, split_poisson=True, naxis=NAXIS):
+    """The beams' constitutive parts [(D, points, weights)] for ``continuum3d``: D0 over
+    the volume (naxis x NSECTION^2 points) and Dv on the axis (naxis x 1 x 1), or
+    (split_poisson=False) the whole D0 + Dv over the volume.  Also used by ``ancf3333``."""
     D0, Dv = elasticity(E, nu, k1, k2)
     if not split_poisson:
-        return [(D0 + Dv, (naxis, NSECTION))]
-    return [(D0, (naxis, NSECTION)), (Dv, (naxis, 1))]
+        return [(D0 + Dv, *rule(naxis, NSECTION))]
+    return [(D0, *rule(naxis, NSECTION)), (Dv, *rule(naxis, 1))]
 
 
 def internal_force(e, edot, L, H, W, E, nu, k1, k2, alpha=0.0, *,
@@ -220,16 +179,13 @@ def internal_force(e, edot, L, H, W, E, nu, k1, k2, alpha=0.0, *,
     section above: e (24,) in m, edot (24,) in m/s, L, H, W in m, E in Pa, nu, k1, k2
     dimensionless, alpha in s (Kelvin-Voigt: sigma = D (eps + alpha eps')).  Exact for
     naxis >= 5; Chrono's ``ComputeInternalForces`` stores -Q."""
-    return sum(_part(e, edot, L, H, W, D, alpha, rule, False)
-               for D, rule in _parts(E, nu, k1, k2, split_poisson, naxis))
+    rules = poisson_rules(E, nu, k1, k2, split_poisson, naxis)
+    return c3.internal_force(e, edot, basis(L, H, W), rules, alpha)
 
 
 def internal_force_jacobians(e, edot, L, H, W, E, nu, k1, k2, alpha=0.0, *,
                              split_poisson=True, naxis=NAXIS):
     """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (24, 24), of ``internal_force``
     (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)`` and ``(H, 0, 1, 0)``."""
-    K, R = np.zeros((NDOF, NDOF)), np.zeros((NDOF, NDOF))
-    for D, rule in _parts(E, nu, k1, k2, split_poisson, naxis):
-        _, k, r = _part(e, edot, L, H, W, D, alpha, rule, True)
-        K, R = K + k, R + r
-    return K, R
+    rules = poisson_rules(E, nu, k1, k2, split_poisson, naxis)
+    return c3.internal_force_jacobians(e, edot, basis(L, H, W), rules, alpha)

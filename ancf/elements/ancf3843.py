@@ -38,7 +38,8 @@ in each natural coordinate.  Equations:
     M   = int_V rho S^T S dV        (96, 96), kg (kg m, kg m^2 on gradient entries)   (5)
     Q_g = int_V rho S^T g dV        (96,),   N  (N m on gradient entries)             (6)
 
-with dV = (Lx Ly Lz / 8) dxi deta dzeta, by tensor Gauss-Legendre quadrature.
+with dV = (Lx Ly Lz / 8) dxi deta dzeta (``continuum3d`` eqs. (1)-(3)), by tensor
+Gauss-Legendre quadrature.
 s_i s_j has degree <= 6 in each natural coordinate, so ``ngauss >= 4`` points per
 direction integrate (5) exactly; s_i has degree <= 3, so 2 points integrate (6)
 exactly.  M = m (x) I_3 with the compact m (32, 32) over the scalar functions.
@@ -46,6 +47,9 @@ exactly.  M = m (x) I_3 with the compact m (32, 32) over the scalar functions.
 from __future__ import annotations
 
 import numpy as np
+
+from . import continuum3d as c3
+from .material import isotropic_3d as elasticity  # noqa: F401 (Chrono's ChMaterialHexaANCF)
 
 NNODE = 8
 NSHAPE = 32  # scalar shape functions, 4 per node
@@ -82,21 +86,55 @@ def shape(xi: float, eta: float, zeta: float, Lx: float, Ly: float, Lz: float) -
     return np.kron(s.reshape(1, NSHAPE), np.eye(3))
 
 
-def _points(ngauss: int):
-    """Tensor Gauss-Legendre rule on [-1, 1]^3: coordinates xi, eta, zeta (nq,) and
-    weights w (nq,) summing to 8 (the natural volume)."""
-    t, w = np.polynomial.legendre.leggauss(ngauss)
-    XI, ET, ZE = np.meshgrid(t, t, t, indexing="ij")
-    WW = w[:, None, None] * w[None, :, None] * w[None, None, :]
-    return XI.ravel(), ET.ravel(), ZE.ravel(), WW.ravel()
+def natural_gradient(xi, eta, zeta, Lx: float, Ly: float, Lz: float) -> np.ndarray:
+    """ds_a/d(xi, eta, zeta) (..., 32, 3): the derivatives of eqs. (1)-(4) in the
+    natural coordinates, dimensionless for s_r, m for s_x, s_y, s_z."""
+    xi, eta, zeta = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (xi, eta, zeta)))
+    half = np.array([0.5 * Lx, 0.5 * Ly, 0.5 * Lz])
+    rows = []
+    for signs in NODE_SIGNS:
+        U = [s * v for s, v in zip(signs, (xi, eta, zeta))]             # X, Y, Z
+        p = [1.0 + u for u in U]
+        P = p[0] * p[1] * p[2] / 8.0
+        dP = [p[1] * p[2] / 8.0, p[0] * p[2] / 8.0, p[0] * p[1] / 8.0]  # dP/dU_J
+        g = 1.0 + 0.5 * sum(u * (1.0 - u) for u in U)
+        rows.append([(dP[J] * g + P * (0.5 - U[J])) * signs[J] for J in range(3)])
+        for k in range(3):
+            h = 0.5 * (U[k] ** 2 - 1.0)
+            rows.append([signs[k] * half[k] * (dP[J] * h + (P * U[k] if J == k else 0.0))
+                         * signs[J] for J in range(3)])
+    return np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
+
+
+def reference_coordinates(Lx: float, Ly: float, Lz: float) -> np.ndarray:
+    """e0 (96,): node positions at the box corners (0..Lx, 0..Ly, 0..Lz) m, gradients = I."""
+    corners = (1.0 + NODE_SIGNS) / 2.0 * np.array([Lx, Ly, Lz])
+    return np.concatenate([np.concatenate([c, np.eye(3).ravel()]) for c in corners])
+
+
+def basis(Lx: float, Ly: float, Lz: float) -> c3.Basis:
+    """The element's basis for ``continuum3d`` (natural points (xi, eta, zeta))."""
+    return c3.Basis(lambda p: scalar_shape(*p.T, Lx, Ly, Lz),
+                    lambda p: natural_gradient(*p.T, Lx, Ly, Lz),
+                    reference_coordinates(Lx, Ly, Lz))
+
+
+def shape_gradient(xi, eta, zeta, Lx: float, Ly: float, Lz: float) -> np.ndarray:
+    """G_aJ = ds_a/dX_J (..., 32, 3): the derivatives of eqs. (1)-(4) with respect to
+    X = (x, y, z), 1/m for s_r, dimensionless for s_x, s_y, s_z (``continuum3d`` eq. (2))."""
+    return c3.physical_gradient(natural_gradient(xi, eta, zeta, Lx, Ly, Lz),
+                                reference_coordinates(Lx, Ly, Lz))[0]
+
+
+def rule(ngauss: int):
+    """Tensor Gauss-Legendre rule on [-1, 1]^3: points (nq, 3) and weights summing to 8."""
+    return c3.gauss_box((ngauss,) * 3, (-1.0,) * 3, (1.0,) * 3)
 
 
 def scalar_mass(Lx: float, Ly: float, Lz: float, rho: float, ngauss: int = 4) -> np.ndarray:
     """The compact mass m_ij = int_V rho s_i s_j dV (32, 32), kg (times m per gradient
     index); M = m (x) I_3, eq. (5).  Exact for ``ngauss >= 4``."""
-    xi, eta, zeta, w = _points(ngauss)
-    s = scalar_shape(xi, eta, zeta, Lx, Ly, Lz)
-    return rho * (Lx * Ly * Lz / 8.0) * np.einsum("q,qi,qj->ij", w, s, s)
+    return c3.scalar_mass(basis(Lx, Ly, Lz), [(rho, *rule(ngauss))])
 
 
 def mass_matrix(Lx: float, Ly: float, Lz: float, rho: float, ngauss: int = 4) -> np.ndarray:
@@ -110,123 +148,34 @@ def gravity(Lx: float, Ly: float, Lz: float, rho: float, g, ngauss: int = 2) -> 
     """The generalised gravity force Q_g = int_V rho S^T g dV (96,), eq. (6), N (N m
     on the gradient entries), for the acceleration g (3,) in m/s^2, e.g.
     (0, 0, -9.80665).  Exact for ngauss >= 2."""
-    xi, eta, zeta, w = _points(ngauss)
-    s = scalar_shape(xi, eta, zeta, Lx, Ly, Lz)
-    sbar = rho * (Lx * Ly * Lz / 8.0) * (w @ s)          # int rho s_i dV, (32,)
-    return np.kron(sbar, np.asarray(g, dtype=float).reshape(3))
+    return c3.gravity(basis(Lx, Ly, Lz), [(rho, *rule(ngauss))], g)
 
 
 # ----------------------------------------------------------------------------------------
-# Internal force: Green-Lagrange strain, isotropic St Venant-Kirchhoff material over the
-# whole volume (no Poisson split), Kelvin-Voigt damping.
-#
-#   F = dr/dX = I + (e - e0) G,  G_aJ = ds_a/dX_J  (X = (x, y, z) in the undeformed box)  (7)
-#   eps = [E11, E22, E33, 2E23, 2E13, 2E12],  E = (F^T F - I)/2   (Voigt, dimensionless)  (8)
-#   sigma = D (eps + alpha deps/dt),  deps/dt = B(F) de/dt   (2nd Piola-Kirchhoff, Pa)    (9)
-#   Q = int_V B(F)^T sigma dV                                  (96,), N (N m on gradients) (10)
-#   K = dQ/de = int_V B^T D (B + alpha B(F')) + (G S G^T) (x) I_3 dV,  R = dQ/de'
-#     = alpha int_V B^T D B dV                                  (96, 96), N/m and N s/m   (11)
-#
-# with S the 3x3 tensor form of sigma and B(F) (6, 96) the strain-rate matrix, row IJ =
-# F_kI G_aJ + F_kJ G_aI (halved for I = J) at column 3a + k.  D is the isotropic law of
-# Chrono's ChMaterialHexaANCF (lambda + 2 mu on the normal diagonal, lambda off it, mu on
-# the three shears).  Degrees: s_a is cubic per direction, so F is cubic, eps of degree 6
-# and the integrands of (10), (11) of degree 12 in each natural coordinate: 7 Gauss
-# points per direction integrate them exactly.  Chrono's element uses 4 (its header NP);
-# its stored reference data are exact.  Chrono's ComputeInternalForces returns -Q.
+# Internal force: ``continuum3d`` eqs. (4)-(10) (Green-Lagrange strain, Kelvin-Voigt
+# stress sigma = D (eps + alpha eps'), Q = int B^T sigma dV, exact K and R) with the
+# isotropic law of Chrono's ChMaterialHexaANCF over the whole volume (no Poisson split).
+# Degrees: s_a is cubic per direction, so F is cubic, eps of degree 6 and the integrands
+# of Q, K, R of degree 12 in each natural coordinate: 7 Gauss points per direction
+# integrate them exactly.  Chrono's element uses 4 (its header NP); its stored reference
+# data are exact.  Chrono's ComputeInternalForces returns -Q.
 # ----------------------------------------------------------------------------------------
 
-NEXACT = 7   # exact Gauss points per direction for (10), (11)
-_VOIGT = [(0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1)]
-_TENSOR = np.array([[0, 5, 4], [5, 1, 3], [4, 3, 2]])   # Voigt index of S_IJ
-
-
-def reference_coordinates(Lx: float, Ly: float, Lz: float) -> np.ndarray:
-    """e0 (96,): node positions at the box corners (0..Lx, 0..Ly, 0..Lz) m, gradients = I."""
-    corners = (1.0 + NODE_SIGNS) / 2.0 * np.array([Lx, Ly, Lz])
-    return np.concatenate([np.concatenate([c, np.eye(3).ravel()]) for c in corners])
-
-
-def elasticity(E: float, nu: float) -> np.ndarray:
-    """The isotropic D (6, 6), Pa, Voigt order [11, 22, 33, 23, 13, 12]: lambda + 2 mu,
-    lambda, mu with lambda = E nu/((1+nu)(1-2nu)), mu = E/(2(1+nu))."""
-    mu = E / (2.0 * (1.0 + nu))
-    lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
-    D = np.diag([2.0 * mu] * 3 + [mu] * 3)
-    D[:3, :3] += lam
-    return D
-
-
-def shape_gradient(xi, eta, zeta, Lx: float, Ly: float, Lz: float) -> np.ndarray:
-    """G_aJ = ds_a/dX_J (..., 32, 3): the derivatives of eqs. (1)-(4) with respect to
-    X = (x, y, z), 1/m for s_r, dimensionless for s_x, s_y, s_z (d/dX_J = (2/L_J) d/dxi_J)."""
-    xi, eta, zeta = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (xi, eta, zeta)))
-    half = np.array([0.5 * Lx, 0.5 * Ly, 0.5 * Lz])
-    rows = []
-    for signs in NODE_SIGNS:
-        U = [s * v for s, v in zip(signs, (xi, eta, zeta))]             # X, Y, Z
-        p = [1.0 + u for u in U]
-        P = p[0] * p[1] * p[2] / 8.0
-        dP = [p[1] * p[2] / 8.0, p[0] * p[2] / 8.0, p[0] * p[1] / 8.0]  # dP/dU_J
-        g = 1.0 + 0.5 * sum(u * (1.0 - u) for u in U)
-        dU = signs / half                                               # dU_J/dX_J
-        rows.append([(dP[J] * g + P * (0.5 - U[J])) * dU[J] for J in range(3)])
-        for k in range(3):
-            h = 0.5 * (U[k] ** 2 - 1.0)
-            rows.append([signs[k] * half[k] * (dP[J] * h + (P * U[k] if J == k else 0.0))
-                         * dU[J] for J in range(3)])
-    return np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
-
-
-def _strain_matrix(F: np.ndarray, G: np.ndarray) -> np.ndarray:
-    """B (nq, 6, 96), eq. (9): row IJ = F_kI G_aJ + F_kJ G_aI (halved for I = J) at 3a + k."""
-    P = np.einsum("qkI,qaJ->qIJak", F, G)
-    rows = [P[:, i, j] + P[:, j, i] if i != j else P[:, i, i] for i, j in _VOIGT]
-    return np.stack(rows, axis=1).reshape(F.shape[0], 6, NDOF)
-
-
-def _kinematics(e, dims, xi, eta, zeta):
-    """G (nq, 32, 3), F (nq, 3, 3) and eps (nq, 6), eqs. (7)-(8), from the displacement
-    gradient so that eps = 0 exactly at e = e0."""
-    G = shape_gradient(xi, eta, zeta, *dims)
-    U = (np.asarray(e, dtype=float) - reference_coordinates(*dims)).reshape(NSHAPE, 3)
-    Hu = np.einsum("ak,qaJ->qkJ", U, G)
-    Et = 0.5 * (Hu + np.swapaxes(Hu, 1, 2) + np.einsum("qkI,qkJ->qIJ", Hu, Hu))
-    eps = np.stack([Et[:, i, j] * (1.0 if i == j else 2.0) for i, j in _VOIGT], axis=1)
-    return G, np.eye(3) + Hu, eps
-
-
-def _evaluate(e, edot, Lx, Ly, Lz, E, nu, alpha, ngauss, tangent):
-    """Q, eq. (10), and if ``tangent`` also (K, R), eq. (11), by ngauss^3 Gauss points."""
-    edot = np.asarray(edot, dtype=float)
-    xi, eta, zeta, w = _points(ngauss)
-    w = w * (Lx * Ly * Lz / 8.0)
-    D = elasticity(E, nu)
-    G, F, eps = _kinematics(e, (Lx, Ly, Lz), xi, eta, zeta)
-    B = _strain_matrix(F, G)
-    sig = (eps + alpha * B @ edot) @ D
-    Q = np.einsum("q,qvi,qv->i", w, B, sig)
-    if not tangent:
-        return Q
-    DB = np.einsum("ij,qjn->qin", D, B)
-    Km = np.einsum("q,qvm,qvn->mn", w, B, DB)
-    Bdot = _strain_matrix(np.einsum("ak,qaJ->qkJ", edot.reshape(NSHAPE, 3), G), G)
-    Kd = np.einsum("q,qvm,qvn->mn", w, DB, Bdot)
-    Kg = np.einsum("q,qaI,qIJ,qbJ->ab", w, G, sig[:, _TENSOR], G)
-    return Q, Km + alpha * Kd + np.kron(Kg, np.eye(3)), alpha * Km
+NEXACT = 7   # exact Gauss points per direction for Q, K, R
 
 
 def internal_force(e, edot, Lx, Ly, Lz, E, nu, alpha=0.0, *, ngauss=NEXACT) -> np.ndarray:
-    """The generalised internal force Q(e, e') (96,), eq. (10), N (N m on gradient
+    """The generalised internal force Q(e, e') (96,), N (N m on gradient
     entries): e (96,) in m, edot (96,) in m/s, Lx, Ly, Lz in m, E in Pa, nu dimensionless,
     alpha in s (Kelvin-Voigt).  Exact for ngauss >= 7; Chrono's ``ComputeInternalForces``
     stores -Q."""
-    return _evaluate(e, edot, Lx, Ly, Lz, E, nu, alpha, ngauss, False)
+    rules = [(elasticity(E, nu), *rule(ngauss))]
+    return c3.internal_force(e, edot, basis(Lx, Ly, Lz), rules, alpha)
 
 
 def internal_force_jacobians(e, edot, Lx, Ly, Lz, E, nu, alpha=0.0, *, ngauss=NEXACT):
-    """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (96, 96), eq. (11), of
-    ``internal_force`` (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)``
+    """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (96, 96), of ``internal_force``
+    (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)``
     and ``(H, 0, 1, 0)``."""
-    _, K, R = _evaluate(e, edot, Lx, Ly, Lz, E, nu, alpha, ngauss, True)
-    return K, R
+    rules = [(elasticity(E, nu), *rule(ngauss))]
+    return c3.internal_force_jacobians(e, edot, basis(Lx, Ly, Lz), rules, alpha)
