@@ -46,7 +46,8 @@ from __future__ import annotations
 import numpy as np
 
 from . import continuum3d as c3
-from .ancf3243 import NAXIS, NSECTION, elasticity, poisson_rules, rule  # noqa: F401 (shared beam parts)
+# the beams' shared material and rule (NSECTION, elasticity re-exported for callers)
+from .ancf3243 import NAXIS, NSECTION, elasticity, poisson_rules, rule  # noqa: F401
 
 NSHAPE = 9   # scalar shape functions
 NDOF = 27    # 3 * NSHAPE coordinates

@@ -41,9 +41,9 @@ integrate M exactly (Chrono uses 7 x 7 x 3, for distorted reference shapes too);
 s_i has degree 3 and 1, so 2 x 2 x 1 points suffice for Q_g.
 
 Internal force (``internal_force``, ``internal_force_jacobians``) and the layer
-material (``elasticity``, ``orthotropic``, ``rotate_about_z``, from ``material``): see their section below;
-the reference is the flat plate on [0, L] x [0, W] with identity gradients
-(``reference_coordinates``).
+material (``elasticity``, ``orthotropic``, ``rotate_about_z``, from ``material``): see
+their section below; the reference is the flat plate on [0, L] x [0, W] with identity
+gradients (``reference_coordinates``).
 """
 from __future__ import annotations
 
