@@ -5,8 +5,9 @@ thin plate) plus a material (``material``): the papers' planar beams (``linear2d
 ``omar_shabana``), Dufva's 2D and 3D belt elements (``dufva2d``, ``belt3d``), the 3D
 beam (``linear3d``) and the thin plate (``plate36``); Chrono's ANCF family
 (``ancf3243``, ``ancf3333`` beams, ``ancf3443``, ``ancf3833`` shells, ``ancf3843`` brick:
-mass, gravity, internal force and its Jacobians, each checked against Chrono's stored
-matrices, ``tests/data/chrono``; not yet in the registry); ``registry`` the one table of
+their shape functions on ``continuum3d``'s Green-Lagrange continuum, mass, gravity,
+internal force and its Jacobians checked against Chrono's stored matrices,
+``tests/data/chrono``; not yet in the registry); ``registry`` the one table of
 them (with the field at points), ``catalogue`` its views by use, ``contract`` what every
 element provides.  ``_*generated.py`` are written by the generators in ``analytic/``
 and imported only here.
