@@ -24,7 +24,8 @@ FAILING = {"simply-supported": {"max_iterations": 1, "load_steps": 1},
            "princeton-beam": {"max_iterations": 1, "load_steps": 1},
            "beam3d-bending": {"max_iterations": 1, "load_steps": 1},
            "belt3d": {"max_steps": 5, "t_end": 0.1},
-           "rigid-pendulum": {"g": 1e300}}  # DOP853 fails (issue 22: null where arrays were due)
+           # DOP853 fails (issue 22: null where arrays were due); t_end within the swing budget
+           "rigid-pendulum": {"g": 1e300, "t_end": 1e-150}}
 #: shortened "default" runs where the default is a long study (the keys are the same)
 SHORT = {"belt3d": {"t_end": 0.02, "output_dt": 0.01}}
 

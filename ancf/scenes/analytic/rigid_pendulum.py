@@ -37,7 +37,7 @@ K_HORIZONTAL = 7.4163
 def swings(p) -> float:
     """Periods in t_end of the release from the horizontal (large-amplitude period
     4 K(1/sqrt 2) / omega_0, omega_0^2 = (g L / 2) / (L^2/3 + h^2/12), rad/s)."""
-    omega0 = np.sqrt(p["g"] * p["L"] / 2 / (p["L"] ** 2 / 3 + p["h"] ** 2 / 12))
+    omega0 = np.sqrt(p["g"]) * np.sqrt(p["L"] / 2 / (p["L"] ** 2 / 3 + p["h"] ** 2 / 12))
     return float(p["t_end"] * omega0 / K_HORIZONTAL)
 
 
