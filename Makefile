@@ -5,6 +5,8 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 PEERS  := $(VENV)/.peers
+# test processes (pytest-xdist; a test file stays in one process, so its module fixtures run once)
+JOBS   ?= 2
 
 .PHONY: setup reports test test-fast bench clean
 
@@ -25,10 +27,10 @@ reports: $(PEERS)
 	$(PY) -m ancf.reports
 
 test: $(STAMP)
-	$(PY) -m pytest
+	$(PY) -m pytest -n $(JOBS) --dist loadfile
 
 test-fast: $(STAMP)
-	$(PY) -m pytest -m "not slow"
+	$(PY) -m pytest -n $(JOBS) --dist loadfile -m "not slow"
 
 bench: $(PEERS)
 	OPENBLAS_NUM_THREADS=1 $(PY) -m pytest benchmarks --benchmark-enable --benchmark-only --benchmark-json=reports/benchmarks/benchmark.json
