@@ -1,5 +1,6 @@
 """Command line: ``ancf scenes``, ``ancf run SCENE``, ``ancf analytic NAME``,
-``ancf modes SCENE``, ``ancf sweep SCENE --grid k=v1,v2``, ``ancf recommend SCENE --tol TOL``.
+``ancf modes SCENE``, ``ancf sweep SCENE --grid k=v1,v2``, ``ancf recommend SCENE --tol TOL``,
+``ancf element NAME`` (one of Chrono's ANCF elements' matrices at a stated state).
 
 ``--json`` prints one JSON object ``{scene, params, converged, message, results,
 cpu_time_s, compile_cpu_s, warnings}``.  Exit codes: 0 ok, 2 bad input (one line on stderr naming the
@@ -126,6 +127,24 @@ def _modes(args) -> int:
     from ancf.scenes.modes import execute
     out, _ = execute(args.name, _parse_sets(args.set), args.count, args.about)
     return _print(out, args)
+
+
+def _element(args) -> int:
+    """``ancf element NAME``: one element's M, Q_g, Q, K, R (:mod:`ancf.elements.chrono`)."""
+    import numpy as np
+    from ancf.elements.chrono import element
+    out = element(args.name).execute(_parse_sets(args.set))
+    for w in out["warnings"]:
+        print(f"warning: {w}", file=sys.stderr)
+    if args.json:
+        print(dumps(out))
+        return 0
+    print(f"{out['element']}: {len(out['coordinates'])} coordinates, cpu "
+          f"{out['cpu_time_s']:.3f} s")
+    for k in ("mass_matrix", "gravity", "internal_force", "stiffness", "damping"):
+        a = np.asarray(out[k], dtype=float)
+        print(f"  {k:15s} {'x'.join(map(str, a.shape)):8s} max |entry| {np.abs(a).max():.6g}")
+    return 0
 
 
 def _print(out: dict, args) -> int:
@@ -289,6 +308,14 @@ def main(argv=None) -> int:
                    help="reference (default) or equilibrium: the tangent stiffness at the "
                         "scene's static equilibrium under its load (pre-stressed)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
+    p = sub.add_parser("element", help="one of Chrono's ANCF elements: its mass, gravity, "
+                       "internal force, K and R at a stated state")
+    p.add_argument("name", help="ancf3243, ancf3333 (beams), ancf3443, ancf3833 (shells), "
+                                "ancf3843 (brick)")
+    p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter "
+                   "(dimensions, rho, E, nu, alpha, gx/gy/gz, node, component, displacement, "
+                   "velocity; beams k1, k2)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
     p = sub.add_parser("sweep", help="run the cartesian product of parameter values")
     p.add_argument("name")
     p.add_argument("--grid", action="append", metavar="KEY=V1,V2,...",
@@ -376,6 +403,8 @@ def _dispatch(args) -> int:
             return _modes(args)
         if args.cmd == "scenes":
             return _scenes()
+        if args.cmd == "element":  # numpy and the element modules only
+            return _element(args)
         if args.cmd == "sweep":
             return _sweep(args)
         if args.cmd == "recommend":

@@ -155,11 +155,56 @@ def _lookup(name: str) -> tuple[str, str, object]:
                           "(or the bare scene or reference name)")
 
 
+#: ``ancf element NAME --json``: the arrays of :mod:`ancf.elements.chrono` (n coordinates)
+ELEMENT_ARRAYS = {
+    "coordinates": (1, "the element's coordinates e (n): the reference with the stated "
+                       "displacement, m (dimensionless on gradient entries)"),
+    "mass_matrix": (2, "the consistent mass matrix M (n x n), kg (kg m, kg m^2 on gradient "
+                       "entries)"),
+    "gravity": (1, "the generalised gravity force Q_g (n), N (N m on gradient entries)"),
+    "internal_force": (1, "the internal force Q (n) of M e'' + Q(e, e') = Q_ext, N (Chrono's "
+                          "ComputeInternalForces stores -Q)"),
+    "stiffness": (2, "K = dQ/de (n x n), N/m"),
+    "damping": (2, "R = dQ/de' (n x n), N s/m"),
+}
+
+
+def element_names() -> list[str]:
+    """``element NAME`` of every element of ``ancf element``."""
+    from ancf.elements.chrono import ELEMENTS
+    return [f"element {n}" for n in ELEMENTS]
+
+
+def element_schema(name: str) -> dict:
+    """The JSON schema of ``ancf element NAME --json`` (``name`` bare, or ``element NAME``,
+    also with a leading ``ancf``); an unknown name raises :class:`SchemaNameError`."""
+    from ancf.elements.chrono import ELEMENTS
+    words = name.split() if isinstance(name, str) else []
+    bare = words[-1] if words[:-1] in ([], ["element"], ["ancf", "element"]) and words else None
+    if bare not in ELEMENTS:
+        raise SchemaNameError(f"schema: unknown element {name!r}; allowed: "
+                              f"{', '.join(element_names())}")
+    num = {"type": [NUM, "null"]}  # null: a non-finite entry, named in warnings
+    row = {"type": "array", "items": num}
+    props = {"element": {"type": STR, "const": bare}, "params": _params_schema(ELEMENTS[bare])}
+    for k, (rank, doc) in ELEMENT_ARRAYS.items():
+        props[k] = {"type": "array", "description": doc,
+                    "items": row if rank == 2 else num}
+    props["cpu_time_s"] = {"type": NUM, "description": "process CPU seconds of the evaluation"}
+    props["warnings"] = {"type": "array", "items": {"type": STR},
+                         "description": "non-finite arrays (their entries null), empty when none"}
+    return {"$schema": "https://json-schema.org/draft/2020-12/schema",
+            "title": f"ancf element {bare} --json", "type": "object", "properties": props,
+            "required": list(props), "additionalProperties": False}
+
+
 def schema(name: str) -> dict:
     """The JSON schema of ``ancf run|analytic|modes NAME --json``; ``name`` as the README
     writes it (``"run cantilever"``, ``"analytic reissner"``, ``"modes cantilever"``) or
     bare (``"cantilever"``: its run).  An unknown name raises :class:`SchemaNameError` (a
-    ``KeyError``) listing the allowed ones."""
+    ``KeyError``) listing the allowed ones.  ``"element ancf3243"``: :func:`element_schema`."""
+    if isinstance(name, str) and "element" in name.split()[:2]:
+        return element_schema(name)
     command, name, sc = _lookup(name)
     props = {"scene": {"type": STR, "const": name}, "params": _params_schema(sc),
              "converged": {"type": BOOL}, "message": {"type": STR},
@@ -271,6 +316,22 @@ def schemas_markdown() -> str:
                   f"{v['description']} |" for k, v in res["properties"].items()]
         parts += ["", "<details><summary>JSON schema</summary>\n", "```json",
                   json.dumps(s, indent=1, ensure_ascii=False), "```", "</details>\n"]
+    parts += ["## `ancf element NAME`\n",
+              "One of Chrono's ANCF elements at a stated state (`ancf/elements/chrono.py`; "
+              "`tests/interface/test_element_cli.py` validates every element's output). Top "
+              "level: `element`, `params` (every parameter used), the arrays below (n = the "
+              "element's coordinates; `null` entries only with a warning), `cpu_time_s`, "
+              "`warnings`.\n", "| key | type | meaning |", "|---|---|---|"]
+    parts += [f"| `{k}` | {'array of array of number' if r == 2 else 'array of number'} | {d} |"
+              for k, (r, d) in ELEMENT_ARRAYS.items()]
+    first, *rest = element_names()
+    parts += ["", "The schemas differ only in `element` and `params`: "
+              + "; ".join(f"`{full.split()[1]}`: "
+                          + ", ".join(element_schema(full)["properties"]["params"]["properties"])
+                          for full in [first, *rest]) + ".", "",
+              f"<details><summary>JSON schema of `ancf {first} --json`</summary>\n",
+              "```json", json.dumps(element_schema(first), indent=1, ensure_ascii=False),
+              "```", "</details>\n"]
     return "\n".join(parts)
 
 
