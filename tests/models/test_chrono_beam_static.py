@@ -1,0 +1,107 @@
+"""Chrono's small-deflection static checks of its ANCF beams, by our own model
+(``ancf.models.chrono_beam``), held to Chrono's own tolerances.
+
+Source: ``src/tests/unit_tests/fea/utest_FEA_ANCFbeam_3243_Formulation.cpp`` and
+``..._3333_Formulation.cpp`` (projectchrono/chrono 7689fbc02d12c5419fa6acad8791100fd89979dd);
+line numbers "3243 line / 3333 line".  Common to the four checks: 20 elements (:1240 /
+:1241), length 20 in (:1241 / :1242), aluminium rho = 2810 kg/m^3, E = 71.7 GPa,
+nu = 0.33, k1 = k2 = 10 (1 + nu)/(12 + 11 nu) (:1245-1251 / :1246-1252), node 0 fixed
+(``SetFixed``, :1269 / :1269), ``SetDimensions(dx, width, height)`` so Chrono's "width"
+is our H (along y) and "height" our W (along z) (:1281 / :1283); loads at the last
+element's end (``SetApplication(1.0)``), TIP_FORCE = TIP_MOMENT = 10 (:54-55); the tip
+frame from ``EvaluateSectionFrame(1)`` and ``GetCardanAnglesXYZ``; pass when the percent
+error is below 2 and the off-axis Cardan angles below 0.001 deg:
+
+    axial pull  F = (10, 0, 0) N,  u_x = P L/(A E)          (:1349, :1355-1357 / :1351, :1357-1359)
+    tip load    F = (0, 0, 10) N,  u_z = P L^3/(3 E I)      (:1519-1520, :1526-1528 / :1522-1523, :1529-1531)
+    gravity     g = (0, 0, -9.80665) m/s^2, width 0.5 in, height 0.125 in,
+                u_z = rho A g L^4/(8 E I)                   (:1565, :1586-1587, :1651-1660 / :1568, :1589-1590, :1655-1664)
+    tip twist   M = (10, 0, 0) N m, square 0.5 in, theta = M L/(G J),
+                J = 2.25 (a/2)^4, G = E/(2(1 + nu))         (:1720, :1725, :1828-1835 / :1724, :1729, :1833-1840)
+
+with A = H W and I = H W^3/12 (bending about y).  Chrono solves one linear step
+(``DoStaticLinear``); we solve the nonlinear statics by Newton (loads at the reference).
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+import pytest
+
+from ancf.models import chrono_beam as cb
+
+INCH = 0.0254                               # m
+N_ELEMENTS, LENGTH = 20, 20 * INCH          # -, m
+RHO, E, NU = 2810.0, 71.7e9, 0.33           # kg/m^3, Pa, -
+K_SHEAR = 10 * (1 + NU) / (12 + 11 * NU)    # Timoshenko k1 = k2
+TIP_FORCE, TIP_MOMENT, GRAVITY = 10.0, 10.0, -9.80665   # N, N m, m/s^2
+PERCENT, ANGLE_DEG = 2.0, 0.001             # Chrono's tolerances
+
+# case -> (H, W) in m, the off-axis Cardan angles Chrono checks (0 = x, 1 = y, 2 = z)
+SECTIONS = {"axial": ((0.125 * INCH, 0.5 * INCH), (0, 1, 2)),
+            "tip_load": ((0.125 * INCH, 0.5 * INCH), (0, 2)),
+            "gravity": ((0.5 * INCH, 0.125 * INCH), (0, 2)),
+            "twist": ((0.5 * INCH, 0.5 * INCH), (1, 2))}
+
+
+def beam(element: str, case: str, E_: float = E) -> cb.Beam:
+    (H, W), _ = SECTIONS[case]
+    return cb.Beam(element, N_ELEMENTS, LENGTH, H, W, RHO, E_, NU, K_SHEAR, K_SHEAR)
+
+
+def load(b: cb.Beam, case: str) -> np.ndarray:
+    if case == "axial":
+        return cb.tip_load(b, force=(TIP_FORCE, 0.0, 0.0))
+    if case == "tip_load":
+        return cb.tip_load(b, force=(0.0, 0.0, TIP_FORCE))
+    if case == "gravity":
+        return cb.gravity(b, (0.0, 0.0, GRAVITY))
+    return cb.tip_load(b, moment=(TIP_MOMENT, 0.0, 0.0))
+
+
+def theory(case: str) -> float:
+    """The textbook value (m, or rad for the twist) of Chrono's check, with Chrono's E."""
+    (H, W), _ = SECTIONS[case]
+    A, I, G = H * W, H * W**3 / 12.0, E / (2.0 * (1.0 + NU))
+    return {"axial": TIP_FORCE * LENGTH / (A * E),
+            "tip_load": TIP_FORCE * LENGTH**3 / (3.0 * E * I),
+            "gravity": RHO * A * GRAVITY * LENGTH**4 / (8.0 * E * I),
+            "twist": TIP_MOMENT * LENGTH / (G * 2.25 * (0.5 * W) ** 4)}[case]
+
+
+@lru_cache(maxsize=None)
+def answer(element: str, case: str, E_: float = E):
+    """(our value as Chrono measures it, Cardan angles in deg, the Newton solution)."""
+    b = beam(element, case, E_)
+    sol = cb.solve_static(b, load(b, case))
+    point, R = cb.tip_frame(b, sol.e)
+    angles = np.degrees(cb.cardan_xyz(R))
+    value = {"axial": point[0] - LENGTH, "tip_load": point[2], "gravity": point[2],
+             "twist": np.radians(angles[0])}[case]
+    return value, angles, sol
+
+
+CASES = [(el, case) for el in cb.ELEMENTS for case in SECTIONS]
+
+
+@pytest.mark.parametrize("element,case", CASES)
+def test_static_case_within_chrono_tolerance(element, case):
+    value, angles, sol = answer(element, case)
+    percent = (value - theory(case)) / theory(case) * 100.0
+    assert abs(percent) < PERCENT, (element, case, value, theory(case), percent)
+    off_axis = SECTIONS[case][1]
+    assert np.all(np.abs(angles[list(off_axis)]) < ANGLE_DEG), angles
+    # Newton reached rtol or the round-off floor of Q (see solve_static)
+    assert sol.converged or sol.residual <= 10.0 * sol.floor
+    assert sol.floor < 1e-5 and sol.iterations < 30
+
+
+@pytest.mark.parametrize("element,case", CASES)
+def test_static_case_follows_E(element, case):
+    """With 1.05 E the answer shrinks as 1/1.05 (linear elasticity, small deflection) and
+    leaves Chrono's 2 % band around the textbook value at E: the check can fail."""
+    value, _, _ = answer(element, case)
+    stiffer, _, _ = answer(element, case, 1.05 * E)
+    assert stiffer / value == pytest.approx(1.0 / 1.05, rel=1e-3)
+    assert abs((stiffer - theory(case)) / theory(case) * 100.0) > PERCENT
