@@ -72,3 +72,24 @@ class Param:
                    or (self.hi is not None and (v >= self.hi if self.hi_open else v > self.hi)))
         if bad:
             raise InputError(f"{self.name} = {v!r} is out of range; allowed: {self.allowed()}")
+
+
+def resolve(params, overrides: dict | None, owner: str) -> dict:
+    """All values of ``params`` (Param s) in declared order: ``overrides`` (strings or
+    values, each parsed by its Param), then the defaults (a callable default follows the
+    values before it), each checked; an unknown name is one InputError naming ``owner``
+    (e.g. "scene 'cantilever'")."""
+    overrides = dict(overrides or {})
+    names = [p.name for p in params]
+    unknown = sorted(set(overrides) - set(names))
+    if unknown:
+        raise InputError(f"{unknown[0]}: unknown parameter of {owner}; "
+                         f"allowed: {', '.join(names)}")
+    values = {p.name: p.parse(overrides[p.name]) for p in params if p.name in overrides}
+    for p in params:
+        if p.name not in values:
+            d = p.default(values) if callable(p.default) else p.default
+            values[p.name] = d
+            if d is not None:
+                p.check(d)
+    return {p.name: values[p.name] for p in params}

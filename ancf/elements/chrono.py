@@ -24,7 +24,7 @@ from typing import Callable
 
 import numpy as np
 
-from ancf.common.params import InputError, Param
+from ancf.common.params import InputError, Param, resolve
 
 from . import ancf3243, ancf3333, ancf3443, ancf3833, ancf3843
 from .material import isotropic_3d
@@ -93,18 +93,7 @@ class ElementSpec:
     def resolve(self, overrides: dict | None = None) -> dict:
         """All parameter values: defaults (some following others), then ``overrides``
         (strings or values, each parsed by its Param: one InputError naming the field)."""
-        overrides = dict(overrides or {})
-        names = [p.name for p in self.params]
-        unknown = sorted(set(overrides) - set(names))
-        if unknown:
-            raise InputError(f"{unknown[0]}: unknown parameter of element {self.name!r}; "
-                             f"allowed: {', '.join(names)}")
-        values = {p.name: p.parse(overrides[p.name]) for p in self.params if p.name in overrides}
-        for p in self.params:
-            if p.name not in values:
-                values[p.name] = p.default(values) if callable(p.default) else p.default
-                p.check(values[p.name])
-        return {p.name: values[p.name] for p in self.params}
+        return resolve(self.params, overrides, f"element {self.name!r}")
 
     def state(self, p: dict):
         """(e, e') (NDOF,) each: the reference with the stated displacement and velocity."""

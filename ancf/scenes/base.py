@@ -36,7 +36,7 @@ from typing import Callable, NamedTuple
 
 from ancf.common.compile_time import compile_cpu
 from ancf.common.diagnostics import nonfinite, numerical_warnings
-from ancf.common.params import InputError, Param
+from ancf.common.params import Param, resolve
 from ancf.common.threads import blas_pinned
 from ancf.solvers.linear import Singular
 
@@ -192,23 +192,7 @@ class Scene:
 
     def resolve(self, overrides: dict | None = None) -> dict:
         """All parameter values: defaults, then ``overrides`` (strings or values)."""
-        overrides = dict(overrides or {})
-        names = [p.name for p in self.params]
-        unknown = sorted(set(overrides) - set(names))
-        if unknown:
-            raise InputError(f"{unknown[0]}: unknown parameter of scene {self.name!r}; "
-                             f"allowed: {', '.join(names)}")
-        values = {}
-        for p in self.params:
-            if p.name in overrides:
-                values[p.name] = p.parse(overrides[p.name])
-        for p in self.params:
-            if p.name not in values:
-                d = p.default(values) if callable(p.default) else p.default
-                values[p.name] = d
-                if d is not None:
-                    p.check(d)
-        values = {p.name: values[p.name] for p in self.params}  # declared order
+        values = resolve(self.params, overrides, f"scene {self.name!r}")
         if self.check is not None:
             self.check(values)
         return values
