@@ -16,15 +16,8 @@ import numpy as np
 import pytest
 
 import ancf
-from ancf.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def _cli_json(capsys, *argv):
-    rc = main(list(argv))
-    out, err = capsys.readouterr()
-    return rc, out, err
 
 
 def _untimed(obj):
@@ -42,10 +35,10 @@ def _untimed(obj):
     ("run", "pendulum", {"t_end": 0.05, "output_dt": 0.01}),
     ("run", "plate-square", {"n_elements": 4}),
 ])
-def test_to_json_is_what_the_cli_prints(capsys, command, name, sets):
+def test_to_json_is_what_the_cli_prints(cli, command, name, sets):
     res = getattr(ancf, command if command == "analytic" else "run")(name, **sets)
     argv = [command, name, *[a for k, v in sets.items() for a in ("--set", f"{k}={v}")], "--json"]
-    rc, out, _ = _cli_json(capsys, *argv)
+    rc, out, _ = cli(*argv)
     assert rc == (0 if res.converged else 3)
     cli, api = json.loads(out), json.loads(res.to_json())
     assert list(api) == list(cli)  # same keys, same order
@@ -69,12 +62,12 @@ def test_to_json_is_what_the_cli_prints(capsys, command, name, sets):
     ("analytic", "nope", {}),
     ("run", "spinning-beam", {"t_end": 1, "mean_window": 2}),
 ])
-def test_bad_input_raises_the_cli_message(capsys, command, name, sets):
+def test_bad_input_raises_the_cli_message(cli, command, name, sets):
     fn = ancf.analytic if command == "analytic" else ancf.run
     with pytest.raises(ancf.InputError) as exc:
         fn(name, **sets)
     argv = [command, name, *[a for k, v in sets.items() for a in ("--set", f"{k}={v}")]]
-    rc, out, err = _cli_json(capsys, *argv)
+    rc, out, err = cli(*argv)
     assert rc == 2 and out == ""
     assert err == f"error: {exc.value}\n"
     assert "\n" not in str(exc.value)

@@ -16,14 +16,8 @@ KEYS = {"scene", "params", "converged", "message", "results", "cpu_time_s", "com
         "warnings"}
 
 
-def _run(capsys, *argv):
-    rc = main(list(argv))
-    out, err = capsys.readouterr()
-    return rc, out, err
-
-
-def test_scenes_lists_every_scene_and_reference(capsys):
-    rc, out, _ = _run(capsys, "scenes")
+def test_scenes_lists_every_scene_and_reference(cli):
+    rc, out, _ = cli("scenes")
     assert rc == 0
     for name in ("simply-supported", "cantilever", "axial-bar", "timoshenko", "reissner"):
         assert name in out
@@ -36,21 +30,21 @@ def test_scenes_lists_every_scene_and_reference(capsys):
     (("analytic", "timoshenko"), "mid_deflection_m"),
     (("analytic", "reissner", "--set", "h=0.5", "--set", "nu=0"), "tip_x"),
 ])
-def test_json_shape(capsys, argv, key):
-    rc, out, _ = _run(capsys, *argv, "--json")
+def test_json_shape(cli, argv, key):
+    rc, out, _ = cli(*argv, "--json")
     data = json.loads(out)
     assert rc == 0 and set(data) == KEYS and data["converged"] is True and data["warnings"] == []
     assert isinstance(data["results"][key], float)
     assert data["cpu_time_s"] >= 0
 
 
-def test_cantilever_default_force_follows_h(capsys):
-    _, out, _ = _run(capsys, "run", "cantilever", "--set", "h=0.5", "--set", "n_elements=2", "--json")
+def test_cantilever_default_force_follows_h(cli):
+    _, out, _ = cli("run", "cantilever", "--set", "h=0.5", "--set", "n_elements=2", "--json")
     assert json.loads(out)["params"]["F"] == pytest.approx(-5e8 * 0.5**3)
 
 
-def test_simply_supported_sign_convention(capsys):
-    _, out, _ = _run(capsys, "run", "simply-supported", "--json")
+def test_simply_supported_sign_convention(cli):
+    _, out, _ = cli("run", "simply-supported", "--json")
     assert json.loads(out)["results"]["mid_deflection_m"] < 0  # downward load, negative
 
 
@@ -67,25 +61,25 @@ def test_simply_supported_sign_convention(capsys):
     (("run", "no-such-scene"), "run"),
     (("analytic", "reissner", "--set", "L=0"), "L"),
 ])
-def test_bad_input_exit_2_one_line(capsys, argv, field):
-    rc, out, err = _run(capsys, *argv)
+def test_bad_input_exit_2_one_line(cli, argv, field):
+    rc, out, err = cli(*argv)
     assert rc == 2 and out == ""
     lines = err.strip().splitlines()
     assert len(lines) == 1 and field in lines[0] and "allowed" in lines[0]
 
 
-def test_non_convergence_exit_3_with_json(capsys):
-    rc, out, _ = _run(capsys, "run", "cantilever", "--set", "h=0.5", "--set", "nu=0",
-                      "--set", "n_elements=64", "--set", "integration=report-selective", "--json")
+def test_non_convergence_exit_3_with_json(cli):
+    rc, out, _ = cli("run", "cantilever", "--set", "h=0.5", "--set", "nu=0",
+                     "--set", "n_elements=64", "--set", "integration=report-selective", "--json")
     data = json.loads(out)
     assert rc == 3 and data["converged"] is False and "No convergence" in data["message"]
     assert set(data) == KEYS
 
 
-def test_nonconvergence_is_not_nan(capsys):
+def test_nonconvergence_is_not_nan(cli):
     """A solve that cannot converge (one Newton iteration allowed) reports null, not NaN."""
-    rc, out, _ = _run(capsys, "run", "cantilever", "--set", "max_iterations=1", "--set",
-                      "n_elements=2", "--json")
+    rc, out, _ = cli("run", "cantilever", "--set", "max_iterations=1", "--set",
+                     "n_elements=2", "--json")
     data = json.loads(out)
     assert rc == 3 and data["results"]["tip_x"] is None and "No convergence" in data["message"]
 

@@ -6,7 +6,6 @@ import os
 import pytest
 
 from ancf.study import references
-from ancf.cli import main
 from ancf.study.recommend import recommend
 from ancf.study.selection import WORK_TIE
 from ancf.study.sweep import run_sweep
@@ -20,21 +19,11 @@ def cache(workdir):
     return workdir
 
 
-def _cli(capsys, *argv):
-    """(exit code, stdout, stderr) of `ancf ARGV`, whether main returns the code or exits."""
-    try:
-        rc = main(list(argv))
-    except SystemExit as exc:
-        rc = exc.code
-    out, err = capsys.readouterr()
-    return rc, out, err
-
-
-def _rerun_error(capsys, scene, params, reference):
+def _rerun_error(cli, scene, params, reference):
     """Run the recommended parameters through `ancf run --set k=v` as printed, and
     compute the error against the reference independently."""
     argv = ["run", scene, "--json"] + sum((["--set", f"{k}={v}"] for k, v in params.items()), [])
-    rc, out, _ = _cli(capsys, *argv)
+    rc, out, _ = cli(*argv)
     data = json.loads(out)
     assert rc == 0 and data["converged"]
     ref = references.spec(scene).reference(reference)
@@ -53,7 +42,7 @@ def cantilever_answer():
 
 
 @pytest.mark.slow
-def test_recommend_cantilever_1e3_answers_with_evidence(capsys, cantilever_answer):
+def test_recommend_cantilever_1e3_answers_with_evidence(cli, cantilever_answer):
     a = cantilever_answer
     assert KEYS <= set(a) and a["scene"] == "cantilever" and a["tol"] == 1e-3
     assert a["reference"] == "reissner" and a["error"] <= 1e-3 and a["cpu_time_s"] > 0
@@ -61,7 +50,7 @@ def test_recommend_cantilever_1e3_answers_with_evidence(capsys, cantilever_answe
     assert ev["runs"] >= 48 and 1 <= ev["runs_meeting_tol"] <= ev["converged_runs"]
     assert ev["default_model"]["error"] is not None
     # re-run the recommended configuration exactly as printed: it meets the tolerance
-    err = _rerun_error(capsys, "cantilever", a["params"], "reissner")
+    err = _rerun_error(cli, "cantilever", a["params"], "reissner")
     assert err == pytest.approx(a["error"], rel=1e-9) and err <= 1e-3
     # the pick lies in the tie group (runs chained to the least work by gaps below
     # 1 + WORK_TIE), which holds the least work of every adequate run
@@ -74,9 +63,8 @@ def test_recommend_cantilever_1e3_answers_with_evidence(capsys, cantilever_answe
 
 
 @pytest.mark.slow
-def test_recommend_second_call_uses_the_cached_sweep(capsys, cantilever_answer):
-    rc, out, err = _cli(capsys, "recommend", "cantilever", "--tol", "1e-3", "--json",
-                        "--no-progress")
+def test_recommend_second_call_uses_the_cached_sweep(cli, cantilever_answer):
+    rc, out, err = cli("recommend", "cantilever", "--tol", "1e-3", "--json", "--no-progress")
     assert rc == 0 and "0 to run" in err
     assert json.loads(out)["params"] == cantilever_answer["params"]
 
@@ -97,9 +85,8 @@ def test_recommendation_does_not_depend_on_measured_times(tmp_path, cantilever_a
         assert (r["params"], r["work"]) == (cantilever_answer["params"], cantilever_answer["work"])
 
 
-def test_unreachable_tolerance_is_reported_not_faked(capsys, cantilever_answer):
-    rc, out, _ = _cli(capsys, "recommend", "cantilever", "--tol", "1e-5", "--json",
-                      "--no-progress")
+def test_unreachable_tolerance_is_reported_not_faked(cli, cantilever_answer):
+    rc, out, _ = cli("recommend", "cantilever", "--tol", "1e-5", "--json", "--no-progress")
     a = json.loads(out)
     assert rc == 3 and a["params"] is None and a["found"] is False
     assert "not reached" in a["message"] and "--reference self" in a["message"]
@@ -136,34 +123,34 @@ def test_lighter_model_than_the_default_is_said_with_numbers(tmp_path):
     assert f"{d['error']:.3g}" in r["message"]
 
 
-def test_recommend_bad_input(capsys):
-    assert _cli(capsys, "recommend", "nope", "--tol", "1e-3")[0] == 2
-    assert _cli(capsys, "recommend", "cantilever", "--tol", "1e-3", "--reference", "x")[0] == 2
-    assert _cli(capsys, "recommend", "cantilever", "--tol", "1e-3", "--data", "/no/such")[0] == 2
-    assert _cli(capsys, "recommend", "cantilever", "--tol", "-1")[0] == 2
+def test_recommend_bad_input(cli):
+    assert cli("recommend", "nope", "--tol", "1e-3")[0] == 2
+    assert cli("recommend", "cantilever", "--tol", "1e-3", "--reference", "x")[0] == 2
+    assert cli("recommend", "cantilever", "--tol", "1e-3", "--data", "/no/such")[0] == 2
+    assert cli("recommend", "cantilever", "--tol", "-1")[0] == 2
 
 
 @pytest.mark.slow
-def test_recommend_pendulum_1e2(capsys):
+def test_recommend_pendulum_1e2(cli):
     # generalized-alpha only, to keep the sweep short (the first call also computes the
     # cached 32-element self-reference)
-    rc, out, _ = _cli(capsys, "recommend", "pendulum", "--tol", "1e-2", "--json", "--no-progress",
-                      "--set", "integrator=generalized-alpha")
+    rc, out, _ = cli("recommend", "pendulum", "--tol", "1e-2", "--json", "--no-progress",
+                     "--set", "integrator=generalized-alpha")
     a = json.loads(out)
     assert rc == 0 and a["error"] <= 1e-2
-    err = _rerun_error(capsys, "pendulum", a["params"], a["reference"])
+    err = _rerun_error(cli, "pendulum", a["params"], a["reference"])
     assert err <= 1e-2
 
 
 @pytest.mark.slow
-def test_recommend_belt2d_meets_the_tolerance(capsys):
+def test_recommend_belt2d_meets_the_tolerance(cli):
     """belt2d over 0.3 s, 7 contact points, dt = 1e-3 s, element counts 10..80: the cheapest
     one whose driven speed and span tensions are within 5 % of the 120-element
     self-reference (today 40 elements, 2.4e-2; 20 elements miss it: 0.10).  Re-run as
     printed, it meets the tolerance; the answer carries its evidence."""
-    rc, out, _ = _cli(capsys, "recommend", "belt2d", "--tol", "0.05", "--json", "--no-progress",
-                      "--workers", "2", "--set", "t_end=0.3", "--set", "gauss_points=7",
-                      "--set", "dt=1e-3")
+    rc, out, _ = cli("recommend", "belt2d", "--tol", "0.05", "--json", "--no-progress",
+                     "--workers", "2", "--set", "t_end=0.3", "--set", "gauss_points=7",
+                     "--set", "dt=1e-3")
     a = json.loads(out)
     assert rc == 0 and a["found"] and a["reference"] == "self" and a["error"] <= 0.05
     assert a["params"]["gauss_points"] == 7 and a["params"]["dt"] == 1e-3
@@ -171,31 +158,31 @@ def test_recommend_belt2d_meets_the_tolerance(capsys):
     cheaper = a["evidence"].get("best_cheaper_run")
     assert cheaper is None or cheaper["error"] > 0.05
     params = {k: v for k, v in a["params"].items() if v is not None}  # None: computed
-    assert _rerun_error(capsys, "belt2d", params, "self") == pytest.approx(a["error"], rel=1e-9)
+    assert _rerun_error(cli, "belt2d", params, "self") == pytest.approx(a["error"], rel=1e-9)
 
 
 @pytest.mark.slow
-def test_recommend_belt3d_answers_with_bechtel_as_reference(capsys):
+def test_recommend_belt3d_answers_with_bechtel_as_reference(cli):
     """belt3d over its first 0.02 s (the belt settled at rest, driver not yet turning,
     omega_final = 1 rad/s and no torque for Bechtel's steady belt): the grid of plates x
     contact points against Bechtel's tensions (both 50 N); every run meets 2 % and the
     cheapest is chosen by counted work."""
-    rc, out, _ = _cli(capsys, "recommend", "belt3d", "--tol", "0.02", "--json", "--no-progress",
-                      "--workers", "2", "--set", "t_end=0.02", "--set", "output_dt=0.01",
-                      "--set", "steady_window=0.01", "--set", "omega_final=1",
-                      "--set", "Ta_max=0")
+    rc, out, _ = cli("recommend", "belt3d", "--tol", "0.02", "--json", "--no-progress",
+                     "--workers", "2", "--set", "t_end=0.02", "--set", "output_dt=0.01",
+                     "--set", "steady_window=0.01", "--set", "omega_final=1",
+                     "--set", "Ta_max=0")
     a = json.loads(out)
     assert rc == 0 and a["found"] and a["reference"] == "bechtel" and a["error"] <= 0.02
     assert a["evidence"]["runs"] == 9 and "contact points per plate" in a["message"]
 
 
-def test_recommend_refuses_when_the_analytic_reference_cannot_exist(capsys):
+def test_recommend_refuses_when_the_analytic_reference_cannot_exist(cli):
     """Bechtel's belt cannot transmit 10 N m (at most 3.88968 N m at the scene's
     defaults): one error line naming the field and the range, before any sweep (no
     sweep file appears in the cache)."""
     from analytic import bechtel
     cached = set((references.cache_root() / "recommend").glob("belt3d-*"))
-    rc, out, err = _cli(capsys, "recommend", "belt3d", "--tol", "1e-2", "--set", "Ta_max=10")
+    rc, out, err = cli("recommend", "belt3d", "--tol", "1e-2", "--set", "Ta_max=10")
     assert rc == 2 and out == ""
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: reference bechtel of scene 'belt3d' "
