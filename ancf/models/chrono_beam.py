@@ -154,15 +154,17 @@ class Solution:
 
 
 def solve_static(beam: Beam, F: np.ndarray, rtol: float = 1e-10, maxiter: int = 30,
-                 floor_factor: float = 10.0) -> Solution:
-    """Newton on eq. (1) from the reference until |R_f| <= rtol |F_f| on the free
-    coordinates, or, earlier, until |R_f| <= floor_factor |Q_f(e0)|: the round-off of Q
-    (cancellation in E eps over the section, ~1e-8 N for Chrono's aluminium beams) is
-    larger than 1e-10 |F| for loads of a few N, and then converged=False says that the
-    solve stopped at the round-off floor.  Warns if maxiter iterations do not reach either."""
-    e, f = beam.reference(), beam.free()
+                 floor_factor: float = 10.0, start: np.ndarray | None = None) -> Solution:
+    """Newton on eq. (1) from ``start`` (m; default the reference, e.g. the previous load
+    step's state) until |R_f| <= rtol |F_f| on the free coordinates, or, earlier, until
+    |R_f| <= floor_factor |Q_f(e0)|: the round-off of Q (cancellation in E eps over the
+    section, ~1e-8 N for Chrono's aluminium beams) is larger than 1e-10 |F| for loads of a
+    few N, and then converged=False says that the solve stopped at the round-off floor.
+    Warns if maxiter iterations do not reach either."""
+    e0, f = beam.reference(), beam.free()
     scale = np.linalg.norm(F[f])
-    floor = np.linalg.norm(assemble(beam, e)[0][f]) / scale
+    floor = np.linalg.norm(assemble(beam, e0)[0][f]) / scale
+    e = e0 if start is None else np.array(start, dtype=float)
     for it in range(maxiter + 1):
         Q, K = assemble(beam, e)
         r = Q[f] - F[f]
