@@ -3,6 +3,7 @@ models (``beam3d``: one builder per 3D element, clamp, pins, tip force and tip m
 St-Venant's torsion constant, static solve) and the
 thin-plate models (``plate``: simply supported rectangle, clamped strip, edge load;
 meshes in ``plate_mesh``); Chrono's static formulation checks on its ANCF elements
-(``chrono_beam``: clamped 3243/3333 beams; ``chrono_continuum``: the 3843 brick), small
-numpy meshes with a Newton solve, held to Chrono's own tolerances in ``tests/models``.
+(``chrono_beam``: clamped 3243/3333 beams; ``chrono_continuum``: the 3843 brick;
+``chrono_shell``: plates of 3443/3833 shells, statics and modes), small numpy meshes with
+a Newton solve, held to Chrono's own tolerances in ``tests/models``.
 """

@@ -44,7 +44,7 @@ from ancf.elements import ancf3243, ancf3333
 ELEMENTS = {"3243": (ancf3243, (0, 1), 1), "3333": (ancf3333, (0, 2, 1), 2)}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Beam:
     """The clamped beam: element name ("3243" or "3333"), n elements, length L (m), section
     H (m, along y) x W (m, along z), density rho (kg/m^3), Young's modulus E (Pa), Poisson's

@@ -47,7 +47,8 @@ SECTIONS = {"axial": ((0.125 * INCH, 0.5 * INCH), (0, 1, 2)),
 
 def beam(element: str, case: str, E_: float = E) -> cb.Beam:
     (H, W), _ = SECTIONS[case]
-    return cb.Beam(element, N_ELEMENTS, LENGTH, H, W, RHO, E_, NU, K_SHEAR, K_SHEAR)
+    return cb.Beam(element=element, n=N_ELEMENTS, L=LENGTH, H=H, W=W, rho=RHO, E=E_, nu=NU,
+                   k1=K_SHEAR, k2=K_SHEAR)
 
 
 def load(b: cb.Beam, case: str) -> np.ndarray:

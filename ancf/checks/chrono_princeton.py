@@ -40,7 +40,8 @@ def beam(element: str, n: int = N_ELEMENTS) -> cb.Beam:
     NaN: statics without gravity need no density."""
     p = pub.PRINCETON
     ks = torsion_factor(p["h"], p["b"])
-    return cb.Beam(element, n, p["L"], p["h"], p["b"], math.nan, p["E"], p["nu"], ks, ks)
+    return cb.Beam(element=element, n=n, L=p["L"], H=p["h"], W=p["b"], rho=math.nan, E=p["E"],
+                   nu=p["nu"], k1=ks, k2=ks)
 
 
 @dataclass(frozen=True)

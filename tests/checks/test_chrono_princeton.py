@@ -1,5 +1,5 @@
 """Issue 35: the Princeton beam (every load and angle) with Chrono's ANCF 3243 and 3333 at
-16 elements against the ANSYS beam elements (``ancf.models.chrono_princeton``): |u_y|
+16 elements against the ANSYS beam elements (``ancf.checks.chrono_princeton``): |u_y|
 within 1 %, |u_z| within 0.5 % (ours / ANSYS - 1; components that ANSYS has at 0 by
 symmetry are not compared, as in ``ancf.checks.beam3d_benchmarks``).
 
@@ -17,7 +17,7 @@ from functools import lru_cache
 
 import pytest
 
-from ancf.models import chrono_princeton as cp
+from ancf.checks import chrono_princeton as cp
 from ancf.scenes import beam3d_published as pub
 
 TOL = {"uy": 0.01, "uz": 0.005}
@@ -57,7 +57,7 @@ def test_princeton_against_ansys(element, load, beta, component):
 
 
 def main():
-    """Print the table of every case (``python tests/models/test_chrono_princeton.py``)."""
+    """Print the table of every case (``python tests/checks/test_chrono_princeton.py``)."""
     print(cp.table([row(e, ld, b) for e in ("3243", "3333") for ld in pub.PRINCETON_LOADS
                     for b in pub.PRINCETON_ANGLES]))
 
