@@ -76,7 +76,7 @@ class BeltSpec(Belt2DSpec):
     torque_law: str = "cosine-ramp"  # the load torque law (TORQUE_LAWS)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Rig:
     """The pulleys of a drive as the march sees them (SI units): ``names`` (np,),
     ``centres`` (np, dim) m, contact ``radii`` (np,) m, ``free`` (np,) int (the free
@@ -105,8 +105,9 @@ def thesis_rig(spec: BeltSpec, speed, torque, dim: int = 2) -> Rig:
     path = spec.path
     centres = np.zeros((2, dim))
     centres[:, :2] = [path.O1, path.O2]
-    return Rig(("driver", "driven"), centres, np.array([path.R1, path.R2]),
-               np.array([-1, 0]), np.array([float(spec.inertia)]), np.zeros(1), (speed, torque))
+    return Rig(names=("driver", "driven"), centres=centres, radii=np.array([path.R1, path.R2]),
+               free=np.array([-1, 0]), inertia=np.array([float(spec.inertia)]),
+               damping=np.zeros(1), laws=(speed, torque))
 
 
 class PulleyDrive:

@@ -63,14 +63,14 @@ def rig(d: DriveDescription, dim: int = 2) -> Rig:
     arms = [p for p, r in zip(d.pulleys, roles) if r.arm]
     centres = np.zeros((len(d.pulleys), dim))
     centres[:, :2] = [p.centre for p in d.pulleys]
-    return Rig(tuple(p.name for p in d.pulleys), centres,
-               np.array([p.radius + offset for p in d.pulleys]), free,
-               np.array([p.params["inertia"] for p in chosen]
-                        + [p.params["arm_inertia"] for p in arms], dtype=float),
-               np.array([p.params["damping"] for p in chosen]
-                        + [p.params["arm_damping"] for p in arms], dtype=float),
-               tuple(r.time_law(p.params) for p, r in zip(d.pulleys, roles)),
-               _arms(d, free), load_records(
+    return Rig(names=tuple(p.name for p in d.pulleys), centres=centres,
+               radii=np.array([p.radius + offset for p in d.pulleys]), free=free,
+               inertia=np.array([p.params["inertia"] for p in chosen]
+                                + [p.params["arm_inertia"] for p in arms], dtype=float),
+               damping=np.array([p.params["damping"] for p in chosen]
+                                + [p.params["arm_damping"] for p in arms], dtype=float),
+               laws=tuple(r.time_law(p.params) for p, r in zip(d.pulleys, roles)),
+               arms=_arms(d, free), loads=load_records(
                    [(p.params.get("load_acts"), i, p.params)
                     for i, (p, r) in enumerate(zip(d.pulleys, roles)) if r.free]
                    + [(None, -1, {})] * len(arms)))

@@ -213,5 +213,6 @@ def sense_drive(p: dict, res: SceneResult, path, T0: float, k: float, area: floa
                                  omega_mean=float(w.mean()) if w.size else None,
                                  trace=tuple(w), penetration=None if d is None else float(d))
                     for n, role, R, wrap, Ta, w, d in zip(names, roles, radii, wraps, loads, W, pen))
-    return sense.Drive(pulleys, T0, k, p["rho"] * area, p["mu"], p["t_end"], window, ramps,
-                       finished=spans is not None, spans=spans or {}, times=tuple(t[sel]))
+    return sense.Drive(pulleys=pulleys, T0=T0, k=k, rhoA=p["rho"] * area, mu=p["mu"],
+                       t_end=p["t_end"], window=window, ramps=ramps, finished=spans is not None,
+                       spans=spans or {}, times=tuple(t[sel]))

@@ -276,9 +276,9 @@ def sense_drive(desc, results: dict | None) -> sense.Drive:
                      for a, o in zip(arms, got["arms"]))
     area = b["b"] * b["h"]
     k = (b["E"] if b["element"] == "plate36" else element_modulus(b)) * area
-    return sense.Drive(pulleys, pretension(desc), k, b["rho"] * area, desc.friction["mu"],
-                       t_end, r["steady_window"], _ramps(desc), arms,
-                       finished=bool(got.get("spans")),
+    return sense.Drive(pulleys=pulleys, T0=pretension(desc), k=k, rhoA=b["rho"] * area,
+                       mu=desc.friction["mu"], t_end=t_end, window=r["steady_window"],
+                       ramps=_ramps(desc), arms=arms, finished=bool(got.get("spans")),
                        spans={f"{s['from']}-{s['to']}": s["tension_mean_N"]
                               for s in got.get("spans") or []},
                        times=tuple(times[sel]))

@@ -250,7 +250,7 @@ class Arm:
     turn: float | None = None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Drive:
     """A belt drive's numbers for :func:`drive`: ``pulleys`` (:class:`Pulley`, the driver
     the first prescribed one), the belt's pre-tension ``T0`` (N, on the path at rest),

@@ -181,8 +181,9 @@ def _ring(dEA, R0=0.1, strain=1e-3, n=24):
                       E=2e8, nu=0.3, rho=1200.0, b=0.02, h=0.005, ks=5 / 6, alpha1=1.0,
                       alpha2=1e-4, nx=5, k_p=1e6, c_p=0.0, friction=(LAW, 0.0, 0.0),
                       gauss_points=5)
-    rig = Rig(("far",), np.array([[10.0, 10.0]]), np.array([0.01]), np.array([-1]),
-              np.zeros(0), np.zeros(0), (lambda t: np.zeros(np.shape(t)),))
+    rig = Rig(names=("far",), centres=np.array([[10.0, 10.0]]), radii=np.array([0.01]),
+              free=np.array([-1]), inertia=np.zeros(0), damping=np.zeros(0),
+              laws=(lambda t: np.zeros(np.shape(t)),))
     return BeltDrive(spec, rig, damping=(dEA, 0.0))
 
 

@@ -34,9 +34,10 @@ def _drive(pulleys=None, spans=None, arms=(), finished=True, ramps=None, **kw) -
         f.setdefault("trace", tuple(np.full(t.size, f["omega_mean"])) if f["role"] != "prescribed"
                      else ())
         out.append(sense.Pulley(name, **f))
-    return sense.Drive(tuple(out), kw.pop("T0", T0), K, 0.01036, MU, 1.0, 0.1,
-                       ramps or {"driver's law": 0.05}, arms, finished,
-                       {"a": 33.0, "b": 27.0} if spans is None else spans, tuple(t), **kw)
+    return sense.Drive(pulleys=tuple(out), T0=kw.pop("T0", T0), k=K, rhoA=0.01036, mu=MU,
+                       t_end=1.0, window=0.1, ramps=ramps or {"driver's law": 0.05}, arms=arms,
+                       finished=finished, spans={"a": 33.0, "b": 27.0} if spans is None else spans,
+                       times=tuple(t), **kw)
 
 
 def test_a_sane_drive_passes_every_check():

@@ -17,9 +17,6 @@ PACKAGE = REPO / "ancf"
 MAX_POSITIONAL = 8
 MAX_LINES = 600
 GENERATED = re.compile(r"_\w*generated")
-#: files that build a class from 9+ positional arguments today (Rig(...), sense.Drive(...)),
-#: left to their owners; no other file may join them
-WAIVED_POSITIONAL = {"ancf/belts/drive_model.py", "ancf/scenes/belt_drive.py"}
 
 
 def _name(node) -> str:
@@ -80,13 +77,9 @@ def _outside_elements(path) -> bool:
     return path.relative_to(PACKAGE).parts[0] != "elements"
 
 
-def _not_waived(path) -> bool:
-    return str(path.relative_to(REPO)) not in WAIVED_POSITIONAL
-
-
 @pytest.mark.parametrize("check, applies", [
     (literal_prm_index, lambda path: True),
-    (many_positional, _not_waived),
+    (many_positional, lambda path: True),
     (generated_imports, _outside_elements),
     (too_long, _hand_written),
 ], ids=["no-prm-literal-index", "at-most-8-positional", "generated-only-in-elements",
@@ -95,11 +88,6 @@ def test_the_package_keeps_the_invariant(check, applies):
     found = [f"{path.relative_to(REPO)}:{line}" for path in sorted(PACKAGE.rglob("*.py"))
              if applies(path) for line in check(path.read_text())]
     assert found == [], f"{check.__name__}: {', '.join(found)}"
-
-
-def test_the_waived_files_still_need_their_waiver():
-    stale = [f for f in sorted(WAIVED_POSITIONAL) if not many_positional((REPO / f).read_text())]
-    assert stale == [], f"built by keyword now: drop {stale} from WAIVED_POSITIONAL"
 
 
 @pytest.mark.parametrize("check, src, lines", [
