@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable
 
+from numba import njit
 from numba.extending import overload
 
 from ancf.common.params import Param
@@ -41,6 +42,16 @@ class FrictionLaw:
         if self.name in REGISTRY:
             raise ValueError(f"friction law {self.name!r} made twice")
         REGISTRY[self.name] = self
+
+
+@njit(cache=True, inline="always")
+def along(u, G, c):
+    """sum_j u_j G[j, c]: the rate of |v| along the direction u = v / |v| (a tuple) per unit
+    of the chained coordinate c (G = dv/dcoordinates); the saturated laws' u u^T part."""
+    ug = 0.0
+    for j in range(len(u)):
+        ug += u[j] * G[j, c]
+    return ug
 
 
 def direction(v, s):

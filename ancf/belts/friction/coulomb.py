@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ancf.belts.friction.base import FrictionLaw, direction
+from ancf.belts.friction.base import FrictionLaw, along, direction
 from ancf.common.params import Param
 
 #: its one smooth branch
@@ -41,9 +41,7 @@ def coulomb_chain(branch, v, s, Fn, law, G, gF, D):
     h, q = th / s, (x * (1.0 - th * th) - th) / s
     u = direction(v, s)
     for c in range(m):
-        ug = 0.0
-        for j in range(n):
-            ug += u[j] * G[j, c]
+        ug = along(u, G, c)
         for i in range(n):
             D[i, c] = -mu * (Fn * (h * G[i, c] + q * u[i] * ug) + th * u[i] * gF[c])
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ancf.belts.friction.base import FrictionLaw, direction
+from ancf.belts.friction.base import FrictionLaw, along, direction
 from ancf.common.params import Param
 
 #: its branches (those of :func:`ancf.belts.contact3d.contact_state3d`)
@@ -44,9 +44,7 @@ def creep_rate_chain(branch, v, s, Fn, law, G, gF, D):
     g = mu * Fn / s
     u = direction(v, s)
     for c in range(m):
-        ug = 0.0
-        for j in range(n):
-            ug += u[j] * G[j, c]
+        ug = along(u, G, c)
         for i in range(n):
             D[i, c] = -mu * u[i] * gF[c] - g * (G[i, c] - u[i] * ug)
 
