@@ -44,6 +44,24 @@ Internal force (``internal_force``, ``internal_force_jacobians``) and the layer
 material (``elasticity``, ``orthotropic``, ``rotate_about_z``, from ``material``): see
 their section below; the reference is the flat plate on [0, L] x [0, W] with identity
 gradients (``reference_coordinates``).
+
+Poisson (thickness) locking and the option ``poisson``.  r_z is constant through the
+thickness, so E_33 is too and cannot take the contraction -nu/(1 - nu)(E_11 + E_22) that
+bending (linear in z) asks for: the full 3D law bends with the plane-strain modulus, stiffer
+than the plate's by (1 - nu)^2/(1 - 2 nu) (1.225 at nu = 0.3).  Chrono offers no remedy for
+this element (its ``CantileverTipLoadCheck`` allows 15 %).  ``poisson`` names the law:
+
+    "3d"            D_k over the layer's volume (default: Chrono's element, its data)
+    "plane_stress"  D0_k over the volume, with the sigma_33 = 0 condensation
+                    D0 = D - D e_3 e_3^T D / D_33 + e_3 e_3^T / C_33,   C = D^-1      (P1)
+                    (the in-plane and shear rows condensed; E_33 kept, uncoupled, with
+                    the uniaxial modulus E_z = 1/C_33, so r_z keeps its stiffness)
+    "split"         D0_k over the volume plus Dv_k = D_k - D0_k on the mid-surface z = 0
+                    only, with the weight t_k (the beams' Poisson split, ``ancf3243``,
+                    for the plate: the full 3D law on the membrane, D0 in bending)   (P2)
+
+For the isotropic law (P1) is the plane-stress block E/(1 - nu^2) [[1, nu], [nu, 1]], the
+shear moduli G and E on E_33; both remedies bend with D = E H^3/(12 (1 - nu^2)).
 """
 from __future__ import annotations
 
@@ -154,31 +172,62 @@ def gravity(L: float, W: float, H: float, rho: float, g, layers=None,
 # ----------------------------------------------------------------------------------------
 # Internal force: ``continuum3d`` (Green-Lagrange strain, Kelvin-Voigt stress
 # sigma = D_k (eps + alpha eps'), Q = int B^T sigma dV, exact K and R) with a 3D
-# (orthotropic) St Venant-Kirchhoff law per layer; no Poisson split, no shear correction.
-# D_k is the layer's full 6 x 6 stiffness (Chrono's ChMaterialShellANCF, one matrix over
-# the whole volume).  Exact Gauss rules: the integrands have degree <= 12 in xi and eta
-# and 4 in z, so 7 x 7 in-plane and 3 through-thickness points (per layer); Chrono's
-# element uses 4 x 4 x 2, its stored reference data are exact.  Chrono's
-# ComputeInternalForces returns -Q.
+# (orthotropic) St Venant-Kirchhoff law per layer; no shear correction.  By default D_k is
+# the layer's full 6 x 6 stiffness (Chrono's ChMaterialShellANCF, one matrix over the
+# whole volume); ``poisson`` selects a remedy for the Poisson locking (module docstring,
+# eqs. (P1)-(P2); ``poisson_rules``).  Exact Gauss rules: the integrands have degree
+# <= 12 in xi and eta and 4 in z, so 7 x 7 in-plane and 3 through-thickness points (per
+# layer; the split's mid-surface part 7 x 7 x 1); Chrono's element uses 4 x 4 x 2, its
+# stored reference data are exact.  Chrono's ComputeInternalForces returns -Q.
 # ----------------------------------------------------------------------------------------
 
 N_PLANE, N_THICK = 7, 3  # exact Gauss points in-plane (per direction) and per layer
+POISSON = ("3d", "plane_stress", "split")  # the values of ``poisson`` (module docstring)
 
 
-def internal_force(e, edot, L, W, H, D, alpha=0.0, *, layers=None,
+def plane_stress(D: np.ndarray) -> np.ndarray:
+    """Eq. (P1): D0 (6, 6), Pa, the sigma_33 = 0 condensation of D (6, 6, Pa, Voigt order
+    [11, 22, 33, 23, 13, 12]) with E_33 kept uncoupled at the modulus 1/C_33, C = D^-1."""
+    D = np.asarray(D, dtype=float)
+    D0 = D - np.outer(D[:, 2], D[2, :]) / D[2, 2]
+    D0[2, 2] = 1.0 / np.linalg.inv(D)[2, 2]
+    return D0
+
+
+def poisson_rules(H, D, layers=None, poisson="3d", n_plane=N_PLANE, n_thick=N_THICK):
+    """The constitutive parts [(D, points, weights)] for ``continuum3d`` of the layers
+    ``layers`` = [(t_k, D_k), ...] (or the one layer (H, D)) under the law ``poisson``:
+    "3d" D_k per layer; "plane_stress" (P1) per layer; "split" (P1) per layer plus
+    D_k - D0_k at z = 0 with the weight t_k (n_plane^2 x 1 points)."""
+    if poisson not in POISSON:
+        raise ValueError(f"poisson must be one of {POISSON} (got {poisson!r})")
+    if poisson == "3d":
+        return c3.layer_boxes(H, layers, D, n_plane, n_thick)
+    layers = [(H, D)] if layers is None else layers
+    condensed = [(t, plane_stress(Dk)) for t, Dk in layers]
+    rules = c3.layer_boxes(H, condensed, None, n_plane, n_thick)
+    if poisson == "split":
+        rules += [(np.asarray(Dk, dtype=float) - D0,
+                   *c3.gauss_box((n_plane, n_plane, 1), (-1, -1, -t / 2), (1, 1, t / 2)))
+                  for (t, Dk), (_, D0) in zip(layers, condensed)]
+    return rules
+
+
+def internal_force(e, edot, L, W, H, D, alpha=0.0, *, layers=None, poisson="3d",
                    n_plane=N_PLANE, n_thick=N_THICK) -> np.ndarray:
     """The generalised internal force Q(e, e') (48,), N (N m on gradient entries): e (48,)
     in m, edot (48,) in m/s, L, W, H in m, D (6, 6) in Pa (``elasticity``, ``orthotropic``,
     ``rotate_about_z``), alpha in s (sigma = D (eps + alpha eps')); ``layers`` =
-    [(t_k, D_k), ...] replaces (H, D).  Exact for n_plane >= 7, n_thick >= 3;
-    Chrono's ``ComputeInternalForces`` stores -Q."""
-    rules = c3.layer_boxes(H, layers, D, n_plane, n_thick)
+    [(t_k, D_k), ...] replaces (H, D); ``poisson`` the law ("3d", Chrono's, or a remedy,
+    ``poisson_rules``).  Exact for n_plane >= 7, n_thick >= 3; Chrono's
+    ``ComputeInternalForces`` stores -Q (for poisson="3d")."""
+    rules = poisson_rules(H, D, layers, poisson, n_plane, n_thick)
     return c3.internal_force(e, edot, basis(L, W), rules, alpha)
 
 
-def internal_force_jacobians(e, edot, L, W, H, D, alpha=0.0, *, layers=None,
+def internal_force_jacobians(e, edot, L, W, H, D, alpha=0.0, *, layers=None, poisson="3d",
                              n_plane=N_PLANE, n_thick=N_THICK):
     """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (48, 48), of ``internal_force``
     (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)`` and ``(H, 0, 1, 0)``."""
-    rules = c3.layer_boxes(H, layers, D, n_plane, n_thick)
+    rules = poisson_rules(H, D, layers, poisson, n_plane, n_thick)
     return c3.internal_force_jacobians(e, edot, basis(L, W), rules, alpha)

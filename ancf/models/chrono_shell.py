@@ -28,6 +28,10 @@ nodes).  A simple support leaves the in-plane positions and the fibre gradients 
 r_zz; the 3443's normal slope) free, as Navier's plate leaves the rotation about the edge
 and the in-plane motion free; ``in_plane_rigid`` then removes only the three in-plane
 rigid motions.
+
+``Plate.poisson`` names the 3443's law (``ancf3443``, eqs. (P1)-(P2)): "3d" (Chrono's, the
+default; Poisson-locked in bending by (1 - nu)^2/(1 - 2 nu)), "plane_stress" or "split"
+(the remedies).  The 3833 (r_zz free, no such locking) takes "3d" only.
 """
 from __future__ import annotations
 
@@ -54,7 +58,8 @@ EDGES = {"x0": (0, 0), "x1": (0, 1), "y0": (1, 0), "y1": (1, 1)}
 class Plate:
     """The plate: element ("3443" or "3833"), nx x ny elements, sides a (along x) and b
     (along y), thickness H, all m, the corner (x0, y0) in m, density rho (kg/m^3), Young's
-    modulus E (Pa), Poisson's ratio nu (isotropic, one layer)."""
+    modulus E (Pa), Poisson's ratio nu (isotropic, one layer); ``poisson`` the 3443's law
+    (module docstring, ``ancf3443.POISSON``; the 3833 takes "3d" only)."""
 
     element: str
     nx: int
@@ -67,10 +72,15 @@ class Plate:
     rho: float = 0.0
     x0: float = 0.0
     y0: float = 0.0
+    poisson: str = "3d"
     module: object = field(init=False, repr=False)
 
     def __post_init__(self):
         object.__setattr__(self, "module", ELEMENTS[self.element][0])
+        allowed = ancf3443.POISSON if self.element == "3443" else ("3d",)
+        if self.poisson not in allowed:
+            raise ValueError(f"poisson for the {self.element} must be one of {allowed} "
+                             f"(got {self.poisson!r})")
 
     @property
     def dims(self):
@@ -172,6 +182,10 @@ class Plate:
             return (ancf3443.elasticity(self.E, self.nu),)
         return (self.E, self.nu)
 
+    def options(self) -> dict:
+        """The keyword arguments of the module's internal force (the 3443's ``poisson``)."""
+        return {"poisson": self.poisson} if self.element == "3443" else {}
+
 
 def _scatter(plate: Plate, blocks: np.ndarray) -> sp.csr_matrix:
     """sum_k A_k^T blocks_k A_k as a sparse (ndof, ndof) matrix; blocks (nel, NDOF, NDOF)."""
@@ -185,14 +199,14 @@ def assemble(plate: Plate, e: np.ndarray, tangent: bool = True):
     """(Q (ndof,) in N, K sparse in N/m or None) of eq. (1) at the state e (m).  Each
     element sees e0_el + (A_k (e - e0)), its own reference plus its displacement, so the
     mesh offset (up to a, m) does not round off the small strains."""
-    m, dims, args = plate.module, (*plate.dims, plate.H), plate.material()
+    m, dims, args, kw = plate.module, (*plate.dims, plate.H), plate.material(), plate.options()
     u, zero = (e - plate.reference())[plate.dofs], np.zeros(m.NDOF)
     Q, blocks = np.zeros(plate.ndof), np.zeros((len(u), m.NDOF, m.NDOF)) if tangent else None
     for k, uk in enumerate(u):
         ek = plate.element_reference + uk
-        np.add.at(Q, plate.dofs[k], m.internal_force(ek, zero, *dims, *args))
+        np.add.at(Q, plate.dofs[k], m.internal_force(ek, zero, *dims, *args, **kw))
         if tangent:
-            blocks[k] = m.internal_force_jacobians(ek, zero, *dims, *args)[0]
+            blocks[k] = m.internal_force_jacobians(ek, zero, *dims, *args, **kw)[0]
     return Q, (_scatter(plate, blocks) if tangent else None)
 
 
@@ -200,7 +214,7 @@ def reference_stiffness(plate: Plate) -> sp.csr_matrix:
     """K(e0) (N/m): every element has the same reference, so one element's K_k serves all."""
     m, zero = plate.module, np.zeros(plate.module.NDOF)
     Kk = m.internal_force_jacobians(plate.element_reference, zero, *plate.dims, plate.H,
-                                    *plate.material())[0]
+                                    *plate.material(), **plate.options())[0]
     return _scatter(plate, np.broadcast_to(Kk, (len(plate.dofs),) + Kk.shape))
 
 
