@@ -24,6 +24,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from ancf.belts import friction
 from ancf.belts.contact2d import (_centreline, _may_touch, _point_jacobian, _point_law,
                                   _state_at)
 from ancf.common.leaf import leaf
@@ -103,7 +104,7 @@ def arm_terms(E, V, S0, w, o, odot, radii, omegas, prm, z, h, a, p, u, psid, wan
         for g in range(ng):
             r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
             a0, a1, v0, v1 = r0 - o[p, 0], r1 - o[p, 1], v0 - odot[p, 0], v1 - odot[p, 1]
-            z0 = _state_at(z, e, g, p, z1)
+            z0 = _state_at(friction.has_state(prm), z, e, g, p, z1)
             rho, _, Fn, vt, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, f, z0, h, z1)
             if Fn <= 0.0:
                 continue

@@ -97,21 +97,25 @@ def _may_touch(E, e, l, o0, o1, R):
 
 
 @njit(cache=True)
-def _state_at(z, e, g, p, z1):
-    """The friction state z0 (m) at point g of element e on pulley p (0 for a stateless
-    law, whose z stays 0); its trial z1 (1,) reset."""
+def _state_at(stateful, z, e, g, p, z1):
+    """The friction state z0 (m) at point g of element e on pulley p, its trial z1 (1,)
+    reset; 0 for a stateless law (``stateful`` False: z is neither read nor written)."""
+    if not stateful:
+        return 0.0
     z1[0] = 0.0
     return z[0, e, g, p]
 
 
 @njit(cache=True)
-def _keep_trial(z, e, g, p, z1):
-    z[1, e, g, p] = z1[0]
+def _keep_trial(stateful, z, e, g, p, z1):
+    if stateful:
+        z[1, e, g, p] = z1[0]
 
 
 @njit(cache=True)
-def _clear_trials(z, e, p):
-    z[1, e, :, p] = 0.0
+def _clear_trials(stateful, z, e, p):
+    if stateful:
+        z[1, e, :, p] = 0.0
 
 
 @njit(cache=True)
@@ -120,7 +124,7 @@ def _point_law(a0, a1, v0, v1, R, om, prm, f, z0, h, z1):
     state z0 (m) at the last converged step and the step h (s).  Returns |r - o|, d,
     F_n, v_t and the friction law's branch (0 out of contact or clamped); fills
     f = [phi] (1,) and, for a law with a state in contact, z1 = [its trial state] (1,)
-    (a stateless law leaves z1 as it is: :func:`ancf.belts.friction.state_force`)."""
+    (a stateless law: :func:`ancf.belts.friction.force`, z0 and z1 unused)."""
     kp, cp = prm.k_p, prm.c_p
     rho = np.hypot(a0, a1)
     n0, n1 = a0 / rho, a1 / rho
@@ -130,7 +134,9 @@ def _point_law(a0, a1, v0, v1, R, om, prm, f, z0, h, z1):
     Fn = kp * d - cp * (n0 * v0 + n1 * v1) if d >= 0.0 else 0.0
     if Fn <= 0.0:
         return rho, d, 0.0, vt, 0
-    return rho, d, Fn, vt, friction.state_force((vt,), abs(vt), Fn, prm, f, (z0,), h, z1)
+    if friction.has_state(prm):
+        return rho, d, Fn, vt, friction.state_force((vt,), abs(vt), Fn, prm, f, (z0,), h, z1)
+    return rho, d, Fn, vt, friction.force((vt,), abs(vt), Fn, prm, f)
 
 
 @njit(cache=True)
@@ -145,7 +151,10 @@ def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D
     vn, vtt = n0 * v0 + n1 * v1, t0 * v0 + t1 * v1
     gF = (-kp * n0 - cp * vtt / rho * t0, -kp * n1 - cp * vtt / rho * t1, -cp * n0, -cp * n1, 0.0)
     G[0, 0], G[0, 1], G[0, 2], G[0, 3], G[0, 4] = -vn / rho * t0, -vn / rho * t1, t0, t1, -R
-    friction.state_chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi, (z0,), h)
+    if friction.has_state(prm):
+        friction.state_chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi, (z0,), h)
+    else:
+        friction.chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi)
     n, t = (n0, n1), (t0, t1)
     for c in range(5):
         gphi = Dphi[0, c]
@@ -217,7 +226,7 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
     nel, ng = w.shape
     D, Dphi, G = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5))
     f, z1 = np.zeros(1), np.zeros(1)
-    pairs = 0
+    stateful, pairs = friction.has_state(prm), 0
     for e in range(nel):
         l = 0.0
         for g in range(ng):
@@ -225,17 +234,17 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
         for p in range(radii.shape[0]):
             o0, o1, R = centres[p, 0], centres[p, 1], radii[p]
             if not _may_touch(E, e, l, o0, o1, R):
-                _clear_trials(z, e, p)
+                _clear_trials(stateful, z, e, p)
                 continue
             pairs += 1
             for g in range(ng):
                 r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
                 a0, a1 = r0 - o0, r1 - o1
                 v0, v1 = v0 - odot[p, 0], v1 - odot[p, 1]
-                z0 = _state_at(z, e, g, p, z1)
+                z0 = _state_at(stateful, z, e, g, p, z1)
                 rho, _, Fn, vt, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, f, z0,
                                                     h, z1)
-                _keep_trial(z, e, g, p, z1)
+                _keep_trial(stateful, z, e, g, p, z1)
                 if Fn <= 0.0:
                     continue
                 ww, phi = w[e, g], f[0]
