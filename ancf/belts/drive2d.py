@@ -85,8 +85,10 @@ class Rig:
     the time (s, an array): the angular velocity (rad/s) of a pulley turned by it, the
     load torque T_a (N m) of a free one, and the tensioners' ``arms`` (na, ARM_COLUMNS)
     (:mod:`ancf.belts.arm2d`; their angles are free coordinates too, with an inertia and
-    a damping) and how each free coordinate's load acts, ``loads`` (k,)
-    (:func:`ancf.belts.pulleys.load_records`; None: every load signed)."""
+    a damping), how each free coordinate's load acts, ``loads`` (k,)
+    (:func:`ancf.belts.pulleys.load_records`; None: every load signed) and the prescribed
+    centre ``motions`` (:class:`ancf.belts.pulleys.CentreMotion`, at most one per pulley;
+    a tensioner's carries its pivot)."""
 
     names: tuple
     centres: np.ndarray
@@ -97,6 +99,7 @@ class Rig:
     laws: tuple[Callable, ...]
     arms: np.ndarray = field(default_factory=lambda: np.zeros((0, ARM_COLUMNS)))
     loads: np.ndarray | None = None  # (k,) LOAD records (ancf.belts.pulleys; None: signed)
+    motions: tuple = ()  # prescribed centre motions (ancf.belts.pulleys.CentreMotion)
 
 
 def thesis_rig(spec: BeltSpec, speed, torque, dim: int = 2) -> Rig:
@@ -135,20 +138,54 @@ class PulleyDrive:
     def radii(self) -> np.ndarray:
         return self.rig.radii
 
-    def moved(self, x, v) -> tuple:
+    def moved(self, x, v, t: float = 0.0) -> tuple:
         """The pulley centres (np, 2) m and their velocities (np, 2) m/s at the system
-        state x, v: a tensioner's on its arm."""
+        state x, v and time t (s): moved by their prescribed motions, a tensioner's on its
+        arm (its pivot moved alike)."""
         arms = self.rig.arms
-        o, odot = self.centres.copy(), np.zeros_like(self.centres)
+        o, odot = self.centre_motion(t)
         for a in range(arms.shape[0]):
             j = self.n + int(arms[a, COORD])
-            arm_geometry(arms, a, float(x[j]), float(v[j]), o, odot, np.zeros((arms.shape[0], 2)))
+            p = arm_geometry(arms, a, float(x[j]), float(v[j]), o, odot,
+                             np.zeros((arms.shape[0], 2)))
+            for q, du, dv in self._displacements(t):
+                if q == p:
+                    o[p] += du
+                    odot[p] += dv
+        return o, odot
+
+    def _displacements(self, t: float) -> list:
+        """(pulley, displacement (dim,) m, velocity (dim,) m/s) of each centre motion at
+        time t (s)."""
+        law, npul = self.laws(np.array([t]))[:, 0], self.radii.size
+        return [(m.pulley, law[npul + 2 * i] * m.direction, law[npul + 2 * i + 1] * m.direction)
+                for i, m in enumerate(self.rig.motions)]
+
+    def centre_motion(self, t: float) -> tuple:
+        """The pulley centres (np, dim) m at time t (s) and their velocities (np, dim) m/s,
+        moved by their prescribed motions (the march's
+        :func:`ancf.belts.forces.moved_centres`)."""
+        o, odot = self.centres.copy(), np.zeros_like(self.centres)
+        for p, du, dv in self._displacements(t):
+            o[p] += du
+            odot[p] = dv
         return o, odot
 
     def laws(self, t) -> np.ndarray:
-        """The pulley laws (np, len(t)) of the march (:class:`Rig`)."""
+        """The pulley laws (np + 2 m, len(t)) of the march (:class:`Rig`): one per pulley,
+        then each of the m centre motions' distance u (m) and its rate (m/s)."""
         t = np.atleast_1d(np.asarray(t, dtype=float))
-        return np.stack([law(t) for law in self.rig.laws])
+        rows = [law(t) for law in self.rig.laws]
+        for m in self.rig.motions:
+            rows.extend(np.broadcast_to(r, t.shape) for r in m.law(t))
+        return np.stack(rows)
+
+    def motion_arrays(self) -> tuple:
+        """The kernels' ``moving`` (m,) int and ``shift`` (m, dim) of the rig's motions."""
+        dim = self.centres.shape[1]
+        moving = np.array([m.pulley for m in self.rig.motions], dtype=np.int64)
+        shift = np.array([m.direction for m in self.rig.motions], dtype=float).reshape(-1, dim)
+        return moving, shift
 
     def omegas(self, t: float, v) -> np.ndarray:
         """Every pulley's angular velocity (np,) at time t (s) and system velocities v,
@@ -265,9 +302,10 @@ class BeltDrive(PulleyDrive):
     def kernel(self) -> Drive2D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""
         r = self.rig
+        moving, shift = self.motion_arrays()
         return Drive2D(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
                        strain_damping=self.strain_damping, S0=self.S0, w=self.w,
                        centres=r.centres, radii=r.radii, prm=self.prm, free=r.free,
                        inertia=r.inertia, damping=r.damping, weight=self.weight, arms=r.arms,
                        z=self.z, h=self.h, last=np.zeros((2, r.radii.size)),
-                       damping_jacobian=self.damping_jacobian)
+                       moving=moving, shift=shift, damping_jacobian=self.damping_jacobian)

@@ -23,12 +23,14 @@ Coordinates: the belt's nodal coordinates in the numbering of a
 mass matrix is constant: band storage ``Mb`` for the belt, ``inertia`` for the pulleys.
 The thesis drive's pulleys are :func:`ancf.belts.drive2d.thesis_rig`'s: pulley 0 the
 driver (left), pulley 1 the driven one; the driver moves by u(t) along ``shift`` = -e_x
-(away from the driven pulley: it tightens the belt).  The march's pulley laws are one
-row per pulley followed by u and its rate (zero but for the thesis drive's u0).
+(away from the driven pulley: it tightens the belt), a prescribed centre motion
+(:class:`ancf.belts.pulleys.CentreMotion`) like any drive file's pulley's.  The march's
+pulley laws are one row per pulley followed by each centre motion's u and its rate
+(:meth:`ancf.belts.drive2d.PulleyDrive.laws`).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import scipy.sparse as sp
@@ -40,7 +42,7 @@ from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_sta
 from ancf.belts.forces import Drive3D
 from ancf.elements.plate36 import Plate36
 from ancf.core.pattern import ReducedPattern, scatter
-from ancf.belts.pulleys import SPEED_LAWS, T0, TORQUE_LAWS, driver_shift, law
+from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS, CentreMotion, driver_shift, law
 
 PER_NODE = 9  # r, r_x, r_y, 3 components each
 SHIFT = np.array([-1.0, 0.0, 0.0])  # direction the driver is moved in (Eq. 4.46)
@@ -125,12 +127,11 @@ class Belt3DDrive(PulleyDrive):
                              "carried by the 2D drive only; allowed in 3D: "
                              + ", ".join(friction.LAWS))
         self.prm = friction.contact_record(s.k_p, s.c_p, friction_law, *values)
-        self.shift = (0.0, T0)  # the driver's displacement u0, m, reached at t0, s
         if rig is None:
             self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
             self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
-            rig = thesis_rig(s, self.omega_driver, self.torque, dim=3)
-            self.shift = (s.u0, s.t0)
+            rig = replace(thesis_rig(s, self.omega_driver, self.torque, dim=3),
+                          motions=(CentreMotion(pulley=0, direction=SHIFT, law=self.shift),))
         self.rig = rig
         self.axes = np.tile(AXIS, (rig.radii.size, 1))
 
@@ -150,18 +151,15 @@ class Belt3DDrive(PulleyDrive):
     def torque(self, t):
         return self.torque_law(t, self.spec.Ta_max, self.spec.t0, self.spec.Ta_t1)
 
-    def laws(self, t) -> np.ndarray:
-        """Pulley laws (np + 2, len(t)): one per pulley (a driver's omega, rad/s, a free
-        pulley's T_a, N m), then the driver's shift u (m) and its rate (m/s)."""
-        t = np.atleast_1d(np.asarray(t, dtype=float))
-        u, du = driver_shift(t, *self.shift)
-        return np.vstack([super().laws(t), u, du])
+    def shift(self, t) -> tuple:
+        """The thesis driver's displacement u (m) along :data:`SHIFT` and its rate (m/s) at
+        t (s, an array): Eq. 4.46, u0 reached at t0."""
+        return driver_shift(t, self.spec.u0, self.spec.t0)
 
     def pulley_centres(self, t: float) -> np.ndarray:
-        """Pulley centres (np, 3) at time t, m (the driver moved by Eq. 4.46)."""
-        c = self.centres.copy()
-        c[0] += float(driver_shift(t, *self.shift)[0]) * SHIFT
-        return c
+        """Pulley centres (np, 3) at time t, m (moved by their prescribed motions: the
+        thesis driver's Eq. 4.46)."""
+        return self.centre_motion(t)[0]
 
     def element_coords(self, q) -> np.ndarray:
         """(nel, 12, 3) element coordinates from global belt coordinates q."""
@@ -182,8 +180,10 @@ class Belt3DDrive(PulleyDrive):
     def kernel(self) -> Drive3D:
         """The drive's compiled data (:mod:`ancf.belts.forces`)."""
         r = self.rig
+        moving, shift = self.motion_arrays()
         return Drive3D(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
                        S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
                        free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,
-                       arms=r.arms, z=np.zeros((2, 0, 0, 0)), h=np.zeros(1), last=np.zeros((2, r.radii.size)),
-                       axes=self.axes, shift=SHIFT.copy())
+                       arms=r.arms, z=np.zeros((2, 0, 0, 0)), h=np.zeros(1),
+                       last=np.zeros((2, r.radii.size)), axes=self.axes, moving=moving,
+                       shift=shift)

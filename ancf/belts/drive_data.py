@@ -43,6 +43,11 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   (``inertia``, ``damping``), ``tensioner`` (an idler on an arm turning about ``pivot``:
   the arm's ``arm_inertia`` about the pivot, torsion spring ``arm_stiffness`` and
   ``arm_preload``, ``arm_damping``; the arm's length is |centre - pivot|) and ``fixed``.
+  Any pulley may have its centre moved by a prescribed law (:data:`MOTION`; the thesis's
+  Model 1 moves its driver so, Eq. 4.46): ``centre_shift`` [dx, dy] (m, default [0, 0]:
+  none), reached at ``centre_shift_time`` (s, default 0.05) by the ``centre_motion`` law
+  (:data:`ancf.belts.pulleys.CENTRE_LAWS`: ``ramp``, u = u0 t / t0 up to t0); a
+  tensioner's whole arm (its pivot) is carried so.
   Angular velocities are counter-clockwise positive; a load torque T_a resists the
   pulley's running direction (Eq. 3.26 with -T_a; counter-clockwise on the belt's inner
   side, clockwise on its back); a table is ``[[t, value], ...]``, t increasing,
@@ -73,7 +78,8 @@ from ancf.belts.contact2d import SUPPORTED_POINTS
 from ancf.belts.contact3d import SUPPORTED_RULES
 from ancf.belts.forces import DAMPING_JACOBIANS
 from ancf.belts.path import PulleyPath
-from ancf.belts.pulleys import FILE_SPEED_LAWS, FILE_TORQUE_LAWS, LOAD_LAWS
+from ancf.belts.pulleys import (CENTRE_LAWS, FILE_SPEED_LAWS, FILE_TORQUE_LAWS, LOAD_LAWS, T0,
+                                CentreMotion)
 from ancf.common.inputs import MAX_STEPS
 from ancf.common.params import InputError, Param
 from ancf.solvers.alpha_march import ACCEPT, REFRESH, REFRESH_RATIO
@@ -284,6 +290,15 @@ PULLEY = _keys(
     Param("side", 1, int, doc="+1: the belt's inner side on it, -1: its back", choices=(1, -1)),
     Param("law", REQUIRED, str, doc="how the pulley turns", choices=LAWS),
 )
+#: the keys of a pulley centre's prescribed motion, any pulley's (a tensioner's: its pivot's)
+MOTION = _keys(
+    Vector("centre_shift", (0.0, 0.0), "m", "the centre's displacement at the end of its "
+           "motion ([0, 0]: it stays)"),
+    Param("centre_shift_time", T0, float, "s", "when the centre reaches its shift (Eq. 4.46's "
+          "t0)", lo=0, lo_open=True, hi=100),
+    Param("centre_motion", "ramp", str, doc="the centre's motion law "
+          "(ancf.belts.pulleys.CENTRE_LAWS; 'ramp': Eq. 4.46)", choices=tuple(CENTRE_LAWS)),
+)
 #: every key a pulley law or its time law may take (beyond PULLEY's)
 LAW_PARAMS = {**{k.name: k for role in ROLES.values() for k in role.keys}, **TIME_KEYS}
 #: the pulley laws each element's drive carries (a tensioner's arm: the 2D belt's only)
@@ -396,3 +411,21 @@ def time_law(pulley: PulleySpec) -> Callable:
     """The pulley's time law (t an array of s): a prescribed pulley's omega(t) (rad/s), a
     driven one's load torque T_a(t) (N m), else zero (:meth:`PulleyRole.time_law`)."""
     return ROLES[pulley.law].time_law(pulley.params)
+
+
+def centre_motion(pulley: PulleySpec, index: int, dim: int = 2) -> CentreMotion | None:
+    """The prescribed motion of pulley ``index``'s centre (direction in ``dim``
+    dimensions, the x-y plane), or None if its ``centre_shift`` is zero."""
+    shift = pulley.params["centre_shift"]
+    distance = math.hypot(*shift)
+    if distance == 0:
+        return None
+    direction = np.zeros(dim)
+    direction[:2] = [x / distance for x in shift]
+    law = CENTRE_LAWS[pulley.params["centre_motion"]]
+    return CentreMotion(pulley=index, direction=direction, law=law.of(distance, pulley.params))
+
+
+def shifted(pulley: PulleySpec) -> tuple:
+    """The pulley's centre at the end of its prescribed motion, m."""
+    return tuple(c + d for c, d in zip(pulley.centre, pulley.params["centre_shift"]))

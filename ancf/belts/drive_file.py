@@ -11,7 +11,8 @@ an :class:`InputError` of one line naming the file key and its allowed range: a 
 that does not exist or is no TOML (with the line tomllib gives), an unknown key, a
 missing one, a value out of range, an unknown law or one missing a parameter, and a
 layout the belt cannot be laid on (overlapping pulleys, a pulley it cannot wrap, a belt
-shorter than half its path or longer than the path), and a pulley law or friction law the
+shorter than half its path or longer than the path; the same at every pulley centre's
+``centre_shift``), and a pulley law or friction law the
 belt's element does not carry (``plate36``: no tensioner, no law with a state).
 """
 from __future__ import annotations
@@ -181,7 +182,7 @@ def _law_keys(table: dict, prefix: str) -> tuple:
         choice = replace(dd.LAW_PARAMS[sub], name=prefix + sub).parse(table[sub])
         names += [k for k in dd.ROLES[name].laws[choice].keys if k not in names]
     keys = {k: dd.PULLEY.get(k) or dd.LAW_PARAMS[k] for k in names}
-    return name, keys, f" (law {name!r}: {', '.join(names[len(dd.PULLEY):])})"
+    return name, {**keys, **dd.MOTION}, f" (law {name!r}: {', '.join(names[len(dd.PULLEY):])})"
 
 
 def _pulley_spec(i: int, table, element: str) -> dd.PulleySpec:
@@ -225,6 +226,26 @@ def _path(pulleys: tuple, offset: float) -> PulleyPath:
     except ValueError as exc:
         at = f" (the belt's centreline at radius + belt.contact_offset = {offset:g} m)"
         raise InputError(f"pulleys: {exc}{at if offset else ''}") from None
+
+
+def _moved(pulleys: tuple, belt: dict) -> None:
+    """The layout with every centre at the end of its prescribed motion: a path the belt
+    can be laid on, at most twice the belt's length (as :func:`_length`)."""
+    keys = [f"pulleys.{i}.centre_shift = {list(p.params['centre_shift'])!r}"
+            for i, p in enumerate(pulleys) if any(p.params["centre_shift"])]
+    if not keys:
+        return
+    moved = tuple(replace(p, centre=dd.shifted(p)) for p in pulleys)
+    try:
+        P = _path(moved, belt["contact_offset"]).length
+    except InputError as exc:
+        raise InputError(f"{', '.join(keys)}: the shifted layout cannot be wrapped "
+                         f"({str(exc).removeprefix('pulleys: ')}); allowed: shifts that keep "
+                         "the pulleys apart and the belt wrapping each") from None
+    if belt["length"] < 0.5 * P:
+        raise InputError(f"{', '.join(keys)}: the shifted path ({P:.6g} m) is more than twice "
+                         f"the belt ({belt['length']:.6g} m); allowed: shifts that keep the "
+                         f"path within {2 * belt['length']:.6g} m")
 
 
 def _length(belt: dict, P: float) -> None:
@@ -279,6 +300,7 @@ def describe(data: dict) -> dd.DriveDescription:
     pulleys = _pulleys(data, element)
     path = _path(pulleys, belt["contact_offset"])
     _length(belt, path.length)
+    _moved(pulleys, belt)
     contact = _values(_table(data, "contact"), "contact.", dd.CONTACT_KEYS[element],
                       why=f" (element {element!r})")
     return dd.DriveDescription(belt, pulleys, _friction(data, element), contact, _run(data),

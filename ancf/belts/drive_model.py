@@ -10,7 +10,10 @@ the centreline at that radius.  Each pulley's law becomes a row of the
 zero, ``driven`` a free pulley with its inertia, damping and load torque law, ``idler``
 a free one without load, ``tensioner`` a free one without load on an arm whose angle is
 one more free coordinate (after the pulleys', :mod:`ancf.belts.arm2d`); how each free
-pulley's load acts (``load_acts``) is its row of the rig's ``loads``.  A pulley on the
+pulley's load acts (``load_acts``) is its row of the rig's ``loads``; a pulley's
+``centre_shift`` (any law's) is one of the rig's ``motions``
+(:func:`ancf.belts.drive_data.centre_motion`), its centre (a tensioner's pivot) moved in
+the contact as the march's :func:`ancf.belts.forces.moved_centres`.  A pulley on the
 belt's back (``side = -1``) is contact like any other.  The belt's strain-rate damping
 (``damping_axial`` dEA, ``damping_bending`` dEI) acts on its axial and bending strain
 rates (:func:`ancf.elements.dufva2d.damping_forces`).  The element takes the file's
@@ -33,7 +36,8 @@ from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
 from ancf.belts.drive3d import Belt3DDrive, Plate3DSpec
 from ancf.belts.friction import ALL_PARAMS
 from ancf.belts.pulleys import load_records
-from ancf.belts.drive_data import ROLES, DriveDescription, element_modulus, laid_factor
+from ancf.belts.drive_data import (ROLES, DriveDescription, centre_motion, element_modulus,
+                                   laid_factor)
 
 
 def _arms(d: DriveDescription, free) -> np.ndarray:
@@ -73,7 +77,9 @@ def rig(d: DriveDescription, dim: int = 2) -> Rig:
                arms=_arms(d, free), loads=load_records(
                    [(p.params.get("load_acts"), i, p.params)
                     for i, (p, r) in enumerate(zip(d.pulleys, roles)) if r.free]
-                   + [(None, -1, {})] * len(arms)))
+                   + [(None, -1, {})] * len(arms)),
+               motions=tuple(m for m in (centre_motion(p, i, dim)
+                                         for i, p in enumerate(d.pulleys)) if m is not None))
 
 
 def _friction(d: DriveDescription) -> tuple:

@@ -25,8 +25,10 @@ column and corner entries with its pulley's coordinate.  It returns the number o
 
 ``laws`` are the pulley laws at the evaluation time, one row per pulley: a pulley
 turned by its law (``free[p] = -1``) its angular velocity (rad/s), a free one its load
-torque T_a (N m); in 3D followed by pulley 0's displacement u (m) and its rate (m/s)
-along the drive's ``shift`` direction (the thesis driver's, Eq. 4.46; else 0).
+torque T_a (N m); then, for the i-th pulley of ``moving`` (its centre moved by a prescribed
+law, :class:`ancf.belts.pulleys.CentreMotion`), the displacement u (m) and its rate (m/s)
+along its unit direction ``shift[i]`` (the thesis driver's, Eq. 4.46), rows np + 2 i and
+np + 2 i + 1 (:func:`moved_centres`; a tensioner's pivot is carried so).
 """
 from __future__ import annotations
 
@@ -71,6 +73,8 @@ class Drive2D(NamedTuple):
     h: np.ndarray        # (1,) the step the trial state is of, s (the march's)
     last: np.ndarray     # (2, np) work: the pulley speeds (rad/s) and the belt's moments on
     #                      them T_c,p (N m) at the last evaluation
+    moving: np.ndarray   # (m,) int: the pulleys whose centres move by a prescribed law
+    shift: np.ndarray    # (m, 2) their unit directions (module docstring)
     damping_jacobian: int = 0  # the damping's part of the iteration matrix: an index of
     #                      DAMPING_JACOBIANS (0 exact; 1 rate: dQ_d/dz' only)
 
@@ -95,7 +99,8 @@ class Drive3D(NamedTuple):
     h: np.ndarray        # (1,)
     last: np.ndarray     # (2, np)
     axes: np.ndarray     # pulley axes (np, 3)
-    shift: np.ndarray    # direction pulley 0 (the thesis's driver) is moved in (3,)
+    moving: np.ndarray   # (m,) int: the pulleys whose centres move (the thesis's driver)
+    shift: np.ndarray    # (m, 3) their unit directions (Eq. 4.46: the driver's -e_x)
 
 
 def drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
@@ -103,6 +108,30 @@ def drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
     with coordinates E and velocities V and the arm outputs ``arm`` (:func:`_arm_arrays`)
     at the system state x, v; returns the pairs evaluated."""
     raise NotImplementedError("resolved at compile time by the type of drive")
+
+
+@njit(cache=True)
+def moved_centres(drive, laws):
+    """The pulley centres (np, dim) m and their velocities (np, dim) m/s at the pulley
+    laws ``laws``: each pulley of ``drive.moving`` moved by its law along its direction."""
+    o, odot = drive.centres.copy(), np.zeros_like(drive.centres)
+    npul = drive.radii.shape[0]
+    for i in range(drive.moving.size):
+        p = drive.moving[i]
+        o[p] += laws[npul + 2 * i] * drive.shift[i]
+        odot[p] = laws[npul + 2 * i + 1] * drive.shift[i]
+    return o, odot
+
+
+@njit(cache=True)
+def _carry(drive, laws, p, o, odot):
+    """Add pulley p's prescribed motion to o[p], odot[p] (a tensioner's pulley placed on its
+    arm: the pivot moves so)."""
+    npul = drive.radii.shape[0]
+    for i in range(drive.moving.size):
+        if drive.moving[i] == p:
+            o[p] += laws[npul + 2 * i] * drive.shift[i]
+            odot[p] += laws[npul + 2 * i + 1] * drive.shift[i]
 
 
 @njit(cache=True)
@@ -121,16 +150,19 @@ def _belt_damping(E, V, drive, want_J, g, K, Cv):
 
 @implements(drive_forces, Drive2D)
 def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
-    """The tensioners' pulleys at their arms' angles (:mod:`ancf.belts.arm2d`); the belt's
+    """The centres moved by their laws (:func:`moved_centres`), the tensioners' pulleys at
+    their arms' angles (:mod:`ancf.belts.arm2d`, their pivots moved alike); the belt's
     strain-rate damping only if it has any."""
     dufva2d.gradient_tangent(E, drive.element, want_J, g, K)
     if drive.strain_damping[0] != 0.0 or drive.strain_damping[1] != 0.0:
         _belt_damping(E, V, drive, want_J, g, K, c[2])
     arms, n = drive.arms, x.size - drive.inertia.size
-    o, odot, u = drive.centres.copy(), np.zeros_like(drive.centres), np.zeros((arms.shape[0], 2))
+    o, odot = moved_centres(drive, laws)
+    u = np.zeros((arms.shape[0], 2))
     for a in range(arms.shape[0]):
         j = n + int(arms[a, COORD])
         p = arm_geometry(arms, a, x[j], v[j], o, odot, u)
+        _carry(drive, laws, p, o, odot)
         arm_terms(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas, drive.prm, drive.z,
                   drive.h[0], a, p, u, v[j], want_J, arm)
     return contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas,
@@ -139,13 +171,9 @@ def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
 
 @implements(drive_forces, Drive3D)
 def _forces3d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
-    """Pulley 0's centre is moved by laws[np] along ``shift`` (at the rate laws[np + 1]),
-    np pulleys."""
+    """The centres moved by their laws (:func:`moved_centres`)."""
     plate36.gradient_tangent(E, drive.element, want_J, g, K)
-    o, odot = drive.centres.copy(), np.zeros_like(drive.centres)
-    npul = drive.radii.shape[0]
-    o[0] += laws[npul] * drive.shift
-    odot[0] = laws[npul + 1] * drive.shift
+    o, odot = moved_centres(drive, laws)
     return contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas, odot,
                             drive.prm, want_J, *c)
 

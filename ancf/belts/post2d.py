@@ -82,7 +82,7 @@ def sample(drive, x, v, t: float, npts: int = 8, state=None) -> BeltSample:
     E, V = q[dm].reshape(-1, 6, 2), qd[dm].reshape(-1, 6, 2)
     xi, S0 = _shapes(drive, npts)
     omegas = drive.omegas(t, v)
-    o, odot = drive.moved(x, v)
+    o, odot = drive.moved(x, v, t)
     z, h = friction_state(drive, xi, state)
     r, d, Fn, phi, vt = contact_state_stepped(E, V, S0, o, odot, drive.radii, omegas, drive.prm,
                                               z, h)

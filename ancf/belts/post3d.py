@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ancf.belts.drive3d import SHIFT
 from ancf.belts.post2d import _span_coords, spans
 from ancf.belts.strains import DEFAULT_POINTS, measures
 from ancf.belts.contact3d import contact_forces3d, contact_state3d
@@ -103,11 +102,8 @@ def span_tension(drive, smp: dict, span) -> float:
 def _contact_args(drive, x, v, t: float) -> tuple:
     """Arguments of the 3D contact kernels at state (x, v), time t."""
     E, V = drive.element_coords(drive.belt(x)), drive.element_coords(drive.belt(v))
-    npul = drive.radii.size
-    law = drive.laws(np.array([t]))[:, 0]
-    odot = np.zeros((npul, 3))
-    odot[0] = law[npul + 1] * SHIFT
-    return E, V, drive.pulley_centres(t), drive.omegas(t, v), odot
+    o, odot = drive.centre_motion(t)
+    return E, V, o, drive.omegas(t, v), odot
 
 
 def pulley_moments(drive, x, v, t: float) -> np.ndarray:

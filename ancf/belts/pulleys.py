@@ -27,6 +27,10 @@ laws of :data:`FILE_SPEED_LAWS` and :data:`FILE_TORQUE_LAWS` (a table, a constan
 new law is one function and one TimeLaw here; tests/belts/test_pulley_laws.py holds
 every law of SPEED_LAWS and TORQUE_LAWS to that contract.
 
+A pulley's centre may move by a prescribed law (a :class:`CentreMotion`: a direction and a
+:class:`MotionLaw` of :data:`CENTRE_LAWS`, the distance u(t) and its rate; ``ramp`` is
+Eq. 4.46's u = u0 t / t0 up to t0), as the thesis's Model 1 moves its driver.
+
 How a free pulley's load torque acts is a :class:`LoadLaw` of :data:`LOAD_LAWS` (a drive
 file's ``load_acts``): ``signed``, T_a(t) as given, resisting counter-clockwise rotation
 whatever the pulley does (Eq. 3.26; a load above what the belt carries turns the pulley
@@ -131,6 +135,39 @@ def driver_shift(t, u0: float, t0: float = T0) -> tuple:
     rate (m/s)."""
     t = np.asarray(t, dtype=float)
     return u0 * np.clip(t / t0, 0.0, 1.0), np.where(t < t0, u0 / t0, 0.0)
+
+
+@dataclass(frozen=True, kw_only=True)
+class MotionLaw:
+    """A law of a pulley centre's prescribed motion along a fixed direction: ``name``,
+    ``keys`` the drive-file keys of its parameters in the order ``value(t, distance,
+    *parameters)`` takes them after the final distance (m), and ``value`` giving the
+    distance u (m) and its rate (m/s) at t (s, an array)."""
+
+    name: str
+    keys: tuple[str, ...]
+    value: Callable
+
+    def of(self, distance: float, params: dict) -> Callable:
+        """The law as a function of t alone: (u, du/dt), its parameters taken by key from
+        ``params`` (a pulley's resolved keys)."""
+        args = tuple(params[k] for k in self.keys)
+        return lambda t: self.value(t, distance, *args)
+
+
+@dataclass(frozen=True, kw_only=True)
+class CentreMotion:
+    """Pulley ``pulley``'s centre moved by ``law(t)`` = (u m, du/dt m/s) along the unit
+    ``direction`` (dim,): centre c + u direction, velocity du/dt direction."""
+
+    pulley: int
+    direction: np.ndarray
+    law: Callable
+
+
+#: centre motion laws by name (a drive file's ``centre_motion``): (u, du/dt)(t, distance,
+#: t0), m and m/s
+CENTRE_LAWS = _by_name(MotionLaw(name="ramp", keys=("centre_shift_time",), value=driver_shift))
 
 
 @dataclass(frozen=True, kw_only=True)

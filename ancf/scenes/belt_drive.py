@@ -73,7 +73,7 @@ def pulley_moments(drive, x, v, t: float, state=None) -> np.ndarray:
     V = drive.element_coords(drive.belt(v))
     npul, nel = drive.radii.size, E.shape[0]
     T = np.zeros(npul)
-    o, odot = drive.moved(x, v)
+    o, odot = drive.moved(x, v, t)
     z, h = np.zeros((2, *drive.w.shape, npul)), 0.0  # a stateless law's: 0
     if state is not None:
         z[0], h = state
