@@ -24,9 +24,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ancf.belts import friction
 from ancf.belts.contact2d import (_centreline, _may_touch, _point_jacobian, _point_law,
-                                  _state_at)
+                                  _state_at, _trial_storage)
 from ancf.common.leaf import leaf
 
 #: columns of an arm row (:func:`arm_row`), and their number
@@ -92,11 +91,11 @@ def arm_terms(E, V, S0, w, o, odot, radii, omegas, prm, z, h, a, p, u, psid, wan
     """Add arm a's terms (pulley p, u (na, 2) from :func:`arm_geometry`, psid its rate,
     rad/s) to out = (A (na,) N m, dA/de and dA/dedot (na, nel, 12), dA/domega_p (na,),
     dA/d(psi, psi') (na, 2), dQ/d(psi, psi') (na, 2, nel, 12), dT_p/d(psi, psi') (na, 2)).
-    E, V, S0, w, o, odot, radii, omegas, prm, z (read: z[0]), h as
+    E, V, S0, w, o, odot, radii, omegas, prm, z (read: z[0]; or None), h as
     :func:`ancf.belts.contact2d.contact_forces_moving`."""
     nel, ng = w.shape
     D, Dphi, G, cols = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5)), np.zeros((3, 2))
-    f, z1 = np.zeros(1), np.zeros(1)
+    f, z1 = np.zeros(1), _trial_storage(z)
     u0, u1, R = u[a, 0], u[a, 1], radii[p]
     for e in range(nel):
         if not _may_touch(E, e, np.sum(w[e]), o[p, 0], o[p, 1], R):
@@ -104,7 +103,7 @@ def arm_terms(E, V, S0, w, o, odot, radii, omegas, prm, z, h, a, p, u, psid, wan
         for g in range(ng):
             r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
             a0, a1, v0, v1 = r0 - o[p, 0], r1 - o[p, 1], v0 - odot[p, 0], v1 - odot[p, 1]
-            z0 = _state_at(friction.has_state(prm), z, e, g, p, z1)
+            z0 = _state_at(z, e, g, p, z1)
             rho, _, Fn, vt, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, f, z0, h, z1)
             if Fn <= 0.0:
                 continue

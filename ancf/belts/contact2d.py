@@ -33,8 +33,8 @@ the pulley is omega R, as written in Eq 3.25 (R, not |r - o|).  A law with a sta
 bristle law) steps its deflection z at every Gauss point on every pulley over the
 march's step h: the kernel reads z[0] (the last converged step's) and writes the trial
 z[1] (0 out of contact), which the march accepts on convergence
-(:mod:`ancf.belts.system`); a stateless law's z stays 0 (one compiled kernel for every
-law).
+(:mod:`ancf.belts.system`); a drive without a state passes z = None and gets the kernel
+compiled without it.
 
 Generalised force (Eq 3.27) and pulley moment (Eq 3.26 integrand; the normal force
 passes through the centre and has no moment), Gauss quadrature over each element:
@@ -97,24 +97,33 @@ def _may_touch(E, e, l, o0, o1, R):
 
 
 @njit(cache=True)
-def _state_at(stateful, z, e, g, p, z1):
-    """The friction state z0 (m) at point g of element e on pulley p, its trial z1 (1,)
-    reset; 0 for a stateless law (``stateful`` False: z is neither read nor written)."""
-    if not stateful:
+def _trial_storage(z):
+    """The trial state's storage (1,) at a point; None for a drive without a friction
+    state (z None: the kernels are then compiled without it, the stateless laws' code)."""
+    if z is None:
+        return None
+    return np.zeros(1)
+
+
+@njit(cache=True)
+def _state_at(z, e, g, p, z1):
+    """The friction state z0 (m) at point g of element e on pulley p (0 without one); its
+    trial reset."""
+    if z is None:
         return 0.0
     z1[0] = 0.0
     return z[0, e, g, p]
 
 
 @njit(cache=True)
-def _keep_trial(stateful, z, e, g, p, z1):
-    if stateful:
+def _keep_trial(z, e, g, p, z1):
+    if z is not None:
         z[1, e, g, p] = z1[0]
 
 
 @njit(cache=True)
-def _clear_trials(stateful, z, e, p):
-    if stateful:
+def _clear_trials(z, e, p):
+    if z is not None:
         z[1, e, :, p] = 0.0
 
 
@@ -123,8 +132,8 @@ def _point_law(a0, a1, v0, v1, R, om, prm, f, z0, h, z1):
     """Contact law at one point, r - o = a (m), rdot = v0, v1 (m/s), the friction law's
     state z0 (m) at the last converged step and the step h (s).  Returns |r - o|, d,
     F_n, v_t and the friction law's branch (0 out of contact or clamped); fills
-    f = [phi] (1,) and, for a law with a state in contact, z1 = [its trial state] (1,)
-    (a stateless law: :func:`ancf.belts.friction.force`, z0 and z1 unused)."""
+    f = [phi] (1,) and, for a law with a state in contact, z1 = [its trial state] (1,);
+    z1 None: a stateless law (:func:`ancf.belts.friction.force`)."""
     kp, cp = prm.k_p, prm.c_p
     rho = np.hypot(a0, a1)
     n0, n1 = a0 / rho, a1 / rho
@@ -134,16 +143,16 @@ def _point_law(a0, a1, v0, v1, R, om, prm, f, z0, h, z1):
     Fn = kp * d - cp * (n0 * v0 + n1 * v1) if d >= 0.0 else 0.0
     if Fn <= 0.0:
         return rho, d, 0.0, vt, 0
-    if friction.has_state(prm):
-        return rho, d, Fn, vt, friction.state_force((vt,), abs(vt), Fn, prm, f, (z0,), h, z1)
-    return rho, d, Fn, vt, friction.force((vt,), abs(vt), Fn, prm, f)
+    if z1 is None:
+        return rho, d, Fn, vt, friction.force((vt,), abs(vt), Fn, prm, f)
+    return rho, d, Fn, vt, friction.state_force((vt,), abs(vt), Fn, prm, f, (z0,), h, z1)
 
 
 @njit(cache=True)
 def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D, z0, h, z1):
     """D (3, 5): derivatives of (f_0, f_1, tau = -phi |r - o|) with respect to
     (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0; the friction state
-    z0 and the step h fixed); G (1, 5) the derivatives of v_t,
+    z0 and the step h fixed; z1 None: a stateless law); G (1, 5) the derivatives of v_t,
     Dphi (1, 5) those of phi (scratch)."""
     kp, cp = prm.k_p, prm.c_p
     n0, n1 = a0 / rho, a1 / rho
@@ -151,10 +160,10 @@ def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D
     vn, vtt = n0 * v0 + n1 * v1, t0 * v0 + t1 * v1
     gF = (-kp * n0 - cp * vtt / rho * t0, -kp * n1 - cp * vtt / rho * t1, -cp * n0, -cp * n1, 0.0)
     G[0, 0], G[0, 1], G[0, 2], G[0, 3], G[0, 4] = -vn / rho * t0, -vn / rho * t1, t0, t1, -R
-    if friction.has_state(prm):
-        friction.state_chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi, (z0,), h)
-    else:
+    if z1 is None:
         friction.chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi)
+    else:
+        friction.state_chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi, (z0,), h)
     n, t = (n0, n1), (t0, t1)
     for c in range(5):
         gphi = Dphi[0, c]
@@ -216,8 +225,8 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
     record (k_p N/m^2, c_p N s/m^2, the friction law's code and parameters by name:
     :func:`ancf.belts.friction.contact_record`); z (2, nel, ng, np) the friction law's
     state at every contact point (m): z[0] at the last converged step, z[1] filled with
-    the trial state of the step of h (s) (0 out of contact; 0 throughout for a stateless
-    law).
+    the trial state of the step of h (s) (0 out of contact); None for a stateless law
+    (compiled without it).
     Adds Q (nel, 12) N and T (np,) N m and, if ``want_J``, their exact derivatives on the
     active branch: Kq, Cv (nel, 12, 12) dQ/de, dQ/dedot; Qw (nel, np, 12) dQ/domega_p;
     dTq, dTv (np, nel, 12) dT_p/de, dT_p/dedot; dTw (np,) dT_p/domega_p.  Returns the
@@ -225,8 +234,8 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
     """
     nel, ng = w.shape
     D, Dphi, G = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5))
-    f, z1 = np.zeros(1), np.zeros(1)
-    stateful, pairs = friction.has_state(prm), 0
+    f, z1 = np.zeros(1), _trial_storage(z)
+    pairs = 0
     for e in range(nel):
         l = 0.0
         for g in range(ng):
@@ -234,17 +243,17 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
         for p in range(radii.shape[0]):
             o0, o1, R = centres[p, 0], centres[p, 1], radii[p]
             if not _may_touch(E, e, l, o0, o1, R):
-                _clear_trials(stateful, z, e, p)
+                _clear_trials(z, e, p)
                 continue
             pairs += 1
             for g in range(ng):
                 r0, r1, v0, v1 = _centreline(E, V, S0, e, g)
                 a0, a1 = r0 - o0, r1 - o1
                 v0, v1 = v0 - odot[p, 0], v1 - odot[p, 1]
-                z0 = _state_at(stateful, z, e, g, p, z1)
+                z0 = _state_at(z, e, g, p, z1)
                 rho, _, Fn, vt, branch = _point_law(a0, a1, v0, v1, R, omegas[p], prm, f, z0,
                                                     h, z1)
-                _keep_trial(stateful, z, e, g, p, z1)
+                _keep_trial(z, e, g, p, z1)
                 if Fn <= 0.0:
                     continue
                 ww, phi = w[e, g], f[0]

@@ -255,7 +255,8 @@ class BeltDrive(PulleyDrive):
             self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
             rig = thesis_rig(s, self.omega_driver, self.torque)
         self.rig = rig
-        self.z = np.zeros((2, *self.w.shape, rig.radii.size))  # Drive2D.z (0: stateless)
+        self.z = (np.zeros((2, *self.w.shape, rig.radii.size))  # Drive2D.z
+                  if friction.has_state(self.prm) else None)
         self.h = np.zeros(1)
 
     def _weight(self, gravity) -> np.ndarray:

@@ -184,6 +184,6 @@ class Belt3DDrive(PulleyDrive):
         return Drive3D(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
                        S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
                        free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,
-                       arms=r.arms, z=np.zeros((2, 0, 0, 0)), h=np.zeros(1),
+                       arms=r.arms, z=None, h=np.zeros(1),
                        last=np.zeros((2, r.radii.size)), axes=self.axes, moving=moving,
                        shift=shift)

@@ -68,8 +68,7 @@ class Drive2D(NamedTuple):
     weight: np.ndarray   # (n,) the belt's weight as generalised forces F_g, N
     arms: np.ndarray     # (na, ARM_COLUMNS) tensioner arms (ancf.belts.arm2d), psi coordinates j
     z: np.ndarray        # (2, nel, ng, np) friction state per contact point, m: [0] at the
-    #                      last converged step, [1] the trial (0 throughout for a stateless
-    #                      law: one compiled march for every law)
+    #                      last converged step, [1] the trial (a law with a state; else None)
     h: np.ndarray        # (1,) the step the trial state is of, s (the march's)
     last: np.ndarray     # (2, np) work: the pulley speeds (rad/s) and the belt's moments on
     #                      them T_c,p (N m) at the last evaluation
@@ -95,7 +94,7 @@ class Drive3D(NamedTuple):
     damping: np.ndarray
     weight: np.ndarray   # (n,)
     arms: np.ndarray     # (0, ARM_COLUMNS): no tensioner arms in 3D
-    z: np.ndarray        # (2, 0, 0, 0): no friction law with a state in 3D
+    z: None              # no friction law with a state in 3D
     h: np.ndarray        # (1,)
     last: np.ndarray     # (2, np)
     axes: np.ndarray     # pulley axes (np, 3)

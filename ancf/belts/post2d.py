@@ -22,7 +22,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ancf.belts import friction
 from ancf.belts.contact2d import contact_state_stepped
 from ancf.elements.basis import cubic2d_S
 
@@ -62,8 +61,7 @@ def friction_state(drive, xi, state=None) -> tuple:
     nel, npul = drive.mesh.n_elements, drive.radii.size
     if state is None:
         own = getattr(drive, "z", None)
-        stateful = own is not None and friction.has_state(drive.prm)
-        state = (own[0], 0.0) if stateful else (None, 0.0)
+        state = (None, 0.0) if own is None else (own[0], 0.0)
     z0, h = state
     if z0 is None:
         return np.zeros((nel, np.size(xi), npul)), 0.0

@@ -74,8 +74,9 @@ def pulley_moments(drive, x, v, t: float, state=None) -> np.ndarray:
     npul, nel = drive.radii.size, E.shape[0]
     T = np.zeros(npul)
     o, odot = drive.moved(x, v, t)
-    z, h = np.zeros((2, *drive.w.shape, npul)), 0.0  # a stateless law's: 0
+    z, h = None, 0.0
     if state is not None:
+        z = np.zeros((2, *drive.w.shape, npul))
         z[0], h = state
     contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, drive.omegas(t, v),
                           drive.prm, z, h, False, np.zeros((nel, 12)), np.zeros((0, 12, 12)),
