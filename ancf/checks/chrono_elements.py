@@ -4,11 +4,13 @@ tolerances, the Princeton beam on the beams against ANSYS (:mod:`ancf.checks.chr
 and the simply supported square plate of the shells against Navier; shared by the chapter
 ``chrono_elements`` and ``tests/reports/test_chrono_elements_chapter.py``.
 
-Static cases (Chrono's ``utest_FEA_ANCF*_Formulation.cpp``, snapshot 7689fbc0; the
-parameters and line numbers are in ``tests/models/test_chrono_beam_static.py``,
-``test_chrono_continuum_static.py``, ``test_chrono_shell.py``): a strip of 20 elements,
-L = 20 in, aluminium rho = 2810 kg/m^3, E = 71.7 GPa, nu = 0.33, clamped at x = 0, loaded
-at the tip; textbook values (m, or rad for the twist):
+The case setups live here once; the model tests ``tests/models/test_chrono_beam_static.py``,
+``test_chrono_continuum_static.py`` and ``test_chrono_shell.py`` take them from here and
+cite Chrono's source line by line.
+
+Static cases (Chrono's ``utest_FEA_ANCF*_Formulation.cpp``, snapshot 7689fbc0): a strip
+of 20 elements, L = 20 in, aluminium rho = 2810 kg/m^3, E = 71.7 GPa, nu = 0.33, clamped
+at x = 0, loaded at the tip; textbook values (m, or rad for the twist):
 
     axial  P L/(A E)    tip  P L^3/(3 E I)    gravity  rho A g L^4/(8 E I)
     twist  M L/(G J),  J = 2.25 (a/2)^4 (square beam, brick), 0.281 w h^3 (shell strip)
@@ -63,57 +65,97 @@ def textbook(case: str, H: float, W: float, load: float, shell: bool = False) ->
             "gravity": RHO * A * GRAV * L**4 / (8.0 * E * I), "twist": load * L / (G * J)}[case]
 
 
-def _beam(element: str, case: str):
-    """(value, Cardan angles in rad) of a 20-element Chrono beam (P = M = 10)."""
+def reference(element: str, case: str) -> float:
+    """The textbook value (m, rad) of Chrono's case on the element: P = M = 10 on the
+    beams and brick (section :data:`CASES`), 1 on the shell strip (WIDE along y, THIN
+    along z in every case)."""
+    if element in cs.ELEMENTS:
+        return textbook(case, WIDE, THIN, 1.0, shell=True)
+    return textbook(case, *CASES[case][0], 10.0)
+
+
+def measured(case: str, point, angles) -> float:
+    """What Chrono compares with the textbook: the tip's u_x, u_z (m) or roll (rad), from
+    the tip point (m) and its Cardan angles (rad)."""
+    return {"axial": point[0] - L, "tip": point[2], "gravity": point[2],
+            "twist": angles[0]}[case]
+
+
+def beam(element: str, case: str, E_: float = E) -> cb.Beam:
+    """Chrono's 20-element beam of the case, Young's modulus E_ (Pa)."""
     (H, W), _ = CASES[case]
-    b = cb.Beam(element=element, n=N, L=L, H=H, W=W, rho=RHO, E=E, nu=NU, k1=K_SHEAR,
-                k2=K_SHEAR)
-    f = {"axial": lambda: cb.tip_load(b, force=(10.0, 0, 0)),
-         "tip": lambda: cb.tip_load(b, force=(0, 0, 10.0)),
-         "gravity": lambda: cb.gravity(b, (0, 0, GRAV)),
-         "twist": lambda: cb.tip_load(b, moment=(10.0, 0, 0))}[case]()
-    point, R = cb.tip_frame(b, cb.solve_static(b, f).e)
-    return point, cb.cardan_xyz(R)
+    return cb.Beam(element=element, n=N, L=L, H=H, W=W, rho=RHO, E=E_, nu=NU, k1=K_SHEAR,
+                   k2=K_SHEAR)
 
 
-def _brick(case: str):
-    """(tip point, Cardan angles in rad) of 20 3843 bricks (w along y, h along z)."""
+def beam_load(b: cb.Beam, case: str) -> np.ndarray:
+    """The case's generalised load on the beam: P = M = 10 (N, N m) at the tip, or g."""
+    return {"axial": lambda: cb.tip_load(b, force=(10.0, 0, 0)),
+            "tip": lambda: cb.tip_load(b, force=(0, 0, 10.0)),
+            "gravity": lambda: cb.gravity(b, (0, 0, GRAV)),
+            "twist": lambda: cb.tip_load(b, moment=(10.0, 0, 0))}[case]()
+
+
+@lru_cache(maxsize=None)
+def beam_solution(element: str, case: str, E_: float = E):
+    """(tip point in m, Cardan angles in rad, Newton solution) of the case's beam."""
+    b = beam(element, case, E_)
+    sol = cb.solve_static(b, beam_load(b, case))
+    point, R = cb.tip_frame(b, sol.e)
+    return point, cb.cardan_xyz(R), sol
+
+
+def brick(case: str, E_: float = E) -> BrickBar:
+    """20 3843 bricks of the case's section (w along y, h along z), Young's modulus E_ (Pa)."""
     (w, h), _ = CASES[case]
-    b = BrickBar(n=N, L=L, w=w, h=h, E=E, nu=NU, rho=RHO)
+    return BrickBar(n=N, L=L, w=w, h=h, E=E_, nu=NU, rho=RHO)
+
+
+@lru_cache(maxsize=None)
+def brick_solution(case: str, E_: float = E):
+    """(tip point in m, Cardan angles in rad, Newton residual) of the case's bricks."""
+    b = brick(case, E_)
     f = {"axial": lambda: b.tip_force([10.0, 0, 0]), "tip": lambda: b.tip_force([0, 0, 10.0]),
          "gravity": lambda: b.gravity([0, 0, GRAV]),
          "twist": lambda: b.tip_moment([10.0, 0, 0])}[case]()
-    return b.tip_frame(b.solve(f)[0])
+    u, _, res = b.solve(f)
+    return (*b.tip_frame(u), res)
 
 
-def _shell(element: str, case: str):
-    """(tip point, Cardan angles in rad) of Chrono's 20 x 1 shell strip, 0.5 in wide,
-    0.125 in thick, P = M = 1 at (xi, eta) = (1, 0) of the last element."""
-    plate = cs.Plate(element, nx=N, ny=1, a=L, b=WIDE, H=THIN, E=E, nu=NU, rho=RHO,
-                     y0=-WIDE / 2)
+def strip(element: str) -> cs.Plate:
+    """Chrono's 20 x 1 shell strip, 0.5 in wide (y in [-w/2, w/2]), 0.125 in thick."""
+    return cs.Plate(element, nx=N, ny=1, a=L, b=WIDE, H=THIN, E=E, nu=NU, rho=RHO,
+                    y0=-WIDE / 2)
+
+
+def strip_load(plate: cs.Plate, case: str) -> np.ndarray:
+    """The case's load on the strip: P = M = 1 (N, N m) at (xi, eta) = (1, 0) of the last
+    element, or g."""
     tip = dict(k=N - 1, xi=1.0, eta=0.0)
-    f = {"axial": lambda: cs.point_load(plate, **tip, force=(1.0, 0, 0)),
-         "tip": lambda: cs.point_load(plate, **tip, force=(0, 0, 1.0)),
-         "gravity": lambda: cs.gravity(plate, (0, 0, GRAV)),
-         "twist": lambda: cs.point_load(plate, **tip, moment=(1.0, 0, 0))}[case]()
-    sol = cs.solve_static(plate, f, [plate.clamped("x0")])
+    return {"axial": lambda: cs.point_load(plate, **tip, force=(1.0, 0, 0)),
+            "tip": lambda: cs.point_load(plate, **tip, force=(0, 0, 1.0)),
+            "gravity": lambda: cs.gravity(plate, (0, 0, GRAV)),
+            "twist": lambda: cs.point_load(plate, **tip, moment=(1.0, 0, 0))}[case]()
+
+
+@lru_cache(maxsize=None)
+def strip_solution(element: str, case: str):
+    """(tip point in m, Cardan angles in rad of ``EvaluateSectionFrame(1, 0)``, Newton
+    solution) of the clamped strip."""
+    plate = strip(element)
+    sol = cs.solve_static(plate, strip_load(plate, case), [plate.clamped("x0")])
     point, R = cs.section_frame(plate, sol.e, N - 1, 1.0, 0.0)
-    return point, cs.cardan_xyz(R)
+    return point, cs.cardan_xyz(R), sol
 
 
 def static_row(element: str, case: str) -> dict:
     """One of Chrono's static cases: ours, textbook, error, tolerances, pass."""
-    shell = element in cs.ELEMENTS
-    point, angles = (_shell(element, case) if shell else _brick(case) if element == "3843"
-                     else _beam(element, case))
-    (H, W), off = CASES[case]
-    if shell:   # the strip is 0.5 in wide (y) and 0.125 in thick (z) in every case
-        H, W = WIDE, THIN
-    ours = {"axial": point[0] - L, "tip": point[2], "gravity": point[2],
-            "twist": angles[0]}[case]
-    ref = textbook(case, H, W, 1.0 if shell else 10.0, shell)
+    point, angles, _ = (strip_solution(element, case) if element in cs.ELEMENTS
+                        else brick_solution(case) if element == "3843"
+                        else beam_solution(element, case))
+    ours, ref = measured(case, point, angles), reference(element, case)
     percent, bound = TOLERANCE[element, case]
-    off_deg = float(np.degrees(np.abs(angles[list(off)])).max())
+    off_deg = float(np.degrees(np.abs(angles[list(CASES[case][1])])).max())
     err = ours / ref - 1.0
     return {"element": element, "case": case, "ours": float(ours), "textbook": ref,
             "error": err, "tolerance": percent / 100.0, "off-axis [deg]": off_deg,
@@ -153,23 +195,53 @@ def plate_parameters() -> dict:
 
 
 @lru_cache(maxsize=None)
-def plate_row(element: str, n: int = PLATE_N) -> dict:
-    """The simply supported square plate of n x n shells: centre deflection w (m) against
-    Navier, the first six frequencies (Hz) against the analytic plate, the largest errors."""
+def square_plate(element: str, n: int = PLATE_N, nu: float | None = None,
+                 poisson: str = "3d"):
+    """(plate, fixed coordinates): the ``plate-square`` scene on n x n shells, Poisson's
+    ratio nu (the scene's if None), ``poisson`` the 3443's law (``Plate.poisson``); simply
+    supported on all four edges (w = 0 along each, ``Plate.simply_supported``), in-plane
+    rigid motions removed, all else free."""
     p = plate_parameters()
     plate = cs.Plate(element, nx=n, ny=n, a=p["a"], b=p["a"], H=p["h"], E=p["E"],
-                     nu=p["nu"], rho=p["rho"])
+                     nu=p["nu"] if nu is None else nu, rho=p["rho"], poisson=poisson)
     fixed = [plate.simply_supported(s) for s in ("x0", "x1", "y0", "y1")]
-    fixed.append(plate.in_plane_rigid())
-    sol = cs.solve_static(plate, cs.pressure(plate, p["p"]), fixed)
-    w = cs.point(plate, sol.e, (n // 2) * n + n // 2, -1.0, -1.0)[2]
-    w_ref = navier_plate.centre_deflection(p["a"], p["a"], p["h"], p["E"], p["nu"], p["p"])[0]
-    f = cs.modes(plate, fixed, 6)
-    f_ref = plate_modes.navier_frequencies(p["a"], p["a"], p["h"], p["E"], p["nu"], p["rho"],
-                                           6)[0]
-    return {"element": element, "n": n, "w": w, "Navier w": w_ref, "w error": w / w_ref - 1,
-            "f": tuple(f), "f ref": tuple(f_ref),
-            "f error": float(np.abs(f / f_ref - 1).max()), "locking": locking_factor(p["nu"])}
+    return plate, fixed + [plate.in_plane_rigid()]
+
+
+def centre_deflection(plate: cs.Plate, e: np.ndarray) -> float:
+    """w (m) at the centre node of the square plate, the corner A of element (n/2, n/2)."""
+    n = plate.nx
+    return cs.point(plate, e, (n // 2) * n + n // 2, -1.0, -1.0)[2]
+
+
+def navier_w(nu: float | None = None) -> float:
+    """Navier's centre deflection (m) of the scene's plate, Poisson's ratio nu (the
+    scene's if None)."""
+    p = plate_parameters()
+    nu = p["nu"] if nu is None else nu
+    return navier_plate.centre_deflection(p["a"], p["a"], p["h"], p["E"], nu, p["p"])[0]
+
+
+def navier_f(k: int = 6) -> np.ndarray:
+    """The analytic plate's first k natural frequencies (Hz)."""
+    p = plate_parameters()
+    return plate_modes.navier_frequencies(p["a"], p["a"], p["h"], p["E"], p["nu"], p["rho"],
+                                          k)[0]
+
+
+@lru_cache(maxsize=None)
+def plate_row(element: str, n: int = PLATE_N, poisson: str = "3d") -> dict:
+    """The simply supported square plate of n x n shells (the 3443 with the Poisson law
+    ``poisson``): centre deflection w (m, Newton) against Navier, the first six frequencies
+    (Hz) against the analytic plate, the largest errors."""
+    plate, fixed = square_plate(element, n, poisson=poisson)
+    sol = cs.solve_static(plate, cs.pressure(plate, plate_parameters()["p"]), fixed)
+    w, w_ref = centre_deflection(plate, sol.e), navier_w()
+    f, f_ref = cs.modes(plate, fixed, 6), navier_f()
+    return {"element": element, "poisson": poisson, "n": n, "w": w, "Navier w": w_ref,
+            "w error": w / w_ref - 1, "f": tuple(f), "f ref": tuple(f_ref),
+            "f error": float(np.abs(f / f_ref - 1).max()),
+            "locking": locking_factor(plate_parameters()["nu"])}
 
 
 def locking_factor(nu: float) -> float:
@@ -178,8 +250,36 @@ def locking_factor(nu: float) -> float:
     return (1 - nu) ** 2 / (1 - 2 * nu)
 
 
+#: (element, Poisson law) of the chapter's plate rows: the 3443 locked and with the remedy
+PLATE_CASES = (("3443", "3d"), ("3443", "plane_stress"), ("3833", "3d"))
+
+
 def plate_rows() -> list[dict]:
-    return [plate_row(el) for el in cs.ELEMENTS]
+    return [plate_row(el, poisson=law) for el, law in PLATE_CASES]
+
+
+def plate_label(row: dict) -> str:
+    """The element of a plate row, with the 3443's Poisson law where not Chrono's "3d"."""
+    law = row["poisson"].replace("_", " ")
+    return row["element"] if row["poisson"] == "3d" else f"{row['element']} ({law})"
+
+
+def plate_checks(plates: list) -> list:
+    """The square plate's checks: every row's w (the locked 3443's times the locking
+    factor) within 1 % of Navier, the 3833's six frequencies within 1 %."""
+    from ancf.checks.belt2d import Check
+    out = []
+    for r in plates:
+        locked = r["element"] == "3443" and r["poisson"] == "3d"
+        scale = r["locking"] if locked else 1.0
+        w = abs(r["w"] * scale / r["Navier w"] - 1)
+        what = "w × (1 − ν)²/(1 − 2ν)" if locked else "w"
+        out.append(Check(f"Square plate {r['n']} × {r['n']}, {plate_label(r)}: {what} within "
+                         "1 % of Navier", r["w"] * scale, r["Navier w"], w, PLATE_TOL, "m",
+                         "relative"))
+    return out + [Check("Square plate, 3833: first six frequencies within 1 % of the "
+                        "analytic plate", r["f error"], 0.0, r["f error"], PLATE_TOL, "-",
+                        "largest relative") for r in plates if r["element"] == "3833"]
 
 
 def checks(static=None, princeton=None, plates=None) -> tuple:
@@ -213,15 +313,5 @@ def checks(static=None, princeton=None, plates=None) -> tuple:
                      f"within 0.5 % at {PRINCETON_FINE} elements", uz, 0.0, uz,
                      PRINCETON_TOL["uz"], "-",
                      "largest relative"))
-    for r in plates:
-        scale = 1.0 if r["element"] == "3833" else r["locking"]
-        w = abs(r["w"] * scale / r["Navier w"] - 1)
-        what = "w" if scale == 1.0 else "w × (1 − ν)²/(1 − 2ν)"
-        out.append(Check(f"Square plate {r['n']} × {r['n']}, {r['element']}: {what} within "
-                         "1 % of Navier", r["w"] * scale, r["Navier w"], w, PLATE_TOL, "m",
-                         "relative"))
-    r3833 = next(r for r in plates if r["element"] == "3833")
-    out.append(Check("Square plate, 3833: first six frequencies within 1 % of the analytic "
-                     "plate", r3833["f error"], 0.0, r3833["f error"], PLATE_TOL, "-",
-                     "largest relative"))
+    out += plate_checks(plates)
     return tuple(out)

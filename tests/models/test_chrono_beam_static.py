@@ -24,75 +24,34 @@ with A = H W and I = H W^3/12 (bending about y).  Chrono solves one linear step
 """
 from __future__ import annotations
 
-from functools import lru_cache
-
 import numpy as np
 import pytest
 
+from ancf.checks import chrono_elements as ce
 from ancf.models import chrono_beam as cb
 
-INCH = 0.0254                               # m
-N_ELEMENTS, LENGTH = 20, 20 * INCH          # -, m
-RHO, E, NU = 2810.0, 71.7e9, 0.33           # kg/m^3, Pa, -
-K_SHEAR = 10 * (1 + NU) / (12 + 11 * NU)    # Timoshenko k1 = k2
-TIP_FORCE, TIP_MOMENT, GRAVITY = 10.0, 10.0, -9.80665   # N, N m, m/s^2
-PERCENT, ANGLE_DEG = 2.0, 0.001             # Chrono's tolerances
-
-# case -> (H, W) in m, the off-axis Cardan angles Chrono checks (0 = x, 1 = y, 2 = z)
-SECTIONS = {"axial": ((0.125 * INCH, 0.5 * INCH), (0, 1, 2)),
-            "tip_load": ((0.125 * INCH, 0.5 * INCH), (0, 2)),
-            "gravity": ((0.5 * INCH, 0.125 * INCH), (0, 2)),
-            "twist": ((0.5 * INCH, 0.5 * INCH), (1, 2))}
+# the setup (parameters, sections, loads, textbook formulas, Chrono's tolerances per
+# element and case): ``ancf.checks.chrono_elements``, cases "axial", "tip", "gravity", "twist"
 
 
-def beam(element: str, case: str, E_: float = E) -> cb.Beam:
-    (H, W), _ = SECTIONS[case]
-    return cb.Beam(element=element, n=N_ELEMENTS, L=LENGTH, H=H, W=W, rho=RHO, E=E_, nu=NU,
-                   k1=K_SHEAR, k2=K_SHEAR)
-
-
-def load(b: cb.Beam, case: str) -> np.ndarray:
-    if case == "axial":
-        return cb.tip_load(b, force=(TIP_FORCE, 0.0, 0.0))
-    if case == "tip_load":
-        return cb.tip_load(b, force=(0.0, 0.0, TIP_FORCE))
-    if case == "gravity":
-        return cb.gravity(b, (0.0, 0.0, GRAVITY))
-    return cb.tip_load(b, moment=(TIP_MOMENT, 0.0, 0.0))
-
-
-def theory(case: str) -> float:
-    """The textbook value (m, or rad for the twist) of Chrono's check, with Chrono's E."""
-    (H, W), _ = SECTIONS[case]
-    A, I, G = H * W, H * W**3 / 12.0, E / (2.0 * (1.0 + NU))
-    return {"axial": TIP_FORCE * LENGTH / (A * E),
-            "tip_load": TIP_FORCE * LENGTH**3 / (3.0 * E * I),
-            "gravity": RHO * A * GRAVITY * LENGTH**4 / (8.0 * E * I),
-            "twist": TIP_MOMENT * LENGTH / (G * 2.25 * (0.5 * W) ** 4)}[case]
-
-
-@lru_cache(maxsize=None)
-def answer(element: str, case: str, E_: float = E):
+def answer(element: str, case: str, E_: float = ce.E):
     """(our value as Chrono measures it, Cardan angles in deg, the Newton solution)."""
-    b = beam(element, case, E_)
-    sol = cb.solve_static(b, load(b, case))
-    point, R = cb.tip_frame(b, sol.e)
-    angles = np.degrees(cb.cardan_xyz(R))
-    value = {"axial": point[0] - LENGTH, "tip_load": point[2], "gravity": point[2],
-             "twist": np.radians(angles[0])}[case]
-    return value, angles, sol
+    point, angles, sol = ce.beam_solution(element, case, E_)
+    return ce.measured(case, point, angles), np.degrees(angles), sol
 
 
-CASES = [(el, case) for el in cb.ELEMENTS for case in SECTIONS]
+CASES = [(el, case) for el in cb.ELEMENTS for case in ce.CASES]
 
 
 @pytest.mark.parametrize("element,case", CASES)
 def test_static_case_within_chrono_tolerance(element, case):
     value, angles, sol = answer(element, case)
-    percent = (value - theory(case)) / theory(case) * 100.0
-    assert abs(percent) < PERCENT, (element, case, value, theory(case), percent)
-    off_axis = SECTIONS[case][1]
-    assert np.all(np.abs(angles[list(off_axis)]) < ANGLE_DEG), angles
+    tolerance, angle_deg = ce.TOLERANCE[element, case]
+    theory = ce.reference(element, case)
+    percent = (value - theory) / theory * 100.0
+    assert abs(percent) < tolerance, (element, case, value, theory, percent)
+    off_axis = ce.CASES[case][1]
+    assert np.all(np.abs(angles[list(off_axis)]) < angle_deg), angles
     # Newton reached rtol or the round-off floor of Q (see solve_static)
     assert sol.converged or sol.residual <= 10.0 * sol.floor
     assert sol.floor < 1e-5 and sol.iterations < 30
@@ -103,6 +62,7 @@ def test_static_case_follows_E(element, case):
     """With 1.05 E the answer shrinks as 1/1.05 (linear elasticity, small deflection) and
     leaves Chrono's 2 % band around the textbook value at E: the check can fail."""
     value, _, _ = answer(element, case)
-    stiffer, _, _ = answer(element, case, 1.05 * E)
+    stiffer, _, _ = answer(element, case, 1.05 * ce.E)
     assert stiffer / value == pytest.approx(1.0 / 1.05, rel=1e-3)
-    assert abs((stiffer - theory(case)) / theory(case) * 100.0) > PERCENT
+    theory = ce.reference(element, case)
+    assert abs((stiffer - theory) / theory * 100.0) > ce.TOLERANCE[element, case][0]

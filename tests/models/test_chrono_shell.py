@@ -22,63 +22,28 @@ angles below 0.001 deg:
 """
 from __future__ import annotations
 
-from functools import lru_cache
-
 import numpy as np
 import pytest
 import scipy.sparse.linalg as spla
 
-from analytic import navier_plate, plate_modes
+from ancf.checks import chrono_elements as ce
 from ancf.models import chrono_shell as cs
-from ancf.scenes import plate_square
-from ancf.scenes.base import STEEL_DENSITY
 
-INCH = 0.0254                                   # m
-N, LENGTH, WIDTH, HEIGHT = 20, 20 * INCH, 0.5 * INCH, 0.125 * INCH   # -, m, m, m
-RHO, E, NU = 2810.0, 71.7e9, 0.33               # kg/m^3, Pa, -
-TIP_FORCE, TIP_MOMENT, G = 1.0, 1.0, -9.80665   # N, N m, m/s^2
-ANGLE_DEG = 0.001
-#: Chrono's percent tolerance per (element, case)
-PERCENT = {("3443", "axial"): 2.0, ("3443", "tip"): 15.0, ("3443", "gravity"): 15.0,
-           ("3443", "twist"): 15.0, ("3833", "axial"): 2.0, ("3833", "tip"): 2.0,
-           ("3833", "gravity"): 2.0, ("3833", "twist"): 15.0}
-#: Cardan angles (0 roll, 1 pitch, 2 yaw) each check holds below ANGLE_DEG
-OFF_AXIS = {"axial": (0, 1, 2), "tip": (0, 2), "gravity": (0, 2), "twist": (1, 2)}
-
-
-def strip(element: str) -> cs.Plate:
-    return cs.Plate(element, N, 1, LENGTH, WIDTH, HEIGHT, E, NU, RHO, y0=-WIDTH / 2)
-
-
-def chrono_case(plate: cs.Plate, case: str):
-    """(generalised load, the textbook value, which tip quantity to read)."""
-    I, Gmod = WIDTH * HEIGHT**3 / 12, E / (2 * (1 + NU))
-    tip = dict(k=N - 1, xi=1.0, eta=0.0)
-    return {
-        "axial": (cs.point_load(plate, **tip, force=(TIP_FORCE, 0, 0)),
-                  TIP_FORCE * LENGTH / (WIDTH * HEIGHT * E), "ux"),
-        "tip": (cs.point_load(plate, **tip, force=(0, 0, TIP_FORCE)),
-                TIP_FORCE * LENGTH**3 / (3 * E * I), "uz"),
-        "gravity": (cs.gravity(plate, (0, 0, G)),
-                    RHO * WIDTH * HEIGHT * G * LENGTH**4 / (8 * E * I), "uz"),
-        "twist": (cs.point_load(plate, **tip, moment=(TIP_MOMENT, 0, 0)),
-                  TIP_MOMENT * LENGTH / (Gmod * 0.281 * WIDTH * HEIGHT**3), "roll"),
-    }[case]
+# Chrono's strip, loads, textbook formulas and tolerances, and the square plate:
+# ``ancf.checks.chrono_elements``
+G = ce.GRAV                                     # m/s^2
 
 
 @pytest.mark.parametrize("element", ["3443", "3833"])
 @pytest.mark.parametrize("case", ["axial"] + [pytest.param(c, marks=pytest.mark.slow)
                                              for c in ("tip", "gravity", "twist")])
 def test_chrono_static_check(element, case):
-    plate = strip(element)
-    F, theory, quantity = chrono_case(plate, case)
-    sol = cs.solve_static(plate, F, [plate.clamped("x0")])
-    r, R = cs.section_frame(plate, sol.e, N - 1, 1.0, 0.0)
-    angles = cs.cardan_xyz(R)
-    model = {"ux": r[0] - LENGTH, "uz": r[2], "roll": angles[0]}[quantity]
+    r, angles, sol = ce.strip_solution(element, case)
+    model, theory = ce.measured(case, r, angles), ce.reference(element, case)
+    percent, angle_deg = ce.TOLERANCE[element, case]
     assert sol.residual <= max(1e-10, sol.floor)
-    assert abs(100 * (model - theory) / theory) < PERCENT[element, case]
-    assert np.all(np.abs(np.degrees(angles[list(OFF_AXIS[case])])) < ANGLE_DEG)
+    assert abs(100 * (model - theory) / theory) < percent
+    assert np.all(np.abs(np.degrees(angles[list(ce.CASES[case][1])])) < angle_deg)
 
 
 # ---------------------------------------------------------------------------------------
@@ -129,9 +94,7 @@ def test_rigid_motion_mass_and_loads(element):
 # The suite's simply supported square plate (``ancf.scenes.plate_square``) at 16 x 16
 # ---------------------------------------------------------------------------------------
 
-SCENE = {p.name: p.default for p in plate_square.params()} | {"rho": STEEL_DENSITY.default}
-N_PLATE = 16
-RTOL = 0.01
+N_PLATE, RTOL = ce.PLATE_N, ce.PLATE_TOL
 LOCKING = ("3443: Poisson (thickness) locking. Its fibre r_z is constant through the "
            "thickness, so the 3D law sees no free thickness contraction and the bending "
            "stiffness rises by (1 - nu)^2/(1 - 2 nu) = 1.225 at nu = 0.3: w -18.7 %, "
@@ -139,23 +102,6 @@ LOCKING = ("3443: Poisson (thickness) locking. Its fibre r_z is constant through
 
 
 REMEDIES = ("plane_stress", "split")   # the 3443's Poisson-locking remedies (``ancf3443``)
-
-
-@lru_cache(maxsize=None)
-def square(element: str, nu: float = SCENE["nu"], poisson: str = "3d"):
-    """(plate, fixed coordinates): simply supported on all four edges (w = 0 along each
-    edge, ``Plate.simply_supported``), in-plane rigid motions removed, all else free;
-    ``poisson`` the 3443's law (``Plate.poisson``)."""
-    p = SCENE
-    plate = cs.Plate(element, N_PLATE, N_PLATE, p["a"], p["a"], p["h"], p["E"], nu, p["rho"],
-                     poisson=poisson)
-    edges = [plate.simply_supported(s) for s in ("x0", "x1", "y0", "y1")]
-    return plate, edges + [plate.in_plane_rigid()]
-
-
-def centre_deflection(plate: cs.Plate, e: np.ndarray) -> float:
-    """w (m) at the centre node, the corner A of element (n/2, n/2)."""
-    return cs.point(plate, e, (N_PLATE // 2) * N_PLATE + N_PLATE // 2, -1.0, -1.0)[2]
 
 
 COARSE = ("3443 with either Poisson remedy at 16 x 16: f +0.23, +0.71, +0.71, +1.18, +1.49, "
@@ -178,11 +124,9 @@ FREQUENCY_CASES = ([xfail("3443", "3d", LOCKING), ("3833", "3d")]
 @pytest.mark.parametrize("element, poisson", NAVIER_CASES)
 def test_square_plate_navier(element, poisson):
     """Newton's centre deflection within 1 % of Navier's (the plain 3443 locks, xfail)."""
-    plate, fixed = square(element, poisson=poisson)
-    p = SCENE
-    sol = cs.solve_static(plate, cs.pressure(plate, p["p"]), fixed)
-    w = centre_deflection(plate, sol.e)
-    w_ref = navier_plate.centre_deflection(p["a"], p["a"], p["h"], p["E"], p["nu"], p["p"])[0]
+    plate, fixed = ce.square_plate(element, poisson=poisson)
+    sol = cs.solve_static(plate, cs.pressure(plate, ce.plate_parameters()["p"]), fixed)
+    w, w_ref = ce.centre_deflection(plate, sol.e), ce.navier_w()
     assert abs(w / w_ref - 1) < RTOL, (w, w_ref)
 
 
@@ -191,43 +135,37 @@ def test_square_plate_navier(element, poisson):
 def test_square_plate_frequencies(element, poisson):
     """The first six frequencies within 1 % of Navier's (xfail: the plain 3443 locks; with
     a remedy modes 4-6 are 1.2-1.5 % high at 16 x 16, see COARSE)."""
-    plate, fixed = square(element, poisson=poisson)
-    p = SCENE
+    plate, fixed = ce.square_plate(element, poisson=poisson)
     f = cs.modes(plate, fixed, 6)
-    f_ref = plate_modes.navier_frequencies(p["a"], p["a"], p["h"], p["E"], p["nu"], p["rho"],
-                                           6)[0]
-    np.testing.assert_array_less(np.abs(f / f_ref - 1), RTOL)
+    np.testing.assert_array_less(np.abs(f / ce.navier_f() - 1), RTOL)
 
 
 def test_3443_miss_is_poisson_locking():
     """The 3443's linear centre deflection: at nu = 0 within 1 % of Navier, at the scene's
     nu short of it by the thickness-locking factor (1 - nu)^2/(1 - 2 nu) within 1 %."""
-    p = SCENE
-    for nu in (0.0, p["nu"]):
-        w_ref = navier_plate.centre_deflection(p["a"], p["a"], p["h"], p["E"], nu, p["p"])[0]
-        locking = (1 - nu) ** 2 / (1 - 2 * nu)
-        assert abs(linear_deflection(nu) * locking / w_ref - 1) < RTOL
+    for nu in (0.0, ce.plate_parameters()["nu"]):
+        locking = ce.locking_factor(nu)
+        assert abs(linear_deflection(nu) * locking / ce.navier_w(nu) - 1) < RTOL
 
 
 def linear_deflection(nu: float, poisson: str = "3d") -> float:
     """The centre w (m) of the linear solve K(e0) u = F_p on the 3443 square plate."""
-    plate, fixed = square("3443", nu, poisson)
+    plate, fixed = ce.square_plate("3443", nu=nu, poisson=poisson)
     f = plate.free(fixed)
     K = cs.reference_stiffness(plate)[f][:, f].tocsc()
     e = plate.reference()
-    e[f] += spla.spsolve(K, cs.pressure(plate, SCENE["p"])[f])
-    return centre_deflection(plate, e)
+    e[f] += spla.spsolve(K, cs.pressure(plate, ce.plate_parameters()["p"])[f])
+    return ce.centre_deflection(plate, e)
 
 
 def test_3443_poisson_remedy_lifts_locking():
     """The option matters: either remedy (``Plate.poisson``) softens the linear centre
     deflection by the locking factor (1 - nu)^2/(1 - 2 nu) within 1 %, to within 1 % of
     Navier; the two remedies agree (they differ only in the membrane's thickness strain)."""
-    p = SCENE
-    w_ref = navier_plate.centre_deflection(p["a"], p["a"], p["h"], p["E"], p["nu"], p["p"])[0]
-    locked = linear_deflection(p["nu"])
-    locking = (1 - p["nu"]) ** 2 / (1 - 2 * p["nu"])
-    w = {r: linear_deflection(p["nu"], r) for r in REMEDIES}
+    nu, w_ref = ce.plate_parameters()["nu"], ce.navier_w()
+    locked = linear_deflection(nu)
+    locking = ce.locking_factor(nu)
+    w = {r: linear_deflection(nu, r) for r in REMEDIES}
     for r in REMEDIES:
         assert abs(w[r] / (locked * locking) - 1) < RTOL
         assert abs(w[r] / w_ref - 1) < RTOL

@@ -53,9 +53,10 @@ def test_princeton_uz_miss_at_16_passes_at_32(element):
 @pytest.mark.slow   # about 90 s (the 3833's dense eigenproblem)
 def test_plate_rows_and_checks():
     """The 3833 passes Navier; the 3443 misses by Poisson locking, and its w times the
-    locking factor passes; every check on these rows passes."""
+    locking factor passes; every check on these rows passes (the 3443 with
+    ``poisson="plane_stress"`` among them)."""
     plates = ce.plate_rows()
-    by = {r["element"]: r for r in plates}
+    by = {r["element"]: r for r in plates if r["poisson"] == "3d"}
     assert abs(by["3833"]["w error"]) < ce.PLATE_TOL and by["3833"]["f error"] < ce.PLATE_TOL
     assert by["3443"]["w error"] < -ce.PLATE_TOL and by["3443"]["f error"] > ce.PLATE_TOL
     static = [ce.static_row(el, "axial") for el in ("3243", "3333", "3843", "3443", "3833")]
@@ -63,3 +64,18 @@ def test_plate_rows_and_checks():
                  ce.princeton_row("3243", "F3", 90.0, ce.PRINCETON_FINE)]
     for check in ce.checks(static, princeton, plates):
         assert check.passed, check
+
+
+@pytest.mark.slow   # about 120 s (Newton and the eigenproblem at 16 x 16)
+def test_plate_3443_plane_stress_w_passes_f4_to_f6_miss():
+    """The 3443 with ``poisson="plane_stress"``: w within 1 % of Navier (its check passes);
+    f1-f3 within 1 %, f4-f6 miss the 1 % bound by less than 2 % (mesh resolution at
+    16 x 16, see the chapter)."""
+    r = ce.plate_row("3443", poisson="plane_stress")
+    assert abs(r["w error"]) < ce.PLATE_TOL
+    error = [f / g - 1 for f, g in zip(r["f"], r["f ref"])]
+    assert all(abs(e) < ce.PLATE_TOL for e in error[:3])
+    assert all(ce.PLATE_TOL < e < 2 * ce.PLATE_TOL for e in error[3:])
+    (check,) = ce.plate_checks([r])
+    assert check.name == "Square plate 16 × 16, 3443 (plane stress): w within 1 % of Navier"
+    assert check.passed, check
