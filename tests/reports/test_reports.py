@@ -27,6 +27,25 @@ PNG = b"\x89PNG\r\n\x1a\n"
 #: status that test implies
 PUBLISHED = ("test_published_tables", "test_cantilever_tables")
 AGREES = {
+    **{name: (("test_chrono_elements_chapter", test), "PASS") for name, test in (
+        *((f"Chrono's stored {kind} files: every element within {bound}",
+           "test_every_stored_file_is_reproduced_within_its_bound")
+          for kind, bound in (("mass", "1e-10"), ("gravity", "1e-10"), ("force", "1e-08"),
+                              ("Jacobian", "1e-06"))),
+        *((f"Chrono's static cases, {els}: within Chrono's tolerances",
+           "test_static_case_within_chrono_tolerance")
+          for els in ("3243 and 3333", "3843", "3443 and 3833")),
+        ("Princeton beam: the 16-element u_z misses at 90° within 0.5 % at 32 elements",
+         "test_princeton_uz_miss_at_16_passes_at_32"),
+        ("Square plate 16 × 16, 3443: w × (1 − ν)²/(1 − 2ν) within 1 % of Navier",
+         "test_plate_rows_and_checks"),
+        ("Square plate 16 × 16, 3443 (plane stress): w within 1 % of Navier",
+         "test_plate_3443_plane_stress_w_passes_f4_to_f6_miss"),
+        ("Square plate 16 × 16, 3833: w within 1 % of Navier", "test_plate_rows_and_checks"),
+        ("Square plate, 3833: first six frequencies within 1 % of the analytic plate",
+         "test_plate_rows_and_checks"))},
+    "Princeton beam, 16 elements: every u_y within 1 % of ANSYS": (
+        ("test_chrono_princeton", "test_princeton_against_ansys"), "PASS"),
     **{t: (("test_published_tables", "test_simply_supported_tables"), "PASS")
        for t in ("Thesis Table 2.1 (ν = 0)", "Thesis Table 2.2 (ν = 0.3)",
                  "Report Table 1 (ν = 0)", "Report Table 2 (ν = 0.3)")},
