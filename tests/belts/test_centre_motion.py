@@ -25,6 +25,7 @@ from ancf.common.params import InputError
 from ancf.common.paths import REPO
 from ancf.scenes import SCENES
 from ancf.scenes import belt3d as b3
+from tests.belts.plate_runs import assert_file_run_is_belt3d
 
 EXAMPLES = REPO / "examples"
 MODEL1 = EXAMPLES / "thesis_table_4_1_model_1.toml"
@@ -180,17 +181,7 @@ def test_model_1_file_runs_belt3d_model_1_exactly():
     out, rb = SCENES["belt3d"].execute({"model": 1, "t_end": SHORT})
     xb, b = rb.extra["result"], json.loads(json.dumps(out))["results"]
     assert out["converged"]
-    for name in ("t", "q", "v"):
-        assert np.array_equal(getattr(xa, name), getattr(xb, name)), name
-    assert a["pulleys"][0]["omega"] == b["omega_driver"]
-    assert a["pulleys"][1]["omega"] == b["omega_driven"]
-    lower, upper = a["spans"]
-    T = b["tensions"]["membrane"]
-    assert (upper["tension_N"], lower["tension_N"]) == (T["tight"], T["slack"])
-    assert a["pulleys"][1]["torque_Nm"][-1] == b["torque_from_friction_Nm"]
-    for key in ("steps", "nfev", "newton_iterations", "contact_pairs", "penetration_max_m",
-                "total_dofs", "pretension_iterations"):
-        assert a[key] == b[key], key
+    assert_file_run_is_belt3d(xa, a, xb, b)
 
 
 @pytest.mark.slow
