@@ -182,7 +182,7 @@ def princeton_row(element: str, load: str, beta: float, n: int = cp.N_ELEMENTS) 
 def princeton_rows() -> list[dict]:
     """Every load and angle on both beams at 16 elements, then the u_z misses at
     :data:`PRINCETON_FINE_BETA` (the largest per load) again at :data:`PRINCETON_FINE`
-    elements (about 10 s CPU each)."""
+    elements (about 2 s CPU each)."""
     rows = [princeton_row(el, ld, b) for el in cb.ELEMENTS for ld in pub.PRINCETON_LOADS
             for b in pub.PRINCETON_ANGLES]
     return rows + [princeton_row(r["element"], r["load"], r["beta"], PRINCETON_FINE)

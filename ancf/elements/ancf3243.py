@@ -173,19 +173,25 @@ def poisson_rules(E, nu, k1, k2, split_poisson=True, naxis=NAXIS):
     return [(D0, *rule(naxis, NSECTION)), (Dv, *rule(naxis, 1))]
 
 
+def continuum(L, H, W, E, nu, k1, k2, *, split_poisson=True, naxis=NAXIS):
+    """(basis, rules) of ``continuum3d`` for ``internal_force`` (same arguments
+    after e, edot; no alpha): the element's basis and its constitutive parts."""
+    return basis(L, H, W), poisson_rules(E, nu, k1, k2, split_poisson, naxis)
+
+
 def internal_force(e, edot, L, H, W, E, nu, k1, k2, alpha=0.0, *,
                    split_poisson=True, naxis=NAXIS) -> np.ndarray:
     """The generalised internal force Q(e, e') (24,), N (N m on gradient entries), of the
     section above: e (24,) in m, edot (24,) in m/s, L, H, W in m, E in Pa, nu, k1, k2
     dimensionless, alpha in s (Kelvin-Voigt: sigma = D (eps + alpha eps')).  Exact for
     naxis >= 5; Chrono's ``ComputeInternalForces`` stores -Q."""
-    rules = poisson_rules(E, nu, k1, k2, split_poisson, naxis)
-    return c3.internal_force(e, edot, basis(L, H, W), rules, alpha)
+    kernel = continuum(L, H, W, E, nu, k1, k2, split_poisson=split_poisson, naxis=naxis)
+    return c3.internal_force(e, edot, *kernel, alpha)
 
 
 def internal_force_jacobians(e, edot, L, H, W, E, nu, k1, k2, alpha=0.0, *,
                              split_poisson=True, naxis=NAXIS):
     """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (24, 24), of ``internal_force``
     (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)`` and ``(H, 0, 1, 0)``."""
-    rules = poisson_rules(E, nu, k1, k2, split_poisson, naxis)
-    return c3.internal_force_jacobians(e, edot, basis(L, H, W), rules, alpha)
+    kernel = continuum(L, H, W, E, nu, k1, k2, split_poisson=split_poisson, naxis=naxis)
+    return c3.internal_force_jacobians(e, edot, *kernel, alpha)

@@ -144,17 +144,23 @@ def gravity(L: float, H: float, W: float, rho: float, g, ngauss: int = 2) -> np.
 # ----------------------------------------------------------------------------------------
 
 
+def continuum(L, H, W, E, nu, k1, k2, *, split_poisson=True, naxis=NAXIS):
+    """(basis, rules) of ``continuum3d`` for ``internal_force`` (same arguments
+    after e, edot; no alpha): the element's basis and its constitutive parts."""
+    return basis(L, H, W), poisson_rules(E, nu, k1, k2, split_poisson, naxis)
+
+
 def internal_force(e, edot, L, H, W, E, nu, k1, k2, alpha=0.0, *,
                    split_poisson=True, naxis=NAXIS) -> np.ndarray:
     """Q(e, e') (27,), N (N m on r_y, r_z entries), as ``ancf3243.internal_force`` (the
     same arguments and units) on this element's basis; exact for naxis >= 5.  Chrono
     stores -Q."""
-    parts = poisson_rules(E, nu, k1, k2, split_poisson, naxis)
-    return c3.internal_force(e, edot, basis(L, H, W), parts, alpha)
+    kernel = continuum(L, H, W, E, nu, k1, k2, split_poisson=split_poisson, naxis=naxis)
+    return c3.internal_force(e, edot, *kernel, alpha)
 
 
 def internal_force_jacobians(e, edot, L, H, W, E, nu, k1, k2, alpha=0.0, *,
                              split_poisson=True, naxis=NAXIS):
     """K = dQ/de (N/m) and R = dQ/de' (N s/m), (27, 27) each, of ``internal_force``."""
-    parts = poisson_rules(E, nu, k1, k2, split_poisson, naxis)
-    return c3.internal_force_jacobians(e, edot, basis(L, H, W), parts, alpha)
+    kernel = continuum(L, H, W, E, nu, k1, k2, split_poisson=split_poisson, naxis=naxis)
+    return c3.internal_force_jacobians(e, edot, *kernel, alpha)

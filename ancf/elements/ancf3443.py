@@ -213,6 +213,12 @@ def poisson_rules(H, D, layers=None, poisson="3d", n_plane=N_PLANE, n_thick=N_TH
     return rules
 
 
+def continuum(L, W, H, D, *, layers=None, poisson="3d", n_plane=N_PLANE, n_thick=N_THICK):
+    """(basis, rules) of ``continuum3d`` for ``internal_force`` (same arguments
+    after e, edot; no alpha): the element's basis and its constitutive parts."""
+    return basis(L, W), poisson_rules(H, D, layers, poisson, n_plane, n_thick)
+
+
 def internal_force(e, edot, L, W, H, D, alpha=0.0, *, layers=None, poisson="3d",
                    n_plane=N_PLANE, n_thick=N_THICK) -> np.ndarray:
     """The generalised internal force Q(e, e') (48,), N (N m on gradient entries): e (48,)
@@ -221,13 +227,15 @@ def internal_force(e, edot, L, W, H, D, alpha=0.0, *, layers=None, poisson="3d",
     [(t_k, D_k), ...] replaces (H, D); ``poisson`` the law ("3d", Chrono's, or a remedy,
     ``poisson_rules``).  Exact for n_plane >= 7, n_thick >= 3; Chrono's
     ``ComputeInternalForces`` stores -Q (for poisson="3d")."""
-    rules = poisson_rules(H, D, layers, poisson, n_plane, n_thick)
-    return c3.internal_force(e, edot, basis(L, W), rules, alpha)
+    kernel = continuum(L, W, H, D, layers=layers, poisson=poisson, n_plane=n_plane,
+                       n_thick=n_thick)
+    return c3.internal_force(e, edot, *kernel, alpha)
 
 
 def internal_force_jacobians(e, edot, L, W, H, D, alpha=0.0, *, layers=None, poisson="3d",
                              n_plane=N_PLANE, n_thick=N_THICK):
     """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (48, 48), of ``internal_force``
     (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)`` and ``(H, 0, 1, 0)``."""
-    rules = poisson_rules(H, D, layers, poisson, n_plane, n_thick)
-    return c3.internal_force_jacobians(e, edot, basis(L, W), rules, alpha)
+    kernel = continuum(L, W, H, D, layers=layers, poisson=poisson, n_plane=n_plane,
+                       n_thick=n_thick)
+    return c3.internal_force_jacobians(e, edot, *kernel, alpha)

@@ -169,15 +169,23 @@ def _rules(H, E, nu, ngauss):
     return c3.layer_boxes(H, None, elasticity(E, nu), ngauss, ngauss)
 
 
+def continuum(L, W, H, E, nu, *, ngauss=NGAUSS):
+    """(basis, rules) of ``continuum3d`` for ``internal_force`` (same arguments
+    after e, edot; no alpha): the element's basis and its constitutive parts."""
+    return basis(L, W), _rules(H, E, nu, ngauss)
+
+
 def internal_force(e, edot, L, W, H, E, nu, alpha=0.0, *, ngauss=NGAUSS) -> np.ndarray:
     """The generalised internal force Q(e, e') (72,), N (N m, N m^2 on r_z, r_zz), of the
     section above: e (72,) in m, edot (72,) in m/s, L, W, H in m, E in Pa, nu
     dimensionless, alpha in s (Kelvin-Voigt: sigma = D (eps + alpha eps')).  One
     homogeneous layer; exact for ngauss >= 5.  Chrono's ``ComputeInternalForces`` stores -Q."""
-    return c3.internal_force(e, edot, basis(L, W), _rules(H, E, nu, ngauss), alpha)
+    kernel = continuum(L, W, H, E, nu, ngauss=ngauss)
+    return c3.internal_force(e, edot, *kernel, alpha)
 
 
 def internal_force_jacobians(e, edot, L, W, H, E, nu, alpha=0.0, *, ngauss=NGAUSS):
     """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (72, 72), of ``internal_force``
     (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)`` and ``(H, 0, 1, 0)``."""
-    return c3.internal_force_jacobians(e, edot, basis(L, W), _rules(H, E, nu, ngauss), alpha)
+    kernel = continuum(L, W, H, E, nu, ngauss=ngauss)
+    return c3.internal_force_jacobians(e, edot, *kernel, alpha)

@@ -164,18 +164,24 @@ def gravity(Lx: float, Ly: float, Lz: float, rho: float, g, ngauss: int = 2) -> 
 NEXACT = 7   # exact Gauss points per direction for Q, K, R
 
 
+def continuum(Lx, Ly, Lz, E, nu, *, ngauss=NEXACT):
+    """(basis, rules) of ``continuum3d`` for ``internal_force`` (same arguments
+    after e, edot; no alpha): the element's basis and its constitutive parts."""
+    return basis(Lx, Ly, Lz), [(elasticity(E, nu), *rule(ngauss))]
+
+
 def internal_force(e, edot, Lx, Ly, Lz, E, nu, alpha=0.0, *, ngauss=NEXACT) -> np.ndarray:
     """The generalised internal force Q(e, e') (96,), N (N m on gradient
     entries): e (96,) in m, edot (96,) in m/s, Lx, Ly, Lz in m, E in Pa, nu dimensionless,
     alpha in s (Kelvin-Voigt).  Exact for ngauss >= 7; Chrono's ``ComputeInternalForces``
     stores -Q."""
-    rules = [(elasticity(E, nu), *rule(ngauss))]
-    return c3.internal_force(e, edot, basis(Lx, Ly, Lz), rules, alpha)
+    kernel = continuum(Lx, Ly, Lz, E, nu, ngauss=ngauss)
+    return c3.internal_force(e, edot, *kernel, alpha)
 
 
 def internal_force_jacobians(e, edot, Lx, Ly, Lz, E, nu, alpha=0.0, *, ngauss=NEXACT):
     """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (96, 96), of ``internal_force``
     (same arguments); Chrono's ``ComputeKRMmatricesGlobal(H, 1, 0, 0)``
     and ``(H, 0, 1, 0)``."""
-    rules = [(elasticity(E, nu), *rule(ngauss))]
-    return c3.internal_force_jacobians(e, edot, basis(Lx, Ly, Lz), rules, alpha)
+    kernel = continuum(Lx, Ly, Lz, E, nu, ngauss=ngauss)
+    return c3.internal_force_jacobians(e, edot, *kernel, alpha)

@@ -110,24 +110,27 @@ def gravity(basis: Basis, rules, g) -> np.ndarray:
 
 
 def green_lagrange(e, e0, G: np.ndarray):
-    """Eqs. (4)-(5): F (nq, 3, 3) and the Voigt strain eps (nq, 6), dimensionless."""
-    U = (np.asarray(e, dtype=float) - np.asarray(e0, dtype=float)).reshape(G.shape[1], 3)
-    Hu = np.einsum("ak,qaJ->qkJ", U, G)
-    Et = 0.5 * (Hu + np.swapaxes(Hu, 1, 2) + np.einsum("qkI,qkJ->qIJ", Hu, Hu))
-    eps = np.stack([Et[:, i, j] * (1.0 if i == j else 2.0) for i, j in VOIGT], axis=1)
+    """Eqs. (4)-(5): F (..., nq, 3, 3) and the Voigt strain eps (..., nq, 6), dimensionless;
+    e (..., 3n) in m, leading axes (e.g. elements) kept."""
+    U = np.asarray(e, dtype=float) - np.asarray(e0, dtype=float)
+    Hu = np.einsum("...ak,qaJ->...qkJ", U.reshape(U.shape[:-1] + (G.shape[1], 3)), G)
+    Ht = np.swapaxes(Hu, -1, -2)
+    Et = 0.5 * (Hu + Ht + Ht @ Hu)
+    eps = np.stack([Et[..., i, j] * (1.0 if i == j else 2.0) for i, j in VOIGT], axis=-1)
     return np.eye(3) + Hu, eps
 
 
 def strain_matrix(F: np.ndarray, G: np.ndarray) -> np.ndarray:
-    """Eq. (6): B (nq, 6, 3n), 1/m on position entries: row (I, J) = F_kI G_aJ +
+    """Eq. (6): B (..., nq, 6, 3n), 1/m on position entries: row (I, J) = F_kI G_aJ +
     F_kJ G_aI (halved for I = J) at column 3a + k.  With F = dF/dt it gives dB/dt."""
-    P = np.einsum("qkI,qaJ->qIJak", F, G)
-    rows = [P[:, i, j] + P[:, j, i] if i != j else P[:, i, i] for i, j in VOIGT]
-    return np.stack(rows, axis=1).reshape(F.shape[0], 6, 3 * G.shape[1])
+    P = np.einsum("...qkI,qaJ->...qIJak", F, G)
+    rows = [P[..., i, j, :, :] + P[..., j, i, :, :] if i != j else P[..., i, i, :, :]
+            for i, j in VOIGT]
+    return np.stack(rows, axis=-3).reshape(F.shape[:-2] + (6, 3 * G.shape[1]))
 
 
 def stress(D: np.ndarray, eps: np.ndarray, eps_rate: np.ndarray, alpha: float) -> np.ndarray:
-    """Eq. (7): sigma = D (eps + alpha deps/dt) (nq, 6), Pa; D (6, 6) in Pa, alpha in s."""
+    """Eq. (7): sigma = D (eps + alpha deps/dt) (..., nq, 6), Pa; D (6, 6) in Pa, alpha in s."""
     return (eps + alpha * eps_rate) @ np.asarray(D, dtype=float).T
 
 
@@ -181,3 +184,41 @@ def internal_force_jacobians(e, edot, basis: Basis, rules, alpha: float = 0.0):
         _, k, r = _evaluate(e, edot, basis.e0, p, alpha, True)
         K, R = K + k, R + r
     return K, R
+
+
+#: elements evaluated together by :func:`static_batch` (bounds its work arrays to ~10 MB)
+BATCH = 16
+
+
+def _static_part(U, p: Part, tangent: bool):
+    """Eq. (8) and if ``tangent`` eq. (9) of one part at e' = 0 for elements U (ne, 3n) =
+    e - e0 (m)."""
+    F, eps = green_lagrange(U, 0.0, p.G)
+    B = strain_matrix(F, p.G)                                     # (ne, nq, 6, 3n)
+    sig = eps @ p.D.T
+    Q = np.einsum("q,eqvi,eqv->ei", p.dV, B, sig)
+    if not tangent:
+        return Q, 0.0
+    DB = (p.D @ B) * p.dV[:, None, None]
+    ne, nq, _, m = B.shape
+    Km = np.swapaxes(B.reshape(ne, nq * 6, m), 1, 2) @ DB.reshape(ne, nq * 6, m)
+    SG = sig[..., TENSOR] @ np.swapaxes(p.G, 1, 2)[None] * p.dV[:, None, None]  # (ne,nq,3,n)
+    Kg = np.einsum("qaI,eqIb->eab", p.G, SG)
+    return Q, Km + (Kg[:, :, None, :, None] * np.eye(3)[:, None, :]).reshape(ne, m, m)
+
+
+def static_batch(U, parts_: list, tangent: bool = True):
+    """Eq. (8) and the stiffness (9) without damping (e' = 0) of many elements at once:
+    U (ne, 3n) their displacements e - e0 (m; e0 the basis's reference, ``parts_`` from
+    :func:`parts`) -> Q (ne, 3n) in N and K (ne, 3n, 3n) in N/m, the values of
+    :func:`internal_force` and :func:`internal_force_jacobians` element by element, the
+    parts computed once for the whole mesh; K is None unless ``tangent``."""
+    U = np.asarray(U, dtype=float)
+    Q, K = np.zeros(U.shape), np.zeros(U.shape + U.shape[-1:]) if tangent else None
+    for lo in range(0, len(U), BATCH):
+        for p in parts_:
+            q, k = _static_part(U[lo:lo + BATCH], p, tangent)
+            Q[lo:lo + BATCH] += q
+            if tangent:
+                K[lo:lo + BATCH] += k
+    return Q, K

@@ -35,10 +35,12 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
 from ancf.elements import ancf3243, ancf3333
+from ancf.elements import continuum3d as c3
 
 #: element name -> (module, nodes per element as offsets from its first node, node stride)
 ELEMENTS = {"3243": (ancf3243, (0, 1), 1), "3333": (ancf3333, (0, 2, 1), 2)}
@@ -101,14 +103,24 @@ class Beam:
         return (self.Le, self.H, self.W, self.E, self.nu, self.k1, self.k2)
 
 
+@lru_cache(maxsize=16)
+def _kernel(module, args: tuple):
+    """(e0 (m,) in m, parts): the element's reference and ``continuum3d`` parts, computed
+    once per element and dimensions ``args`` (``Beam.element_args``)."""
+    basis, rules = module.continuum(*args)
+    return basis.e0, c3.parts(basis, rules)
+
+
 def assemble(beam: Beam, e: np.ndarray):
-    """(Q, K) of eq. (1) at the global state e (m): Q in N, K in N/m."""
+    """(Q, K) of eq. (1) at the global state e (m): Q in N, K in N/m (all elements in one
+    ``continuum3d.static_batch``, the same sums as the element's ``internal_force`` and
+    ``internal_force_jacobians``)."""
+    e0, parts = _kernel(beam.module, beam.element_args())
+    d = np.array([beam.dofs(k) for k in range(beam.n)])
+    Qk, Kk = c3.static_batch(e[d] - e0, parts)
     Q, K = np.zeros(e.size), np.zeros((e.size, e.size))
-    zero = np.zeros(beam.module.NDOF)
-    for k in range(beam.n):
-        d = beam.dofs(k)
-        Q[d] += beam.module.internal_force(e[d], zero, *beam.element_args())
-        K[np.ix_(d, d)] += beam.module.internal_force_jacobians(e[d], zero, *beam.element_args())[0]
+    np.add.at(Q, d, Qk)
+    np.add.at(K, (d[:, :, None], d[:, None, :]), Kk)
     return Q, K
 
 

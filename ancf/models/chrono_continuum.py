@@ -29,12 +29,22 @@ deflection stiffness B0^T D B0 (degree 6 per direction) exactly.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
 from ancf.elements import ancf3843 as brick
+from ancf.elements import continuum3d as c3
 
 NP_CHRONO = 4   # Gauss points per direction of ChElementHexaANCF_3843 (header NP)
+
+
+@lru_cache(maxsize=8)
+def _kernel(dims: tuple, E: float, nu: float, ngauss: int):
+    """(e0 (96,) in m, parts): a brick's reference and ``continuum3d`` parts, computed once
+    per sides (m), material (Pa, -) and Gauss rule."""
+    basis, rules = brick.continuum(*dims, E, nu, ngauss=ngauss)
+    return basis.e0, c3.parts(basis, rules)
 
 
 @dataclass(frozen=True)
@@ -84,17 +94,19 @@ class BrickBar:
 
     def assemble(self, u: np.ndarray, tangent: bool = True):
         """Eqs. (1)-(2) at the displacement u = e - e0 (ndof,): Q (ndof,) and K (ndof, ndof)
-        (None unless ``tangent``).  Each brick sees e0_el + u_el, its own reference plus its
-        displacement, so no rigid offset (up to L, m) rounds off the small strains."""
+        (None unless ``tangent``), all bricks in one ``continuum3d.static_batch``.  Each
+        brick sees its displacement u_el, so no rigid offset (up to L, m) rounds off the
+        small strains."""
+        e0, parts = _kernel(self.dims(), self.E, self.nu, self.ngauss)
+        d = np.array([self.element_dofs(i) for i in range(self.n)])
+        Qk, Kk = c3.static_batch(u[d] + (brick.reference_coordinates(*self.dims()) - e0),
+                                 parts, tangent)
         Q = np.zeros(self.ndof)
-        K = np.zeros((self.ndof, self.ndof)) if tangent else None
-        z, e0_el = np.zeros(96), brick.reference_coordinates(*self.dims())
-        for i in range(self.n):
-            d = self.element_dofs(i)
-            args = (e0_el + u[d], z, *self.dims(), self.E, self.nu)
-            Q[d] += brick.internal_force(*args, ngauss=self.ngauss)
-            if tangent:
-                K[np.ix_(d, d)] += brick.internal_force_jacobians(*args, ngauss=self.ngauss)[0]
+        np.add.at(Q, d, Qk)
+        if not tangent:
+            return Q, None
+        K = np.zeros((self.ndof, self.ndof))
+        np.add.at(K, (d[:, :, None], d[:, None, :]), Kk)
         return Q, K
 
     def tip_force(self, F) -> np.ndarray:

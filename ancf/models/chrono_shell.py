@@ -37,15 +37,14 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
-import scipy.linalg
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from ancf.common.threads import blas_pinned
 from ancf.elements import ancf3443, ancf3833
+from ancf.elements import continuum3d as c3
 from ancf.models.chrono_beam import Solution, cardan_xyz  # noqa: F401 (re-exported)
 
 #: element name -> (module, grid steps per element side)
@@ -195,19 +194,26 @@ def _scatter(plate: Plate, blocks: np.ndarray) -> sp.csr_matrix:
     return sp.csr_matrix((blocks.ravel(), (rows, cols)), shape=(plate.ndof, plate.ndof))
 
 
+@lru_cache(maxsize=16)
+def _kernel(element: str, dims: tuple, H: float, E: float, nu: float, poisson: str):
+    """(e0 (m,) in m, parts): an element's reference and ``continuum3d`` parts, computed
+    once per element, sides (m), thickness (m), material (Pa, -) and Poisson law."""
+    plate = Plate(element=element, nx=1, ny=1, a=dims[0], b=dims[1], H=H, E=E, nu=nu,
+                  poisson=poisson)
+    basis, rules = plate.module.continuum(*dims, H, *plate.material(), **plate.options())
+    return basis.e0, c3.parts(basis, rules)
+
+
 def assemble(plate: Plate, e: np.ndarray, tangent: bool = True):
-    """(Q (ndof,) in N, K sparse in N/m or None) of eq. (1) at the state e (m).  Each
-    element sees e0_el + (A_k (e - e0)), its own reference plus its displacement, so the
-    mesh offset (up to a, m) does not round off the small strains."""
-    m, dims, args, kw = plate.module, (*plate.dims, plate.H), plate.material(), plate.options()
-    u, zero = (e - plate.reference())[plate.dofs], np.zeros(m.NDOF)
-    Q, blocks = np.zeros(plate.ndof), np.zeros((len(u), m.NDOF, m.NDOF)) if tangent else None
-    for k, uk in enumerate(u):
-        ek = plate.element_reference + uk
-        np.add.at(Q, plate.dofs[k], m.internal_force(ek, zero, *dims, *args, **kw))
-        if tangent:
-            blocks[k] = m.internal_force_jacobians(ek, zero, *dims, *args, **kw)[0]
-    return Q, (_scatter(plate, blocks) if tangent else None)
+    """(Q (ndof,) in N, K sparse in N/m or None) of eq. (1) at the state e (m), all elements
+    in one ``continuum3d.static_batch``.  Each element sees its displacement A_k (e - e0),
+    so the mesh offset (up to a, m) does not round off the small strains."""
+    e0, parts = _kernel(plate.element, plate.dims, plate.H, plate.E, plate.nu, plate.poisson)
+    u = (e - plate.reference())[plate.dofs] + (plate.element_reference - e0)
+    Qk, Kk = c3.static_batch(u, parts, tangent)
+    Q = np.zeros(plate.ndof)
+    np.add.at(Q, plate.dofs, Qk)
+    return Q, (_scatter(plate, Kk) if tangent else None)
 
 
 def reference_stiffness(plate: Plate) -> sp.csr_matrix:
@@ -313,13 +319,19 @@ def solve_static(plate: Plate, F: np.ndarray, fixed, rtol: float = 1e-10,
     return Solution(e, maxiter, res, floor, False)
 
 
+#: the shift (rad/s)^2 of the eigensolver: just below 0, so that K - SHIFT M is positive
+#: definite even where rigid motions are left free
+SHIFT = -1.0
+
+
 def modes(plate: Plate, fixed, k: int = 6) -> np.ndarray:
-    """The first k natural frequencies f = w/(2 pi) in Hz of eq. (6) about e0, from
-    ``scipy.linalg.eigh`` on the dense free-coordinate K(e0) (N/m) and M (kg): O(n_f^3),
-    about 55 s CPU and 1.8 GB for the 3833 at 16 x 16 (n_f ~ 7400)."""
+    """The first k natural frequencies f = w/(2 pi) in Hz of eq. (6) about e0: the k
+    eigenvalues w^2 of K(e0) (N/m) and M (kg) on the free coordinates nearest
+    :data:`SHIFT` by ARPACK's shift-invert Lanczos (``scipy.sparse.linalg.eigsh``, one
+    sparse LU of K - SHIFT M); the same values as the dense ``scipy.linalg.eigh`` within
+    1e-9 relative (1.2 s against 55 s CPU for the 3833 at 16 x 16, n_f ~ 7400)."""
     f = plate.free(fixed)
-    K, M = reference_stiffness(plate)[f][:, f], mass(plate)[f][:, f]
-    with blas_pinned():   # one thread: threaded OpenBLAS was 10x slower on a shared machine
-        w2 = scipy.linalg.eigh(K.toarray(), M.toarray(), eigvals_only=True,
-                               subset_by_index=(0, k - 1), overwrite_a=True, overwrite_b=True)
+    K, M = reference_stiffness(plate)[f][:, f].tocsc(), mass(plate)[f][:, f].tocsc()
+    w2 = np.sort(spla.eigsh(K, k=k, M=M, sigma=SHIFT, which="LM",
+                            return_eigenvectors=False))
     return np.sqrt(np.abs(w2)) * np.sign(w2) / (2 * np.pi)

@@ -66,3 +66,22 @@ def test_static_case_follows_E(element, case):
     assert stiffer / value == pytest.approx(1.0 / 1.05, rel=1e-3)
     theory = ce.reference(element, case)
     assert abs((stiffer - theory) / theory * 100.0) > ce.TOLERANCE[element, case][0]
+
+
+@pytest.mark.parametrize("element", ["3243", "3333"])
+def test_batched_assembly_is_the_element_by_element_sum(element):
+    """``assemble`` (all elements in one ``continuum3d.static_batch``) equals the sum of the
+    element's own ``internal_force`` and ``internal_force_jacobians`` at a random state
+    within 1e-13 of the largest entry; a state moved by 1e-9 m does not."""
+    b = cb.Beam(element=element, n=3, L=1.0, H=0.02, W=0.03, rho=7800.0, E=2.0e11, nu=0.3,
+                k1=0.85, k2=0.85)
+    e = b.reference() + 1e-3 * np.random.default_rng(2).standard_normal(b.reference().size)
+    Q, K = cb.assemble(b, e)
+    Q0, K0, zero = np.zeros(e.size), np.zeros((e.size, e.size)), np.zeros(b.module.NDOF)
+    for k in range(b.n):
+        d = b.dofs(k)
+        Q0[d] += b.module.internal_force(e[d], zero, *b.element_args())
+        K0[np.ix_(d, d)] += b.module.internal_force_jacobians(e[d], zero, *b.element_args())[0]
+    assert np.abs(Q - Q0).max() <= 1e-13 * np.abs(Q0).max()
+    assert np.abs(K - K0).max() <= 1e-13 * np.abs(K0).max()
+    assert np.abs(cb.assemble(b, e + 1e-9)[0] - Q0).max() > 1e-13 * np.abs(Q0).max()

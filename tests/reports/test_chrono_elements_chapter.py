@@ -34,14 +34,14 @@ def test_axial_pull_within_chrono_tolerance(element):
     assert r["passed"] and abs(r["error"]) < r["tolerance"] == 0.02, r
 
 
-@pytest.mark.slow   # about 30 s
+@pytest.mark.slow   # about 12 s
 @pytest.mark.parametrize("element", ["3243", "3333", "3843", "3443", "3833"])
 @pytest.mark.parametrize("case", ["tip", "gravity", "twist"])
 def test_static_case_within_chrono_tolerance(element, case):
     assert ce.static_row(element, case)["passed"]
 
 
-@pytest.mark.slow   # about 16 s
+@pytest.mark.slow   # about 10 s
 @pytest.mark.parametrize("element", ["3243", "3333"])
 def test_princeton_uz_miss_at_16_passes_at_32(element):
     coarse = ce.princeton_row(element, "F3", 90.0)
@@ -50,7 +50,7 @@ def test_princeton_uz_miss_at_16_passes_at_32(element):
     assert fine["uz within"] is True and fine["converged"]
 
 
-@pytest.mark.slow   # about 90 s (the 3833's dense eigenproblem)
+@pytest.mark.slow   # about 35 s (three Newton solves at 16 x 16)
 def test_plate_rows_and_checks():
     """The 3833 passes Navier; the 3443 misses by Poisson locking, and its w times the
     locking factor passes; every check on these rows passes (the 3443 with
@@ -66,7 +66,7 @@ def test_plate_rows_and_checks():
         assert check.passed, check
 
 
-@pytest.mark.slow   # about 120 s (Newton and the eigenproblem at 16 x 16)
+@pytest.mark.slow   # about 10 s (Newton and the eigenproblem at 16 x 16)
 def test_plate_3443_plane_stress_w_passes_f4_to_f6_miss():
     """The 3443 with ``poisson="plane_stress"``: w within 1 % of Navier (its check passes);
     f1-f3 within 1 %, f4-f6 miss the 1 % bound by less than 2 % (mesh resolution at
