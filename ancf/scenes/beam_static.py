@@ -10,6 +10,7 @@ spurious zero-energy modes of the report's 1-point shear scheme show up).
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 import numpy as np
 
@@ -69,12 +70,24 @@ def check_integration(p: dict) -> None:
 
 def build(p: dict):
     """(mesh, q0, assembly) of a straight beam along +x from the origin, of the
-    catalogue element ``p["element"]`` (density ``p["rho"]`` if given, else 0: statics)."""
-    cls = ELEMENTS[p["element"]]
-    mesh = BeamMesh(p["L"], p["n_elements"], cls.slots)
+    catalogue element ``p["element"]`` (density ``p["rho"]`` if given, else 0: statics).
+    The mesh and assembly (read-only) are built once per structure and shared by the runs
+    of a sweep or a table (:func:`_built`); q0 is the caller's own copy."""
+    kw = element_kwargs(p["element"], p)
+    mesh, q0, asm = _built(p["element"], p["L"], p["n_elements"], p["b"], p["h"], p["E"],
+                           p["nu"], p.get("rho", 0.0), p["integration"], tuple(sorted(kw.items())))
+    return mesh, q0.copy(), asm
+
+
+@lru_cache(maxsize=32)
+def _built(element: str, L: float, n: int, b: float, h: float, E: float, nu: float,
+           rho: float, integration: str, kwargs: tuple):
+    cls = ELEMENTS[element]
+    mesh = BeamMesh(L, n, cls.slots)
     q0 = mesh.reference()
-    el = cls(mesh.lengths, q0[mesh.dofmap], RectangularSection(p["b"], p["h"]), p["E"], p["nu"],
-             rho=p.get("rho", 0.0), integration=p["integration"], **element_kwargs(p["element"], p))
+    q0.flags.writeable = False
+    el = cls(mesh.lengths, q0[mesh.dofmap], RectangularSection(b, h), E, nu, rho=rho,
+             integration=integration, **dict(kwargs))
     return mesh, q0, Assembly(mesh.n_dofs, [ElementGroup(el, mesh.dofmap)])
 
 
