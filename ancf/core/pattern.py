@@ -14,6 +14,7 @@ scipy loads only where a CSR matrix is made: ``T`` given as a
 """
 from __future__ import annotations
 
+import weakref
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -221,3 +222,18 @@ class ReducedPattern:
 
 
 _EMPTY3 = np.zeros((0, 0, 0))
+
+
+_SHARED = weakref.WeakKeyDictionary()  # assembly -> {(n_free, columns): ReducedPattern}
+
+
+def shared(assembly, T) -> ReducedPattern:
+    """The :class:`ReducedPattern` of ``assembly``'s element groups under the selection T,
+    built once per assembly and T's columns and shared by the runs of a sweep or a table
+    that reuse the assembly (``ancf.scenes.beam_static.build``)."""
+    col = _selection_columns(T, assembly.n_dofs)
+    per = _SHARED.setdefault(assembly, {})
+    key = (int(T.shape[1]), col.tobytes())
+    if key not in per:
+        per[key] = ReducedPattern(assembly.n_dofs, [g.dofmap for g in assembly.groups], T)
+    return per[key]

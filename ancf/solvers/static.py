@@ -14,7 +14,7 @@ import numpy as np
 
 from numba import njit
 
-from ancf.core.pattern import ReducedPattern, assemble_group
+from ancf.core.pattern import ReducedPattern, assemble_group, shared
 from ancf.solvers import banded
 from ancf.solvers.linear import Singular, factor, stability
 
@@ -185,8 +185,8 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
     ``forces`` (an ``ancf.core.forces.Forces``, or None), starting at ``q0``."""
     opt = options or NewtonOptions()
     T, g, _ = elimination.selection()
-    pattern = ReducedPattern(assembly.n_dofs, [grp.dofmap for grp in assembly.groups]
-                             + ([] if forces is None else forces.dofmaps()), T)
+    pattern = shared(assembly, T) if forces is None else ReducedPattern(
+        assembly.n_dofs, [grp.dofmap for grp in assembly.groups] + forces.dofmaps(), T)
     z = pattern.restrict(q0)
     newton = _Newton(assembly, pattern, g, pattern.reduce(Qk), opt, forces, pattern.expand(z, g))
     lam, step = 0.0, 1.0 / opt.n_steps

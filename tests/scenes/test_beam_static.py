@@ -37,3 +37,15 @@ def test_a_cached_model_gives_the_fresh_models_answer():
     assert (first["tip_x"], first["tip_y"]) == (again["tip_x"], again["tip_y"])
     stiffer = run({"n_elements": "6", "E": "3e11"})[0]["results"]
     assert abs(stiffer["tip_y"]) < abs(first["tip_y"])
+
+
+def test_runs_share_the_reduced_pattern_of_the_same_constraints():
+    """``ancf.core.pattern.shared``: two runs of one structure share one pattern; a clamp
+    that fixes one more slope (another T) gets its own, with one column fewer per coordinate
+    fixed (omar-shabana, ``clamp_x_slope``)."""
+    run = SCENES["cantilever"].execute
+    a, b = (run({"n_elements": "5", "element": "omar-shabana"})[1] for _ in range(2))
+    fixed = run({"n_elements": "5", "element": "omar-shabana", "clamp_x_slope": "fixed"})[1]
+    assert a.extra["pattern"] is b.extra["pattern"]
+    assert fixed.extra["pattern"] is not a.extra["pattern"]
+    assert fixed.extra["pattern"].n == a.extra["pattern"].n - 2
