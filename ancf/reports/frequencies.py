@@ -355,13 +355,21 @@ def _belt_part() -> list:
 
 
 # ------------------------------------------------------------------ belt span, moving beam
+def _quick_skipped(head: str, test: str) -> list | None:
+    """A section's heading and the line saying ``--quick`` skips it (its test still runs),
+    or None in a full report."""
+    if not settings().quick:
+        return None
+    return [head, f"Not computed by `--quick` (`tests/checks/{test}.py` still runs it).\n"]
+
+
 def _moving_beam_part() -> list:
     """The spans' first two modes against the moving beam (``ancf.checks.span_spectrum``,
     issue 34): skipped by ``--quick`` (its test still runs)."""
     head = "## The running belt's spans against the axially moving beam\n"
-    if settings().quick:
-        return [head, "Not computed by `--quick` (`tests/checks/test_span_spectrum.py` "
-                "still runs it).\n"]
+    skipped = _quick_skipped(head, "test_span_spectrum")
+    if skipped:
+        return skipped
     from ancf.checks import span_spectrum as ss
     progress("frequencies: belt spans against the moving beam")
     sp = ss.spans()
@@ -400,9 +408,9 @@ def _serpentine_part() -> list:
     """The serpentine drive's rotational modes against the discrete model
     (``ancf.checks.serpentine_modes``, issue 34): skipped by ``--quick``."""
     head = "## The serpentine drive's rotational modes against the discrete model\n"
-    if settings().quick:
-        return [head, "Not computed by `--quick` (`tests/checks/test_serpentine_modes.py` "
-                "still runs it).\n"]
+    skipped = _quick_skipped(head, "test_serpentine_modes")
+    if skipped:
+        return skipped
     from ancf.checks import serpentine_modes as sm
     progress("frequencies: serpentine rotational modes")
     c = sm.compare()
