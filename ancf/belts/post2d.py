@@ -78,14 +78,19 @@ def sample(drive, x, v, t: float, npts: int = 8, state=None) -> BeltSample:
     q, qd = drive.belt(x), drive.belt(v)
     dm = drive.mesh.dofmap
     E, V = q[dm].reshape(-1, 6, 2), qd[dm].reshape(-1, 6, 2)
-    xi, S0 = _shapes(drive, npts)
-    omegas = drive.omegas(t, v)
     o, odot = drive.moved(x, v, t)
+    return sample_elements(drive, E, V, drive.omegas(t, v), o, odot, npts, state)
+
+
+def sample_elements(drive, E, V, omegas, o, odot, npts: int = 8, state=None) -> BeltSample:
+    """:func:`sample` from the element coordinates E and velocities V (nel, 6, 2), the
+    pulleys' angular velocities (np,) rad/s, centres o and their velocities odot (np, 2)."""
+    xi, S0 = _shapes(drive, npts)
     z, h = friction_state(drive, xi, state)
     r, d, Fn, phi, vt = contact_state_stepped(E, V, S0, o, odot, drive.radii, omegas, drive.prm,
                                               z, h)
     s = (np.arange(drive.mesh.n_elements)[:, None] + xi[None, :]) * drive.mesh.lengths[0]
-    N = drive.element.axial_force(q[dm], xi)
+    N = drive.element.axial_force(np.reshape(E, (E.shape[0], -1)), xi)
     flat = lambda a: np.asarray(a).reshape(s.size, *np.shape(a)[2:])  # noqa: E731
     return BeltSample(s.ravel(), flat(r), flat(np.einsum("eqk,ekd->eqd", S0, V)), N.ravel(),
                       flat(d), flat(Fn), flat(phi), flat(vt))
