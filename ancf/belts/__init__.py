@@ -7,6 +7,7 @@ one module each), a tensioner's arm in 2D (``arm2d``), the assembled drive model
 (``drive2d``, ``drive3d``), their compiled forces as named
 records (``forces``) and the bordered system they form for the shared generalised-alpha
 march (``system``), time integration (``dynamics``; ``bdf`` the scipy cross-check), the
-static pre-tension (``pretension``), post-processing (``post2d``, ``post3d``) and the
-axial strain measures of thesis 4.2 (``strains``).
+static pre-tension (``pretension``), the axially moving (ALE) 2D belt (``ale2d``) and its
+steady running state by Newton (``steady2d``), post-processing (``post2d``, ``post3d``)
+and the axial strain measures of thesis 4.2 (``strains``).
 """
