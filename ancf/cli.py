@@ -1,4 +1,5 @@
 """Command line: ``ancf scenes``, ``ancf run SCENE``, ``ancf analytic NAME``,
+``ancf steady belt-drive --file F`` (a drive's steady running state),
 ``ancf modes SCENE``, ``ancf sweep SCENE --grid k=v1,v2``, ``ancf recommend SCENE --tol TOL``,
 ``ancf element NAME`` (one of Chrono's ANCF elements' matrices at a stated state).
 
@@ -293,6 +294,13 @@ def main(argv=None) -> int:
         p.add_argument("name")
         p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter")
         p.add_argument("--json", action="store_true", help="print one JSON object")
+    p = sub.add_parser("steady", help="the steady running state of a belt drive (Newton in "
+                       "the axially moving description, no march)")
+    p.add_argument("name", help="belt-drive")
+    p.add_argument("--file", metavar="PATH", help="the drive file (TOML); --set "
+                   "section.key=value overrides its keys")
+    p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a key")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
     sub.choices["run"].add_argument(
         "--vtk", metavar="DIR", help="write the deformed mesh as a ParaView time series: "
         "DIR/SCENE.pvd and one .vtu per output step")
@@ -399,6 +407,9 @@ def _dispatch(args) -> int:
                 gc.freeze()
                 gc.enable()
             return _run({args.name: sc}, "run", args)
+        if args.cmd == "steady":
+            from ancf.scenes.belt_steady import SCENE as steady
+            return _run({"belt-drive": steady}, "steady", args)
         if args.cmd == "modes":  # the scene's modules and the eigensolver only
             return _modes(args)
         if args.cmd == "scenes":

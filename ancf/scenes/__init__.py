@@ -6,7 +6,8 @@ accuracy warnings and ``sense`` the physical-sense checks (issue 22); ``beam_sta
 the scenes share; ``beam3d_published`` the published data of the 3D beam benchmarks
 (``princeton-beam``, ``beam3d-bending``); ``frames`` the deformed geometry of a finished
 run per output step and ``vtk`` its ParaView output (``--vtk``); ``modes`` the natural
-frequencies and mode shapes of the static scenes (``ancf modes NAME``).
+frequencies and mode shapes of the static scenes (``ancf modes NAME``); ``belt_steady`` a
+drive file's steady running state (``ancf steady belt-drive``).
 
 A scene is one module ``ancf/scenes/<name with _ for ->.py`` that declares ``SCENE =
 Scene(...)`` and its place in the scene list, ``ORDER = <int>`` (``ancf scenes``,
