@@ -125,8 +125,15 @@ def _overrides(args) -> dict:
 
 
 def _modes(args) -> int:
+    if args.name in FILE_SCENES:  # a running drive: about its steady state
+        from ancf.scenes.belt_modes import execute as running
+        out, _ = running(_overrides(args), args.count, args.about or "steady")
+        return _print(out, args)
+    if getattr(args, "file", None) is not None:
+        raise InputError(f"--file: {args.name!r} takes no file; allowed: the scenes "
+                         f"{', '.join(FILE_SCENES)}")
     from ancf.scenes.modes import execute
-    out, _ = execute(args.name, _parse_sets(args.set), args.count, args.about)
+    out, _ = execute(args.name, _parse_sets(args.set), args.count, args.about or "reference")
     return _print(out, args)
 
 
@@ -312,9 +319,12 @@ def main(argv=None) -> int:
     p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter")
     p.add_argument("--count", metavar="K", help="number of modes, lowest first (default 6, "
                    "or the reduced size - 1 if smaller)")
-    p.add_argument("--about", default="reference", metavar="STATE",
+    p.add_argument("--about", default=None, metavar="STATE",
                    help="reference (default) or equilibrium: the tangent stiffness at the "
-                        "scene's static equilibrium under its load (pre-stressed)")
+                        "scene's static equilibrium under its load (pre-stressed); "
+                        "belt-drive: steady (its default), the running drive linearised "
+                        "about its steady state")
+    p.add_argument("--file", metavar="PATH", help="belt-drive: the drive file (TOML)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p = sub.add_parser("element", help="one of Chrono's ANCF elements: its mass, gravity, "
                        "internal force, K and R at a stated state")
