@@ -53,7 +53,9 @@ def _progress():
                                      file=sys.stderr, flush=True)
 
 
-def run(p: dict) -> SceneResult:
+def run(p: dict, max_loads: bool = True) -> SceneResult:
+    """The steady state of the drive of ``p``; ``max_loads`` False leaves the driven
+    pulleys' largest loads out (null; ``ancf modes`` needs the state only)."""
     from ancf.belts.drive_model import build
     from ancf.belts.pretension import settle
     from ancf.belts.steady2d import SteadyProblem, solve
@@ -69,7 +71,7 @@ def run(p: dict) -> SceneResult:
                            f"{_centrifugal(desc, st)})",
                            {**_empty(), "load_factor": st.lam, "newton_iterations": st.iterations,
                             "continuation_steps": st.steps}, extra={"steady": st})
-    results = _results(desc, problem, st)
+    results = _results(desc, problem, st, max_loads)
     results.update(load_factor=1.0, newton_iterations=st.iterations,
                    continuation_steps=st.steps, total_dofs=drive.n + drive.k + 1,
                    pretension_iterations=pre.iterations)
@@ -129,7 +131,7 @@ def state_arrays(problem, st) -> tuple:
     return E, V, omegas, o, np.zeros_like(odot), c[4]
 
 
-def _results(desc, problem, st) -> dict:
+def _results(desc, problem, st, max_loads: bool = True) -> dict:
     from ancf.belts.post2d import sample_elements, span_speed, span_tension
     drive = problem.drive
     E, V, omegas, o, odot, T = state_arrays(problem, st)
@@ -148,7 +150,7 @@ def _results(desc, problem, st) -> dict:
     d = next(i for i, q in enumerate(desc.pulleys) if q.law == "prescribed")
     rim = np.array([q.side for q in desc.pulleys]) * omegas * drive.radii
     slip = 1.0 - rim / rim[d] if rim[d] != 0 else np.full(rim.size, np.nan)
-    loads = _max_loads(desc, problem, st)
+    loads = _max_loads(desc, problem, st) if max_loads else {}
     pulleys = [{"name": q.name, "omega": float(omegas[i]), "slip": float(slip[i]),
                 "torque_Nm": float(T[i]), "hubload_N": hub[i].tolist(),
                 "stick_arc_rad": stick[i], "creep_arc_rad": creep[i],

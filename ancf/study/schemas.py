@@ -130,7 +130,22 @@ def names() -> list[str]:
     ``modes SCENE``."""
     from ancf.scenes.modes import MODAL
     return [f"{command} {n}" for n, (command, _) in registries().items()] + [
-        f"modes {n}" for n in MODAL]
+        f"modes {n}" for n in MODAL] + list(RUNNING)
+
+
+def _steady_scene():
+    from ancf.scenes.belt_steady import SCENE
+    return SCENE
+
+
+def _running_modes_scene():
+    from ancf.scenes.belt_modes import SCENE
+    return SCENE
+
+
+#: the running drive's commands: ``ancf steady belt-drive``, ``ancf modes belt-drive``
+#: (about its steady state): name -> () -> its Scene, with its own result keys
+RUNNING = {"steady belt-drive": _steady_scene, "modes belt-drive": _running_modes_scene}
 
 
 def _lookup(name: str) -> tuple[str, str, object]:
@@ -141,6 +156,8 @@ def _lookup(name: str) -> tuple[str, str, object]:
     words = name.split() if isinstance(name, str) else []
     if words[:1] == ["ancf"]:
         words = words[1:]
+    if " ".join(words) in RUNNING:
+        return words[0], words[1], RUNNING[" ".join(words)]()
     if len(words) == 2 and words[0] in ("run", "analytic", "modes"):
         command, bare = words
     elif len(words) == 1:
@@ -208,7 +225,9 @@ def schema(name: str) -> dict:
     command, name, sc = _lookup(name)
     props = {"scene": {"type": STR, "const": name}, "params": _params_schema(sc),
              "converged": {"type": BOOL}, "message": {"type": STR},
-             "results": _result_schema(MODES if command == "modes" else sc.results), "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
+             "results": _result_schema(MODES if command == "modes"
+                                       and f"modes {name}" not in RUNNING else sc.results),
+             "cpu_time_s": {"type": NUM, "description": "process CPU seconds of the run, without "
                             "compiling or loading numba kernels"},
              "compile_cpu_s": {"type": NUM, "description": "process CPU seconds spent compiling "
                                "numba kernels or loading them from numba's cache during the run "

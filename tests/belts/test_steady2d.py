@@ -152,3 +152,17 @@ def test_bad_input_is_one_line(cli, name, field):
     rc, _, err = cli("steady", "belt-drive", "--file", str(REPO / "examples" / name))
     assert rc == 2 and err.startswith(f"error: {field}") and err.count("\n") == 1, err
     assert "allowed:" in err
+
+
+def test_outputs_follow_their_schemas(serpentine, cli):
+    """``ancf steady belt-drive`` and ``ancf modes belt-drive --about steady`` print JSON
+    that validates against their schemas (reports/schemas.md)."""
+    import json
+    from ancf.study.schemas import validate
+    out, _ = serpentine
+    assert validate(json.loads(json.dumps(out)), "steady belt-drive") == []
+    rc, text, _ = cli("modes", "belt-drive", "--file", SERPENTINE, "--count", "3", "--json")
+    modes = json.loads(text)
+    assert rc == 0 and len(modes["results"]["frequencies_hz"]) == 3
+    assert validate(modes, "modes belt-drive") == []
+    assert modes["results"]["labels"][0] == "arm tensioner"
