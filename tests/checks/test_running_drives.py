@@ -1,0 +1,96 @@
+"""Running drives (ancf/checks/running_drives.py, reports/running_drives.md): the steady
+states against the march's numbers the chapter stored (reports/data/running_drives_*.csv,
+written by ``ancf run belt-drive`` in a full report), hubloads against the span tensions,
+span modes against the axially moving beam, the serpentine's rotational modes against the
+march's matrix pencil (reports/data/frequencies_serpentine_modes.csv)."""
+from __future__ import annotations
+
+import csv
+import math
+
+import numpy as np
+import pytest
+
+from ancf.checks import running_drives as rd
+from ancf.common.paths import REPO
+
+DATA = REPO / "reports" / "data"
+
+
+def _csv(name: str) -> list[dict]:
+    with open(DATA / f"{name}.csv", encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+def _thesis_items() -> tuple:
+    from ancf.checks.span_spectrum import overrides
+    return tuple(o for o in overrides() if not o.startswith("run.dt"))
+
+
+def test_thread_steady_state_matches_the_march():
+    """THREAD with the creep-rate law: span tensions within 0.5 % (seen 0.009 %) and the
+    driven speed within 0.1 % (seen 0.003 %) of the march's 2.0-2.45 s means."""
+    out, _ = rd.steady(rd.THREAD)
+    march = {r["span"]: float(r["march"]) for r in _csv("running_drives_thread_spans")}
+    for s in out["results"]["spans"]:
+        assert abs(s["tension_mean_N"] / march[f"{s['from']} → {s['to']}"] - 1) <= 0.005
+    speeds = {r["name"]: float(r["march"]) for r in _csv("running_drives_thread_pulleys")}
+    driven = next(p for p in out["results"]["pulleys"] if p["name"] == "driven")
+    assert abs(driven["omega"] / speeds["driven"] - 1) <= 0.001
+
+
+def test_serpentine_steady_state_matches_the_march():
+    """Serpentine: span tensions and pulley speeds within 0.5 % (seen 0.26 %, 0.05 %), the
+    arm within 0.05° (seen 0.03°) of the march's steady window."""
+    out, _ = rd.steady(rd.SERPENTINE)
+    r = out["results"]
+    march = {x["span"]: float(x["march"]) for x in _csv("running_drives_serpentine_spans")}
+    for s in r["spans"]:
+        assert abs(s["tension_mean_N"] / march[f"{s['from']} → {s['to']}"] - 1) <= 0.005
+    speeds = {x["name"]: float(x["march"]) for x in _csv("running_drives_serpentine_pulleys")}
+    for p in r["pulleys"]:
+        assert abs(p["omega"] / speeds[p["name"]] - 1) <= 0.005, p["name"]
+    arm = _csv("running_drives_serpentine_arms")[0]
+    assert abs(math.degrees(r["arms"][0]["angle_rad"]) - float(arm["march_deg"])) <= 0.05
+
+
+@pytest.mark.parametrize("path", [rd.THREAD, rd.SERPENTINE], ids=["thread", "serpentine"])
+def test_hubloads_are_the_span_tensions_summed(path):
+    """Seen: THREAD 0.57 %, serpentine 0.32 %; the centrifugal part matters (THREAD's
+    rho A v^2 alone is 1 N of 850)."""
+    rows = rd.hubloads(path)
+    assert rd.hub_check("x", rows).passed
+
+
+def test_thesis_span_modes_within_1_percent_of_the_moving_beam():
+    """Thesis drive at 120 rad/s: both spans' first two modes within 1 % of the pinned
+    moving beam (seen 0.19 %)."""
+    rows = rd.span_modes(rd.THESIS, _thesis_items())
+    assert len(rows) == 2 and rd.span_check("x", rows).passed
+
+
+def test_thread_span_modes_within_1_percent_of_the_moving_beam():
+    """THREAD (creep-rate): seen 0.49 % (slack span, mode 2)."""
+    rows = rd.span_modes(rd.THREAD)
+    assert len(rows) == 2 and rd.span_check("x", rows).passed
+
+
+def test_serpentine_span_modes_bracketed():
+    """Serpentine on 120 elements: its short spans' modes lie within 1 % of the bracket
+    [pinned, clamped] though not all within 1 % of the pinned beam: DIFFERS (explained)."""
+    rows = rd.span_modes(rd.SERPENTINE, rd.SERPENTINE_FINE, 20)
+    check = rd.span_check("x", rows)
+    assert rd.status(check, rows) in ("PASS", "DIFFERS (explained)")
+    assert rd.bracketed(rows)
+
+
+def test_serpentine_rotational_modes_match_the_march():
+    """Arm, alternator and pump within 1 % of the march's poles (seen -0.9, -0.8, -0.4 %),
+    though 11-12 % below the discrete model (no belt mass, no creep)."""
+    rows = rd.rotational(march_too=False)
+    measured = {r["mode"]: float(r["measured Hz"]) for r in _csv("frequencies_serpentine_modes")}
+    for row in rows:
+        f = measured[rd.ROTATIONAL[row["mode"]]]
+        assert abs(row["ours"] / f - 1) <= 0.01, row
+        assert row["error_discrete_pct"] < -5
+    assert np.all([r["zeta"] > 0 for r in rows])
