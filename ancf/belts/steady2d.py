@@ -255,8 +255,9 @@ def solve(problem: SteadyProblem, x0, progress=None) -> Steady:
         def at_speed(state, t):
             problem.speed = t
             return problem.newton(*state, 0.0, scale)
-        (x1, w1, vb1), reached, it, steps, res = _continue(at_speed, start[:3], scale,
-                                                           progress, "speed factor")
+        (x1, w1, vb1), reached, it, steps, res = _continue(
+            at_speed, start[:3], scale, progress, "speed factor", problem,
+            first=lambda t: (x, w * t, vb * t))  # rolling, at the first step's speed
         iters += it
         problem.speed = 1.0
         if reached < 1.0 or not start[3]:
@@ -275,17 +276,18 @@ def solve(problem: SteadyProblem, x0, progress=None) -> Steady:
                   iterations=iters, steps=steps, residual=res, scale=scale)
 
 
-def _continue(newton, state, scale, progress, label, problem=None) -> tuple:
+def _continue(newton, state, scale, progress, label, problem, first=None) -> tuple:
     """Follow ``newton(state, t)`` (:meth:`SteadyProblem.newton`'s outcome) from a
     converged ``state`` (x, w, vb) at t = 0 to t = 1: steps widened after quick
     convergence, halved after a failure down to MIN_STEP, a secant predictor in the
-    unknowns.  Returns (state, t reached, iterations, steps, |R| at the last step)."""
+    unknowns (``first(t)``: the first step's guess, else the start).  Returns (state, t
+    reached, iterations, steps, |R| at the last step)."""
     t, dt, iters, steps, res = 0.0, 0.125, 0, 0, 0.0
     last = None
     while t < 1.0:
         target = min(1.0, t + dt)
-        guess = state
-        if last is not None and problem is not None:
+        guess = state if first is None or last is not None else first(target)
+        if last is not None:
             u, u0 = problem.split(*state), problem.split(*last[1])
             guess = problem.join(u + (u - u0) * (target - t) / (t - last[0]), state[0])
         x, w, vb, ok, it, r = newton(guess, target)

@@ -12,7 +12,8 @@ largest load it carries before gross slip (a driven pulley's, by continuation in
 load alone); per span its free length, tension over the middle third and speed; per
 tensioner its arm's angle; along the belt its axial force, speed, contact pressure and
 friction.  Exit 3 where no steady state is found, naming the load factor reached and the
-pulley whose wrap saturated.
+pulley whose wrap saturated, and where the state found slips over a whole contact arc
+(a load beyond the friction's capacity, the belt's speed beyond the wraps' contact).
 """
 from __future__ import annotations
 
@@ -71,6 +72,14 @@ def run(p: dict, max_loads: bool = True) -> SceneResult:
                            f"{_centrifugal(desc, st)})",
                            {**_empty(), "load_factor": st.lam, "newton_iterations": st.iterations,
                             "continuation_steps": st.steps}, extra={"steady": st})
+    slipping = gross_slip(problem, st.x, st.w, st.vb)
+    if slipping is not None:
+        return SceneResult(False, f"no steady state without gross slip: pulley "
+                           f"{desc.pulleys[slipping].name!r} slips over its whole contact arc "
+                           f"(its load or speed beyond the friction's capacity"
+                           f"{_centrifugal(desc, st)})",
+                           {**_empty(), "load_factor": 1.0, "newton_iterations": st.iterations,
+                            "continuation_steps": st.steps}, extra={"steady": st})
     results = _results(desc, problem, st, max_loads)
     results.update(load_factor=1.0, newton_iterations=st.iterations,
                    continuation_steps=st.steps, total_dofs=drive.n + drive.k + 1,
@@ -93,15 +102,12 @@ def _centrifugal(desc, st) -> str:
 
 
 def warn(p: dict, res: SceneResult) -> list:
-    """A finished steady state that should not be trusted: a wrap slipping over its whole
-    arc (gross slip), Newton stalled above its tolerance."""
+    """A finished steady state that should not be trusted: Newton stalled above its
+    tolerance (a wrap slipping over its whole arc is no steady state: :func:`run`)."""
     st = res.extra.get("steady")
     if st is None or not res.converged:
         return []
-    out = [f"pulley {q['name']!r} slips over its whole wrap (gross slip, slip {q['slip']:.3g}): "
-           "the drive cannot carry this speed or load without sliding"
-           for q in res.results["pulleys"]
-           if q["creep_arc_rad"] > 0 and q["stick_arc_rad"] == 0]
+    out = []
     from ancf.belts.steady2d import RTOL
     if st.residual > RTOL * st.scale:
         out.append(f"Newton stalled at |R| = {st.residual:.3g} N ({st.residual / st.scale:.2g} "
@@ -111,9 +117,11 @@ def warn(p: dict, res: SceneResult) -> list:
 
 
 def _empty() -> dict:
-    return {k: None for k in ("pulleys", "spans", "arms", "belt_s_m", "axial_force_N",
-                              "speed_m_s", "contact_pressure_N_m", "friction_force_N_m",
-                              "belt_x_m", "belt_y_m", "transport_speed_m_s")}
+    """The results of a run without a steady state (the counts filled in by the caller)."""
+    return {**{k: None for k in ("pulleys", "spans", "arms", "belt_s_m", "axial_force_N",
+                                 "speed_m_s", "contact_pressure_N_m", "friction_force_N_m",
+                                 "belt_x_m", "belt_y_m", "transport_speed_m_s")},
+            "load_factor": 0.0, "newton_iterations": 0, "continuation_steps": 0}
 
 
 def state_arrays(problem, st) -> tuple:
@@ -279,11 +287,11 @@ def _saturated(desc, problem, st) -> str:
     from ancf.belts.post2d import sample_elements
     E, V, omegas, o, odot, _ = state_arrays(problem, st)
     smp = sample_elements(problem.drive, E, V, omegas, o, odot)
-    _, creep = _arcs(problem.drive, smp)
-    wraps = desc.path.wraps
-    worst = int(np.argmax(np.array(creep) / np.maximum(wraps, 1e-9)))
+    stick, creep = map(np.array, _arcs(problem.drive, smp))
+    share = creep / np.maximum(stick + creep, 1e-12)
+    worst = int(np.argmax(share))
     return (f"pulley {desc.pulleys[worst].name!r}: friction saturated over "
-            f"{creep[worst] / max(wraps[worst], 1e-9):.0%} of its wrap (gross slip)")
+            f"{share[worst]:.0%} of its contact arc (gross slip)")
 
 
 RESULTS = {

@@ -166,3 +166,34 @@ def test_outputs_follow_their_schemas(serpentine, cli):
     assert rc == 0 and len(modes["results"]["frequencies_hz"]) == 3
     assert validate(modes, "modes belt-drive") == []
     assert modes["results"]["labels"][0] == "arm tensioner"
+
+
+@pytest.mark.parametrize("sets, words", [
+    (("pulleys.crank.omega_final=600",), ("crank", "sqrt(T0 / rho A)")),
+    (("pulleys.alternator.load_torque=30",), ("alternator", "gross slip"))])
+def test_no_steady_state_is_exit_3_with_the_reason(cli, sets, words):
+    """Beyond the critical speed (the wraps unload) or a load past the alternator's largest
+    (11.9 N m): exit 3, the message naming the slipping pulley and the cause."""
+    args = [a for s in sets for a in ("--set", s)]
+    rc, out, _ = cli("steady", "belt-drive", "--file", SERPENTINE, *args)
+    assert rc == 3 and all(w in out for w in words), out
+
+
+@pytest.mark.parametrize("args, field", [(("--about", "reference"), "--about"),
+                                         (("--count", "0"), "--count")])
+def test_running_modes_bad_input(cli, args, field):
+    rc, _, err = cli("modes", "belt-drive", "--file", SERPENTINE, *args)
+    assert rc == 2 and err.startswith(f"error: {field}") and err.count("\n") == 1, err
+
+
+def test_friction_keys_change_the_answer(serpentine, cli):
+    """mu sets the largest load (a wrap's capacity), nu_s the creep (the slip)."""
+    import json
+    base = {p["name"]: p for p in serpentine[0]["results"]["pulleys"]}
+    for key, value, what in (("friction.mu", "0.4", "max_load_Nm"), ("friction.nu_s", "2e4",
+                                                                     "slip")):
+        rc, text, _ = cli("steady", "belt-drive", "--file", SERPENTINE, "--json",
+                          "--set", f"{key}={value}")
+        got = {p["name"]: p for p in json.loads(text)["results"]["pulleys"]}
+        assert rc == 0
+        assert abs(got["alternator"][what] / base["alternator"][what] - 1) > 0.05, key
