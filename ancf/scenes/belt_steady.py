@@ -47,6 +47,23 @@ def _checked(p: dict):
     return desc
 
 
+def steady_route(p: dict) -> dict:
+    """What ``ancf recommend belt-drive`` says of the steady route for the drive of ``p``:
+    ``command`` (``ancf steady belt-drive`` on the same file and overrides), ``applies``
+    and ``why`` (the steady reference's question is a steady state; a file the steady solve
+    does not take says which key)."""
+    sets = "".join(f" --set {item}" for item in bd._items(p))
+    command = f"ancf steady belt-drive --file {p['file']}{sets}"
+    try:
+        _checked(p)
+    except InputError as exc:
+        return {"command": command, "applies": False, "why": str(exc)}
+    return {"command": command, "applies": True,
+            "why": "the steady reference's quantities (span tensions, pulley speeds at the "
+                   "laws' final values) are a steady state: one Newton solve in the ALE "
+                   "description answers them without a march (reports/running_drives.md)"}
+
+
 def _progress():
     if not sys.stderr.isatty():
         return None

@@ -301,6 +301,11 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
                                       f"{1 + WORK_TIE:g}x, ordered by nominal work, model size, "
                                       "error, defaults (ancf.study.selection)",
                               "calibration": cal.as_dict() if cal else None}
+    if scene == "belt-drive":  # a steady question has a route without a march
+        from ancf.scenes.belt_steady import steady_route
+        evidence["steady_route"] = route = steady_route(base)
+        if route["applies"]:
+            lines.append(f"The steady state itself: `{route['command']}` ({route['why']}).")
     result["message"] = " ".join(x for x in lines if x)
     result["evidence"] = evidence
     result["exit_code"] = code

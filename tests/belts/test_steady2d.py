@@ -197,3 +197,13 @@ def test_friction_keys_change_the_answer(serpentine, cli):
         got = {p["name"]: p for p in json.loads(text)["results"]["pulleys"]}
         assert rc == 0
         assert abs(got["alternator"][what] / base["alternator"][what] - 1) > 0.05, key
+
+
+def test_steady_route_of_recommend():
+    """``ancf recommend belt-drive`` offers ``ancf steady`` where the file takes it, and
+    names the key where it does not (the bristle law)."""
+    from ancf.scenes.belt_steady import steady_route
+    ok = steady_route({"file": SERPENTINE, "set": "friction.mu=0.7"})
+    assert ok["applies"] and ok["command"].endswith("--set friction.mu=0.7")
+    no = steady_route({"file": str(REPO / "examples" / "thread_benchmark.toml"), "set": ""})
+    assert not no["applies"] and no["why"].startswith("friction.law")

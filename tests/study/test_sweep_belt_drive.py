@@ -72,6 +72,9 @@ def test_sweep_and_recommend_a_drive_file(tmp_path, cli):
     rec = json.loads(stdout)
     assert rc == 0 and rec["found"] and rec["params"]["n_elements"] == 40
     assert rec["error"] == pytest.approx(df["error"].iloc[0], rel=1e-12)
+    route = rec["evidence"]["steady_route"]  # the steady question's route without a march
+    assert route["applies"] and route["command"].startswith("ancf steady belt-drive --file")
+    assert route["command"] in rec["message"]
     rc, stdout, _ = cli("recommend", "belt-drive", "--file", THREE, *SHORT, "--tol",
                          f"{float(0.5 * df['error'].min())!r}", "--data", str(out), "--json")
     assert rc == 3 and not json.loads(stdout)["found"]
