@@ -8,10 +8,14 @@ numba worker process does) stays cheap.
 Numba's on-disk cache is invalidated only when a compiled function's own file changes,
 not when a function it calls (and compiles in) does: after editing ``contact3d.py`` the
 belt march would keep running the old contact kernel from its cache.  So the cache
-lives in a directory named by a hash of the package's sources
-(``$XDG_CACHE_HOME/ancf-bench/<hash>``, default ``~/.cache``): any edit starts a fresh
-cache, and an unchanged tree reuses its compiled kernels.  A ``NUMBA_CACHE_DIR`` set
-by the user wins; importing numba before ancf keeps numba's default location.
+lives in a directory named by a hash of the sources compiled code can reach
+(``$XDG_CACHE_HOME/ancf-bench/<hash>``, default ``~/.cache``): the folders of
+:data:`KERNEL_FOLDERS`, the layers that hold every compiled kernel and everything a kernel
+can import (the layers import only those below them, ``tests/common/test_layers.py``;
+``tests/common/test_imports.py`` keeps numba out of the other folders).  An edit there
+starts a fresh cache; an edit of a scene, check, report or the study layer keeps the
+compiled kernels.  A ``NUMBA_CACHE_DIR`` set by the user wins; importing numba before
+ancf keeps numba's default location.
 """
 from __future__ import annotations
 
@@ -20,15 +24,28 @@ import os
 from pathlib import Path
 
 
-def numba_cache_dir(root: Path | None = None) -> Path:
-    """The cache directory for the sources below ``root`` (default: this package)."""
+#: the package's folders with compiled code, and the layers below them (ancf.common.layers)
+KERNEL_FOLDERS = ("common", "core", "solvers", "elements", "models", "belts")
+
+
+def source_hash(root: Path | None = None, folders=None) -> str:
+    """A hash (16 hex digits) of the sources below ``root`` (default: this package), of
+    the ``folders`` below it only where given."""
     root = root or Path(__file__).resolve().parent
+    paths = (root.rglob("*.py") if folders is None
+             else (p for f in folders for p in (root / f).rglob("*.py")))
     digest = hashlib.sha1()
-    for path in sorted(root.rglob("*.py")):
+    for path in sorted(paths):
         digest.update(path.relative_to(root).as_posix().encode())
         digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+def numba_cache_dir(root: Path | None = None, folders=KERNEL_FOLDERS) -> Path:
+    """The cache directory for the kernel sources below ``root`` (default: this package;
+    ``folders`` None: every source)."""
     base = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
-    return base / "ancf-bench" / digest.hexdigest()[:16]
+    return base / "ancf-bench" / source_hash(root, folders)
 
 
 os.environ.setdefault("NUMBA_CACHE_DIR", str(numba_cache_dir()))

@@ -64,15 +64,15 @@ def _list(registry, title):
 
 def _scenes() -> int:
     """``ancf scenes``: the listing is a function of the sources alone, so it is kept beside
-    numba's cache, in the directory named by the hash of the sources (:mod:`ancf`): the
-    first listing of a source tree imports every scene and reference (a second), later
-    ones read the text.  Any source edit starts a new directory, so it is never stale."""
+    numba's cache in a file named by the hash of every source (:func:`ancf.source_hash`):
+    the first listing of a source tree imports every scene and reference (a second),
+    later ones read the text.  Any source edit names a new file, so it is never stale."""
     import io
     import os
     from contextlib import redirect_stdout
 
-    from ancf import numba_cache_dir
-    path = numba_cache_dir() / "scenes.txt"
+    from ancf import numba_cache_dir, source_hash
+    path = numba_cache_dir() / f"scenes-{source_hash()}.txt"  # the listing: every source
     try:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError):

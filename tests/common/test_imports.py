@@ -167,14 +167,39 @@ def test_no_import_cycles():
 
 
 def test_numba_cache_follows_the_sources(tmp_path):
-    """Any edit of a source starts a fresh numba cache (a cached caller would otherwise keep
-    the old code of the kernels it compiles in); unchanged sources reuse theirs."""
+    """An edit of a kernel folder's source starts a fresh numba cache (a cached caller would
+    otherwise keep the old code of the kernels it compiles in); unchanged sources, and
+    edits above the kernel layers (a scene's), reuse theirs."""
     import ancf
-    (tmp_path / "a.py").write_text("x = 1\n")
+    for folder in ("belts", "scenes"):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / "a.py").write_text("x = 1\n")
     first = ancf.numba_cache_dir(tmp_path)
     assert ancf.numba_cache_dir(tmp_path) == first and first.parent.name == "ancf-bench"
-    (tmp_path / "a.py").write_text("x = 2\n")
+    (tmp_path / "scenes" / "a.py").write_text("x = 2\n")
+    assert ancf.numba_cache_dir(tmp_path) == first
+    (tmp_path / "belts" / "a.py").write_text("x = 2\n")
     assert ancf.numba_cache_dir(tmp_path) != first
+
+
+def test_compiled_code_lives_in_the_kernel_folders():
+    """Every module that compiles (njit, jit, leaf, overload, vectorize: as a decorator or
+    called) lies in ancf.KERNEL_FOLDERS, whose sources alone name the numba cache; a layer
+    it imports is one of them too (the layers import downwards only).  Using numba's
+    runtime (the CLI's compiler warm-up, the sweep pool's compile events) compiles
+    nothing of ours."""
+    import re
+
+    import ancf
+    from ancf.common.layers import LAYERS  # noqa: F401  (the layer table this relies on)
+    root = Path(ancf.__file__).resolve().parent
+    pattern = re.compile(r"(@|\b)(njit|jit|leaf|overload|vectorize|guvectorize)\b\s*[(\n]")
+    outside = [p.relative_to(root).as_posix() for p in root.rglob("*.py")
+               if pattern.search(p.read_text())
+               and p.relative_to(root).parts[0] not in ancf.KERNEL_FOLDERS]
+    assert outside == []
+    assert pattern.search((root / "belts" / "contact2d.py").read_text())  # it sees kernels
+    assert pattern.search("@njit(cache=True)\ndef f(x):\n") and not pattern.search("njit")
 
 
 @pytest.mark.slow
@@ -193,7 +218,7 @@ def test_scenes_listing_is_kept_for_the_sources(tmp_path):
     assert first.stdout == second.stdout and "Scenes (ancf run NAME):" in first.stdout
     assert "ancf.scenes.cantilever" in first.stderr.splitlines()[-1]
     assert second.stderr.strip().splitlines()[-1] == "[]"
-    assert list(tmp_path.glob("ancf-bench/*/scenes.txt"))
+    assert list(tmp_path.glob("ancf-bench/*/scenes-*.txt"))
 
 
 @pytest.mark.slow
