@@ -259,3 +259,33 @@ def status(check: Check, rows: list[dict] | None = None) -> str:
     if check.passed:
         return "PASS"
     return "DIFFERS (explained)" if rows is not None and bracketed(rows) else "FAIL"
+
+
+def spectrum_rows(march_peaks: dict | None = None) -> list[dict]:
+    """The thesis drive at 120 rad/s: each span's first two running modes against the
+    march's spectral peaks (:func:`ancf.checks.span_spectrum.spans`, or ``march_peaks``
+    {span "A -> B": peaks Hz}), ours carried through the march's period error
+    (:func:`ancf.checks.span_spectrum.alpha_frequency` at its step and rho_inf)."""
+    from ancf.checks import span_spectrum as ss
+    from ancf.checks.span_spectrum import overrides
+    items = tuple(o for o in overrides() if not o.startswith("run.dt"))
+    out, res = modes(THESIS, items)
+    rho_inf = res.extra["description"].run["rho_inf"]
+    peaks = march_peaks or {k: v["peaks"] for k, v in ss.spans()["spans"].items()}
+    rows = []
+    for r in span_modes(THESIS, items):
+        key = r["span"].replace(" → ", " -> ")
+        mapped = np.array([ss.alpha_frequency(f, ss.DT, rho_inf) for f in r["ours"]])
+        got = np.asarray(peaks[key], dtype=float)
+        k = min(got.size, mapped.size)
+        rows.append({"span": r["span"], "ours Hz": r["ours"][:k],
+                     "ours at the march's step Hz": mapped[:k], "march peak Hz": got[:k],
+                     "error_pct": 100 * (mapped[:k] / got[:k] - 1)})
+    return rows
+
+
+def spectrum_check(rows: list[dict]) -> Check:
+    worst = max(float(np.nanmax(np.abs(r["error_pct"]))) for r in rows)
+    return Check("Thesis 120 rad/s: span modes 1-2 within 1 % of the march's spectrum", worst,
+                 0.0, worst, TOL["modes"], "%", "largest abs(f_h / peak − 1), f_h ours through "
+                 "the march's period error (ancf/checks/span_spectrum.py)")
