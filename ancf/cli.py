@@ -127,13 +127,15 @@ def _overrides(args) -> dict:
 def _modes(args) -> int:
     if args.name in FILE_SCENES:  # a running drive: about its steady state
         from ancf.scenes.belt_modes import execute as running
-        out, _ = running(_overrides(args), args.count, args.about or "steady")
+        about = "steady" if args.about is None else args.about
+        out, _ = running(_overrides(args), args.count, about)
         return _print(out, args)
     if getattr(args, "file", None) is not None:
         raise InputError(f"--file: {args.name!r} takes no file; allowed: the scenes "
                          f"{', '.join(FILE_SCENES)}")
     from ancf.scenes.modes import execute
-    out, _ = execute(args.name, _parse_sets(args.set), args.count, args.about or "reference")
+    about = "reference" if args.about is None else args.about
+    out, _ = execute(args.name, _parse_sets(args.set), args.count, about)
     return _print(out, args)
 
 

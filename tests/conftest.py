@@ -6,13 +6,54 @@ returns its code or exits.  ``examples``: the repository's ``examples/`` folder.
 
 Tiers: ``make test-fast`` runs every test not marked ``slow`` (``pytest -m "not slow"``),
 ``make test`` all of them; a test that takes more than a few seconds on an idle machine is
-marked ``@pytest.mark.slow`` in its own file.
+marked ``@pytest.mark.slow`` in its own file.  Under xdist the controller first compiles
+the kernels most files share (:data:`WARM_UP`), so the two workers do not both compile them.
 """
 import os
+import subprocess
+import sys
 
 import pytest
 
 from ancf.common.paths import REPO
+
+#: the kernels most test files compile (the belt marches: 2D stateless, 2D with the bristle
+#: law's state, 3D; the ALE belt; the beams), as commands in two groups run side by side
+#: before xdist starts its workers, so that the workers load them from numba's cache
+#: instead of compiling the same kernels twice at once (about 110, 70 and 80 CPU s cold)
+WARM_UP = (
+    (("run", "belt-drive", "--file", "examples/serpentine.toml", "--set", "run.t_end=0.002",
+      "--set", "run.output_dt=0.001", "--set", "run.steady_window=0.001"),
+     ("run", "belt-drive", "--file", "examples/thread_benchmark.toml", "--set",
+      "run.t_end=0.001", "--set", "run.output_dt=0.0005", "--set", "run.steady_window=0.0005"),
+     ("steady", "belt-drive", "--file", "examples/thesis_table_3_1.toml")),
+    (("run", "belt3d", "--set", "t_end=0.002", "--set", "output_dt=0.001"),
+     ("run", "cantilever"), ("run", "pendulum", "--set", "t_end=0.01")))
+
+
+def _warm(group) -> str:
+    """Run one group's commands in order in a child process each; '' or what failed."""
+    for argv in group:
+        p = subprocess.run([sys.executable, "-m", "ancf.cli", *argv, "--json"], cwd=REPO,
+                           capture_output=True, text=True)
+        if p.returncode != 0:
+            return f"{' '.join(argv)}: exit {p.returncode}"
+    return ""
+
+
+def pytest_sessionstart(session):
+    """Under xdist (``-n``), in the controller before the workers start: compile the kernels
+    of :data:`WARM_UP` once, its two groups side by side (a warm cache makes this a few
+    seconds).  ``ANCF_WARM_UP=0`` skips it; a failure is only reported, the tests find it."""
+    config = session.config
+    if (hasattr(config, "workerinput") or not getattr(config.option, "numprocesses", None)
+            or os.environ.get("ANCF_WARM_UP") == "0"):
+        return
+    from concurrent.futures import ThreadPoolExecutor
+    with ThreadPoolExecutor(len(WARM_UP)) as ex:
+        failed = [f for f in ex.map(_warm, WARM_UP) if f]
+    for f in failed:
+        print(f"warm-up: {f}", file=sys.stderr)
 
 
 @pytest.fixture(scope="module")

@@ -132,7 +132,7 @@ def hubloads(path, items: tuple = ()) -> list[dict]:
     """Per pulley the hubload against the two spans' tensions summed as vectors: the true
     force N |r_x| less rho A v^2 (the wrap's centrifugal part) along each span's direction
     (the belt's points at its thirds); % of the hubload's magnitude."""
-    out, res = steady(path, items)
+    out, res = steady(path, items, False)
     r, desc = out["results"], res.extra["description"]
     xy = np.column_stack([r["belt_x_m"], r["belt_y_m"]])
     b = desc.belt

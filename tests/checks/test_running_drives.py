@@ -32,7 +32,7 @@ def _thesis_items() -> tuple:
 def test_thread_steady_state_matches_the_march():
     """THREAD with the creep-rate law: span tensions within 0.5 % (seen 0.009 %) and the
     driven speed within 0.1 % (seen 0.003 %) of the march's 2.0-2.45 s means."""
-    out, _ = rd.steady(rd.THREAD)
+    out, _ = rd.steady(rd.THREAD, (), False)
     march = {r["span"]: float(r["march"]) for r in _csv("running_drives_thread_spans")}
     for s in out["results"]["spans"]:
         assert abs(s["tension_mean_N"] / march[f"{s['from']} → {s['to']}"] - 1) <= 0.005
@@ -44,7 +44,7 @@ def test_thread_steady_state_matches_the_march():
 def test_serpentine_steady_state_matches_the_march():
     """Serpentine: span tensions and pulley speeds within 0.5 % (seen 0.26 %, 0.05 %), the
     arm within 0.05° (seen 0.03°) of the march's steady window."""
-    out, _ = rd.steady(rd.SERPENTINE)
+    out, _ = rd.steady(rd.SERPENTINE, (), False)
     r = out["results"]
     march = {x["span"]: float(x["march"]) for x in _csv("running_drives_serpentine_spans")}
     for s in r["spans"]:

@@ -102,7 +102,11 @@ def test_schema_names_as_the_readme_writes_them():
     assert schema("analytic reissner")["title"] == "ancf analytic reissner --json"
     assert schema("analytic reissner")["properties"]["scene"]["const"] == "reissner"
     assert set(names()) == ({f"{c} {n}" for n, (c, _) in registries().items()}
-                            | {f"modes {n}" for n in MODAL})
+                            | {f"modes {n}" for n in MODAL}
+                            | {"steady belt-drive", "modes belt-drive"})  # a running drive's
+    assert schema("steady belt-drive")["title"] == "ancf steady belt-drive --json"
+    assert "hubload_N" in str(schema("steady belt-drive")["properties"]["results"])
+    assert "frequencies_hz" in schema("modes belt-drive")["properties"]["results"]["properties"]
     assert schema("modes cantilever")["title"] == "ancf modes cantilever --json"
     assert "rho" in schema("modes cantilever")["properties"]["params"]["properties"]
     assert "rho" not in schema("run cantilever")["properties"]["params"]["properties"]
