@@ -134,9 +134,8 @@ def pencil(problem, st) -> tuple:
     Mm[n, n] = float(np.einsum("ea,eab,eb->", Ef, problem.Mx, Ef))
     for j in range(k):
         Mm[n + 1 + j, n + 1 + j] = kern.inertia[j]
-    keep_all = keep
-    K, C, Mm = (X.tocsr()[keep_all][:, keep_all] for X in (K, C, Mm))
-    second = np.array([i for i, g in enumerate(keep_all)
+    K, C, Mm = (X.tocsr()[keep][:, keep] for X in (K, C, Mm))
+    second = np.array([i for i, g in enumerate(keep)
                        if g < n or (g > n and (g - n - 1) in problem.arm_of)])
     return _first_order(K, C, Mm, second)
 

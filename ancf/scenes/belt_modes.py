@@ -66,7 +66,7 @@ def _node_parts(problem, st) -> dict:
     a node in contact with a pulley is on its wrap, the rest on the span they lie between."""
     from ancf.belts.contact2d import contact_state_moving
     drive = problem.drive
-    E, V, omegas, o, odot, _ = bs.state_arrays(problem, st)
+    E, V, omegas, o, odot, _ = bs.state_arrays(problem, st.x, st.w, st.vb, st.lam)
     S0 = np.zeros((E.shape[0], 1, 6))
     S0[:, 0, 0] = 1.0  # each element's first node: r at xi = 0
     _, _, Fn, _, _ = contact_state_moving(E, V, S0, o, odot, drive.radii, omegas, drive.prm)

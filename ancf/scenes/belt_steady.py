@@ -141,25 +141,25 @@ def _empty() -> dict:
             "load_factor": 0.0, "newton_iterations": 0, "continuation_steps": 0}
 
 
-def state_arrays(problem, st) -> tuple:
-    """(E, V, omegas, o, odot, T) of a steady state: the element coordinates and material
+def state_arrays(problem, x, w, vb, lam: float = 1.0) -> tuple:
+    """(E, V, omegas, o, odot, T) of the state (x, w, vb) at load factor lam
+    (:class:`ancf.belts.steady2d.Steady`'s fields): the element coordinates and material
     velocities, the pulleys' angular velocities (rad/s), centres and their velocities and
     the belt's moments on them (N m)."""
     from ancf.belts.ale2d import ale_terms
     drive = problem.drive
-    E, V, _, _, c, _ = ale_terms(problem.kern, st.x, st.w, st.vb, problem.P,
-                                 problem.scaled(st.lam), False)
-    omegas = np.where(drive.rig.free < 0, problem.scaled(st.lam)[: drive.radii.size], 0.0)
+    E, V, _, _, c, _ = ale_terms(problem.kern, x, w, vb, problem.P, problem.scaled(lam), False)
+    omegas = np.where(drive.rig.free < 0, problem.scaled(lam)[: drive.radii.size], 0.0)
     for j, q in problem.pulley_of.items():
-        omegas[q] = st.w[problem.n + j]
-    o, odot = drive.moved(st.x, np.zeros_like(st.x), problem.t_end)
+        omegas[q] = w[problem.n + j]
+    o, odot = drive.moved(x, np.zeros_like(x), problem.t_end)
     return E, V, omegas, o, np.zeros_like(odot), c[4]
 
 
 def _results(desc, problem, st, max_loads: bool = True) -> dict:
     from ancf.belts.post2d import sample_elements, span_speed, span_tension
     drive = problem.drive
-    E, V, omegas, o, odot, T = state_arrays(problem, st)
+    E, V, omegas, o, odot, T = state_arrays(problem, st.x, st.w, st.vb, st.lam)
     smp = sample_elements(drive, E, V, omegas, o, odot)
     R = float(drive.radii.min())
     path = desc.path
@@ -264,8 +264,7 @@ def gross_slip(problem, x, w, vb) -> int | None:
     contact Gauss point of its wrap at the state (x, w, vb): the belt slides over the whole
     wrap; None if every wrap keeps a sticking zone."""
     from ancf.belts.contact2d import contact_state_moving
-    st = type("S", (), {"x": x, "w": w, "vb": vb, "lam": 1.0})
-    E, V, omegas, o, odot, _ = state_arrays(problem, st)
+    E, V, omegas, o, odot, _ = state_arrays(problem, x, w, vb)
     _, _, Fn, phi, _ = contact_state_moving(E, V, problem.drive.S0, o, odot,
                                             problem.drive.radii, omegas, problem.kern.prm)
     for p in range(Fn.shape[-1]):
@@ -302,7 +301,7 @@ def _max_load(problem, st, p: int) -> float | None:
 def _saturated(desc, problem, st) -> str:
     """Which wrap carries friction at its limit in the last state reached."""
     from ancf.belts.post2d import sample_elements
-    E, V, omegas, o, odot, _ = state_arrays(problem, st)
+    E, V, omegas, o, odot, _ = state_arrays(problem, st.x, st.w, st.vb, st.lam)
     smp = sample_elements(problem.drive, E, V, omegas, o, odot)
     stick, creep = map(np.array, _arcs(problem.drive, smp))
     share = creep / np.maximum(stick + creep, 1e-12)
