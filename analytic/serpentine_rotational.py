@@ -37,8 +37,35 @@ N m/rad), less the work of the loads (linear in x, balanced at the steady state)
 its own coordinate theta_t, the absolute rotation, so M is diagonal).  ``driver="fixed"``
 holds the prescribed pulley's theta (a prescribed-speed crankshaft); ``"free"`` keeps it and
 removes the rigid mode s_i theta_i r_i = const (psi = 0) by reducing to its M-orthogonal
-complement.  Transverse span vibration (Beikmann's hybrid model) and belt inertia are left
-out.
+complement.  Transverse span vibration (Beikmann's hybrid model) is left out.
+
+Belt inertia (optional, ``belt_mass`` m kg/m > 0; default 0: eqs. (1)-(4) unchanged).  The
+belt keeps its quasi-static shape (it sticks on every wrap, each span a straight chord), so
+its kinetic energy adds a constant matrix M_b to M.  On pulley i the belt's material points
+x turn with the rim, x' = theta_i' Ĩ (x - c_i) + c_i' psi' (c_i' = c_t' on the tensioner,
+else 0), over the wrap length r_i w_i (w_i the steady wrap, rad).  With
+int Ĩ (x - c_i) ds = s_i r_i (x_out,i - x_in,i) over the arc (x_in,i, x_out,i its entry and
+exit points), the wraps give
+
+    M_b += m r_i^3 w_i e_i e_i^T   (every pulley),
+    M_b += m r_t w_t |a|^2 e_psi e_psi^T + m s_t r_t c_t' . (x_out,t - x_in,t)
+           (e_t e_psi^T + e_psi e_t^T)                                                  (5)
+
+A span's velocity is linear between its end points' (the rim's, at the tangent points):
+along d_j the axial rows u_j^- = s_i r_i e_i + (d_j . c_i') e_psi and
+u_j^+ = s_k r_k e_k + (d_j . c_k') e_psi (so b_j = u_j^+ - u_j^-, the stretch of eq. (1)),
+along m_j the chord's rows w_j^+- = (m_j . c_i,k') e_psi (only as the arm turns).  The
+consistent bar mass m l_j / 6 [[2, 1], [1, 2]] on each pair gives
+
+    M_b += m l_j / 6 (2 u^- u^-T + u^- u^+T + u^+ u^-T + 2 u^+ u^+T + the same in w)   (6)
+
+Optionally (``belt_speed`` c m/s) the spans' centrifugal tension softens the arm: the belt's
+force on the pulleys is T_j - m c^2 (belt_steady's n; the moving string's effective tension,
+Wickert & Mote 1990), so
+T_j -> T_j - m c^2 in the g_j'' term of eq. (3); k_j is kept.  The transport's gyroscopic
+terms (m c times rates) and the belt moved between spans and wraps as the arm turns (second
+order) are left out.  m counts the belt as laid (per stretched length, a 1 / lambda below
+the mass per unstretched length: 1 % at 1 % strain).
 """
 from __future__ import annotations
 
@@ -101,38 +128,85 @@ def span_derivatives(lay: Layout, t: int, a: np.ndarray) -> tuple[np.ndarray, np
     return g1, g2
 
 
-def matrices(pulleys, *, EA, J, T, J_arm=None, m_t=0.0, arm_angle=None) -> dict:
-    """M and K of eqs. (3)-(4) (kg m^2, N m/rad; the psi row in the same units) with the
-    coordinate names and the layout.  ``pulleys``: belt_steady's dicts; ``EA`` N; ``J``
-    kg m^2 per pulley; ``T`` N per span in belt order (span j: pulley j to j + 1);
-    ``J_arm`` kg m^2, the arm about its pivot, and ``m_t`` kg, the tensioner pulley's mass
-    (only with a tensioner); ``arm_angle`` rad, the arm's steady angle from x (default:
-    the tensioner's ``centre``), e.g. belt_steady.solve's ``arm_angle_rad``."""
-    pulleys = _checked(pulleys)
-    N, t = len(pulleys), _tensioner(pulleys)
-    EA = _checks.positive("EA", EA)
-    J, T = _per_pulley("J", J, N), _per_pulley("T", T, N)
-    arm, J_psi = _arm_inputs(pulleys, t, J_arm, m_t, arm_angle)
-    lay = _layout(pulleys, arm, 0.0)
-    n = N + (arm is not None)
-    B = np.zeros((N, n))  # row j: b_j of eq. (3)
+def _stretch_rows(lay: Layout, n: int) -> np.ndarray:
+    """(N, n): row j is b_j of eq. (3) without its psi entry, m per rad."""
+    N = len(lay.span)
+    B = np.zeros((N, n))
     for j in range(N):
         k = (j + 1) % N
         B[j, k] += lay.sense[k] * lay.radii[k]
         B[j, j] -= lay.sense[j] * lay.radii[j]
-    K_psi = 0.0
+    return B
+
+
+def belt_inertia(lay: Layout, m: float, n: int, t: int | None = None,
+                 ct: np.ndarray | None = None) -> np.ndarray:
+    """M_b of eqs. (5)-(6), kg m^2 (n coordinates): belt mass m kg/m on ``lay``; with a
+    tensioner t, its centre's velocity per arm rate ct = dc_t / dpsi (m/rad), psi last."""
+    N = len(lay.span)
+    out = np.zeros((n, n))
+    out[range(N), range(N)] = m * lay.radii ** 3 * lay.wrap
+    vel = np.zeros((N, 2)) if t is None else np.eye(N)[t][:, None] * ct  # c_i' per pulley
+    for j in range(N):
+        i, k = j, (j + 1) % N
+        normal = -turn(lay.d[j])
+        u_a, u_b = np.zeros(n), np.zeros(n)
+        u_a[i], u_b[k] = lay.sense[i] * lay.radii[i], lay.sense[k] * lay.radii[k]
+        w_a, w_b = np.zeros(n), np.zeros(n)
+        if t is not None:
+            u_a[-1], u_b[-1] = lay.d[j] @ vel[i], lay.d[j] @ vel[k]
+            w_a[-1], w_b[-1] = normal @ vel[i], normal @ vel[k]
+        for a, b in (u_a, u_b), (w_a, w_b):
+            out += m * lay.span[j] / 6 * (2 * np.outer(a, a) + np.outer(a, b)
+                                          + np.outer(b, a) + 2 * np.outer(b, b))
+    if t is not None:
+        r, s = lay.radii[t], lay.sense[t]
+        out[-1, -1] += m * r * lay.wrap[t] * (ct @ ct)
+        cross = m * s * r * ct @ (lay.start[t] - lay.end[t - 1])
+        out[t, -1] += cross
+        out[-1, t] += cross
+    return out
+
+
+def _belt_inputs(belt_mass, belt_speed) -> tuple[float, float]:
+    m = _checks.finite("belt_mass", belt_mass)
+    if m < 0:
+        raise ValueError(f"belt_mass must be >= 0 kg/m (got {belt_mass!r})")
+    return m, _checks.finite("belt_speed", belt_speed)
+
+
+def matrices(pulleys, *, EA, J, T, J_arm=None, m_t=0.0, arm_angle=None, belt_mass=0.0,
+             belt_speed=0.0) -> dict:
+    """M and K of eqs. (3)-(6) (kg m^2, N m/rad; the psi row in the same units) with the
+    coordinate names and the layout.  ``pulleys``: belt_steady's dicts; ``EA`` N; ``J``
+    kg m^2 per pulley; ``T`` N per span in belt order (span j: pulley j to j + 1);
+    ``J_arm`` kg m^2, the arm about its pivot, and ``m_t`` kg, the tensioner pulley's mass
+    (only with a tensioner); ``arm_angle`` rad, the arm's steady angle from x (default:
+    the tensioner's ``centre``), e.g. belt_steady.solve's ``arm_angle_rad``; ``belt_mass``
+    kg/m >= 0 (eqs. 5-6) and ``belt_speed`` m/s (its centrifugal tension on the arm)."""
+    pulleys = _checked(pulleys)
+    N, t = len(pulleys), _tensioner(pulleys)
+    EA = _checks.positive("EA", EA)
+    J, T = _per_pulley("J", J, N), _per_pulley("T", T, N)
+    m, c = _belt_inputs(belt_mass, belt_speed)
+    arm, J_psi = _arm_inputs(pulleys, t, J_arm, m_t, arm_angle)
+    lay = _layout(pulleys, arm, 0.0)
+    n = N + (arm is not None)
+    B = _stretch_rows(lay, n)
+    masses, ct = J, None
     if arm is not None:
-        g1, g2 = span_derivatives(lay, t, arm.centre(0.0) - arm.pivot)
+        a = arm.centre(0.0) - arm.pivot
+        g1, g2 = span_derivatives(lay, t, a)
         B[:, N] = g1
-        K_psi = pulleys[t]["stiffness"] + T @ g2
+        masses, ct = np.append(J, J_psi), turn(a)
     K = B.T @ ((EA / lay.span)[:, None] * B)
-    masses = J
     if arm is not None:
-        K[N, N] += K_psi
-        masses = np.append(J, J_psi)
+        K[N, N] += pulleys[t]["stiffness"] + (T - m * c * c) @ g2
+    M = np.diag(masses)
+    if m > 0:
+        M = M + belt_inertia(lay, m, n, t, ct)
     names = [f"theta_{p['name']}" for p in pulleys] + (["psi"] if arm is not None else [])
-    return {"M": np.diag(masses), "K": K, "coordinates": names, "layout": lay,
-            "tensioner": t}
+    return {"M": M, "K": K, "coordinates": names, "layout": lay, "tensioner": t}
 
 
 def _basis(M, pulleys, lay: Layout, driver: str) -> np.ndarray:
@@ -146,8 +220,8 @@ def _basis(M, pulleys, lay: Layout, driver: str) -> np.ndarray:
     return null_space((M @ rigid)[None, :])
 
 
-def modes(pulleys, *, EA, J, T, J_arm=None, m_t=0.0, arm_angle=None,
-          driver: str = "fixed") -> dict:
+def modes(pulleys, *, EA, J, T, J_arm=None, m_t=0.0, arm_angle=None, belt_mass=0.0,
+          belt_speed=0.0, driver: str = "fixed") -> dict:
     """Natural frequencies and shapes of eq. (4) (arguments as :func:`matrices`; ``driver``
     "fixed" or "free").  Returns ``frequencies_hz`` ascending, ``shapes`` (columns, mass-
     normalised phi^T M phi = 1, largest entry positive; the coordinates' order, a held
@@ -156,7 +230,8 @@ def modes(pulleys, *, EA, J, T, J_arm=None, m_t=0.0, arm_angle=None,
     the belt's tension buckles (sum_j T_j g_j'' + k_a too negative)."""
     if driver not in DRIVERS:
         raise ValueError(f"driver = {driver!r} is not valid; allowed: one of {DRIVERS}")
-    mat = matrices(pulleys, EA=EA, J=J, T=T, J_arm=J_arm, m_t=m_t, arm_angle=arm_angle)
+    mat = matrices(pulleys, EA=EA, J=J, T=T, J_arm=J_arm, m_t=m_t, arm_angle=arm_angle,
+                   belt_mass=belt_mass, belt_speed=belt_speed)
     M, K = mat["M"], mat["K"]
     Q = _basis(M, pulleys, mat["layout"], driver)
     lam, Y = eigh(Q.T @ K @ Q, Q.T @ M @ Q)
