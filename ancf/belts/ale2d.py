@@ -59,7 +59,9 @@ def ale_terms(drive, x, w, vb, P, laws, want_J):
     """The Lagrangian drive's kernels at the steady ALE state: belt and arm coordinates in
     the system vector x, the free pulleys' angular velocities in w (w[n + j], rad/s; the
     rest 0), transport speed vb (m/s), the material velocities (1); ``laws`` the pulley
-    laws (:mod:`ancf.belts.forces`).  Returns E (nel, 6, 2), the element velocities V,
+    laws (:mod:`ancf.belts.forces`).  A transient state (:mod:`ancf.belts.ale_march2d`)
+    gives the mesh's rates q' in w's belt entries (m/s; the steady solve's are 0) and its
+    arms' rates psi' in theirs: the material velocities are then V_e = q'_e + vb P_e E_e.  Returns E (nel, 6, 2), the element velocities V,
     the elastic and damping gradient g (nel, 12) and its dE Jacobian K, the contact
     outputs c = (Q, Kq, Cv, Qw, T, dTq, dTv, dTw) (Cv: d(Q_c - Q_d)/dV) and the arm
     outputs (:func:`ancf.belts.arm2d.arm_terms`)."""
@@ -71,7 +73,7 @@ def ale_terms(drive, x, w, vb, P, laws, want_J):
             s = 0.0
             for b in range(nd):
                 s += P[e, a, b] * E[e, b // 2, b % 2]
-            V[e, a // 2, a % 2] = vb * s
+            V[e, a // 2, a % 2] += vb * s
     g = np.zeros((nel, nd))
     K = np.zeros((nel, nd, nd)) if want_J else np.zeros((0, 0, 0))
     c = _arrays(nel, nd, drive.radii.size, want_J)

@@ -20,7 +20,7 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   the axial and bending strain-rate damping ``damping_axial`` (dEA, N s) and
   ``damping_bending`` (dEI, N m^2 s) and ``contact_offset`` (m): the distance of the
   belt's running surfaces from its centreline, so the centreline's path runs at
-  radius + offset round every pulley.
+  radius + offset round every pulley; the march's ``formulation`` (:data:`FORMULATIONS`).
   The ``plate36`` belt (:class:`ancf.belts.drive3d.Belt3DDrive`: one plate across the
   width, pulley axes along z) takes ``n_elements``, ``E`` or ``EA``, ``nu`` (plane
   stress), ``h`` its thickness, ``b`` its width w (along the pulley axes), ``rho``,
@@ -86,6 +86,9 @@ from ancf.solvers.alpha_march import ACCEPT, REFRESH, REFRESH_RATIO
 
 REQUIRED = None  # the default of a key that must be given (Param's "no default")
 BOUND = 1e3      # m: coordinates of centres and pivots within +-BOUND
+#: the march's descriptions of the belt (``belt.formulation``; ``ale``: the 2D belt with a
+#: stateless friction law and no tensioner, :mod:`ancf.belts.ale_march2d`)
+FORMULATIONS = ("lagrangian", "ale")
 
 
 @dataclass(frozen=True)
@@ -173,6 +176,9 @@ BELT = _keys(
           hi=1e9),
     Param("contact_offset", 0.0, float, "m", "running surfaces' distance from the centreline",
           lo=0, hi=0.05),
+    Param("formulation", "lagrangian", str, doc="the march's description: 'lagrangian' (the "
+          "mesh moves with the material) or 'ale' (the mesh stays on the path, the material "
+          "flows through it: ancf.belts.ale_march2d)", choices=FORMULATIONS),
 )
 #: the plate36 belt's keys (thesis chapter 4; the belt3d scene's, as a drive file names them)
 PLATE_BELT = _keys(
@@ -189,7 +195,7 @@ PLATE_BELT = _keys(
           choices=("on", "off")),
     Param("elastic_points", 4, int, doc="Gauss points per direction of the elastic forces "
           "(n x n per plate)", lo=2, hi=8),
-    BELT["length"], BELT["prestretch"], BELT["contact_offset"],
+    BELT["length"], BELT["prestretch"], BELT["contact_offset"], BELT["formulation"],
 )
 #: each element's belt keys
 BELT_KEYS = {"dufva2d": BELT, "plate36": PLATE_BELT}

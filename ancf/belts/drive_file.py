@@ -13,7 +13,9 @@ missing one, a value out of range, an unknown law or one missing a parameter, an
 layout the belt cannot be laid on (overlapping pulleys, a pulley it cannot wrap, a belt
 shorter than half its path or longer than the path; the same at every pulley centre's
 ``centre_shift``), and a pulley law or friction law the
-belt's element does not carry (``plate36``: no tensioner, no law with a state).
+belt's element does not carry (``plate36``: no tensioner, no law with a state), and a
+``belt.formulation = 'ale'`` the ALE march does not carry (the plate belt, a friction law
+with a state, a tensioner).
 """
 from __future__ import annotations
 
@@ -24,6 +26,7 @@ from pathlib import Path
 
 from ancf.belts import drive_data as dd
 from ancf.belts.friction import ALL_PARAMS as FRICTION_LAWS
+from ancf.belts.friction import PARAMS as FRICTION_PARAMS
 from ancf.belts.path import Pulley, PulleyPath
 from ancf.common.inputs import MAX_INTERVALS, MAX_STEPS, intervals
 from ancf.common.params import InputError, Param, is_boolean
@@ -303,5 +306,27 @@ def describe(data: dict) -> dd.DriveDescription:
     _moved(pulleys, belt)
     contact = _values(_table(data, "contact"), "contact.", dd.CONTACT_KEYS[element],
                       why=f" (element {element!r})")
-    return dd.DriveDescription(belt, pulleys, _friction(data, element), contact, _run(data),
-                               tuple(gravity), path)
+    friction = _friction(data, element)
+    _formulation(belt, element, pulleys, friction)
+    return dd.DriveDescription(belt, pulleys, friction, contact, _run(data), tuple(gravity),
+                               path)
+
+
+def _formulation(belt: dict, element: str, pulleys: tuple, friction: dict) -> None:
+    """``belt.formulation = 'ale'`` (:mod:`ancf.belts.ale_march2d`) on the 2D belt only,
+    with a friction law without a state and no tensioner's arm."""
+    if belt["formulation"] != "ale":
+        return
+    if element != "dufva2d":
+        raise _refuse("belt.formulation", "ale", element, ("lagrangian",),
+                      "the axially moving march is the 2D belt's")
+    if friction["law"] not in FRICTION_PARAMS:
+        raise InputError(f"belt.formulation = 'ale' with friction.law = {friction['law']!r}: "
+                         "a friction state per material point is not carried by the ALE "
+                         f"march; allowed: friction.law one of {', '.join(FRICTION_PARAMS)}, "
+                         "or belt.formulation = 'lagrangian'")
+    arms = [f"pulleys.{i}" for i, p in enumerate(pulleys) if dd.ROLES[p.law].arm]
+    if arms:
+        raise InputError(f"belt.formulation = 'ale' with a tensioner ({', '.join(arms)}): its "
+                         "arm is not carried by the ALE march; allowed: belt.formulation = "
+                         "'lagrangian'")

@@ -4,7 +4,8 @@ The file (:mod:`ancf.belts.drive_file`; keys, units and ranges in
 :mod:`ancf.belts.drive_data`) becomes the belt model on N pulleys
 (:mod:`ancf.belts.drive_model`: the 2D Dufva belt, ``belt.element = "dufva2d"``, or the
 3D plate belt, ``"plate36"``), settled on its pulleys (``run.start = "settled"``) and
-marched by the compiled generalised-alpha scheme, as ``belt2d`` and ``belt3d``: the
+marched by the compiled generalised-alpha scheme (``belt.formulation = "ale"``: the
+axially moving 2D belt, :mod:`ancf.belts.ale_march2d`), as ``belt2d`` and ``belt3d``: the
 thesis drives' files (``examples/thesis_table_3_1.toml``, ``thesis_table_4_1.toml``)
 give ``belt2d``'s and ``belt3d``'s numbers.  ``--set
 section.key=value`` overrides a key of the file (``friction.mu=1.0``,
@@ -38,7 +39,7 @@ from ancf.belts import post3d
 from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, simulate
 from ancf.belts.path import PulleyPath
-from ancf.belts.post2d import sample, span_tension
+from ancf.belts.post2d import sample, sample_elements, span_tension
 from ancf.belts.pretension import settle
 from ancf.common.params import InputError, Param
 from ancf.common.paths import REPO
@@ -64,13 +65,14 @@ def _items(p: dict) -> list:
         f"{key}={p[name]!r}" for name, key in MODEL_KEYS.items() if p.get(name) is not None]
 
 
-def pulley_moments(drive, x, v, t: float, state=None) -> np.ndarray:
+def pulley_moments(drive, x, v, t: float, state=None, V=None) -> np.ndarray:
     """The belt's moment (np,) on each pulley at state (x, v), time t (s), N m: the
     contact kernel's T_p (Eq. 3.26's integral), counter-clockwise positive.  A friction
     law with a state takes ``state`` = (z (nel, ng, np), h): the state at the start of the
-    step that ended at this sample and that step (s), the march's (the step's forces)."""
+    step that ended at this sample and that step (s), the march's (the step's forces).
+    ``V`` (nel, 6, 2) m/s: the elements' velocities, if not v's (the ALE march's)."""
     E = drive.element_coords(drive.belt(x))
-    V = drive.element_coords(drive.belt(v))
+    V = drive.element_coords(drive.belt(v)) if V is None else V
     npul, nel = drive.radii.size, E.shape[0]
     T = np.zeros(npul)
     o, odot = drive.moved(x, v, t)
@@ -99,12 +101,22 @@ def _spans(desc, window, last, coarse, tension) -> list:
              "tension_N": tension(last, e)} for k, e in enumerate(ends)]
 
 
+def _sample2d(drive, res, i: int, npts: int = 8):
+    """The 2D belt at sample i (:func:`ancf.belts.post2d.sample`; the ALE march's at its
+    elements' own material velocities)."""
+    x, v, t = res.q[i], res.v[i], float(res.t[i])
+    W = res.extra.get("element_velocities")
+    if W is None:
+        return sample(drive, x, v, t, npts=npts)
+    E = drive.element_coords(drive.belt(x))
+    return sample_elements(drive, E, W[i], drive.omegas(t, v), *drive.moved(x, v, t), npts)
+
+
 def _end2d(desc, drive, res, window) -> dict:
     """The spans and the belt at t_end (:mod:`ancf.belts.post2d`, 8 points per element)."""
     R = float(drive.radii.min())
-    last = sample(drive, res.q[-1], res.v[-1], float(res.t[-1]))
-    spans = _spans(desc, window, last,
-                   lambda i: sample(drive, res.q[i], res.v[i], float(res.t[i]), npts=4),
+    last = _sample2d(drive, res, -1)
+    spans = _spans(desc, window, last, lambda i: _sample2d(drive, res, i, npts=4),
                    lambda smp, span: span_tension(smp, span, R))
     return dict(spans=spans, belt_s_m=last.s.tolist(),
                 axial_force_N=last.N.tolist(), speed_m_s=last.speed.tolist(),
@@ -137,8 +149,9 @@ def _moments(desc, drive, res) -> np.ndarray:
         return np.array([post3d.pulley_moments(drive, x, v, float(t))
                          for x, v, t in zip(res.q, res.v, res.t)])
     states = res.extra.get("friction_state", [None] * res.t.size)
-    return np.array([pulley_moments(drive, x, v, float(t), z)
-                     for x, v, t, z in zip(res.q, res.v, res.t, states)])
+    W = res.extra.get("element_velocities", [None] * res.t.size)
+    return np.array([pulley_moments(drive, x, v, float(t), z, V)
+                     for x, v, t, z, V in zip(res.q, res.v, res.t, states, W)])
 
 
 def _pulleys(desc, drive, res, penetration) -> list:
@@ -176,6 +189,14 @@ def _results(desc, drive, res) -> dict:
     return out
 
 
+def _ale(drive, t_out, opt, x0, progress, mean_from):
+    """:func:`ancf.belts.ale_march2d.simulate_ale` (scipy: on use only), from the belt laid
+    on its path where it was not settled."""
+    from ancf.belts.ale_march2d import simulate_ale
+    x0 = drive.state(drive.q0) if x0 is None else x0
+    return simulate_ale(drive, t_out, opt, x0, progress=progress, mean_from=mean_from)
+
+
 def run(p: dict) -> SceneResult:
     desc = load(p["file"], _items(p))
     drive, r = build(desc), desc.run
@@ -184,9 +205,10 @@ def run(p: dict) -> SceneResult:
                       refresh_ratio=r["refresh_ratio"], newton_accept=r["newton_accept"],
                       refresh=r["refresh"],
                       max_steps=r["max_steps"])
-    res = simulate(drive, bc.times(r), opt, x0=x0 if pre is None or pre.converged else None,
-                   progress=bc.progress("belt-drive", r, PROGRESS_STEPS),
-                   mean_from=r["t_end"] - r["steady_window"])
+    march = simulate if desc.belt["formulation"] == "lagrangian" else _ale
+    res = march(drive, bc.times(r), opt, x0=x0 if pre is None or pre.converged else None,
+                progress=bc.progress("belt-drive", r, PROGRESS_STEPS),
+                mean_from=r["t_end"] - r["steady_window"])
     if pre is not None and not pre.converged:
         res.converged, res.message = False, f"pre-tension: {pre.message}"
     results = _results(desc, drive, res) if res.converged else {
