@@ -39,7 +39,7 @@ holds the prescribed pulley's theta (a prescribed-speed crankshaft); ``"free"`` 
 removes the rigid mode s_i theta_i r_i = const (psi = 0) by reducing to its M-orthogonal
 complement.  Transverse span vibration (Beikmann's hybrid model) is left out.
 
-Belt inertia (optional, ``belt_mass`` m kg/m > 0; default 0: eqs. (1)-(4) unchanged).  The
+Belt inertia (optional, ``belt_mass`` m kg/m >= 0; default 0: eqs. (1)-(4) unchanged).  The
 belt keeps its quasi-static shape (it sticks on every wrap, each span a straight chord), so
 its kinetic energy adds a constant matrix M_b to M.  On pulley i the belt's material points
 x turn with the rim, x' = theta_i' Ĩ (x - c_i) + c_i' psi' (c_i' = c_t' on the tensioner,
@@ -60,9 +60,9 @@ consistent bar mass m l_j / 6 [[2, 1], [1, 2]] on each pair gives
     M_b += m l_j / 6 (2 u^- u^-T + u^- u^+T + u^+ u^-T + 2 u^+ u^+T + the same in w)   (6)
 
 Optionally (``belt_speed`` c m/s) the spans' centrifugal tension softens the arm: the belt's
-force on the pulleys is T_j - m c^2 (belt_steady's n; the moving string's effective tension,
-Wickert & Mote 1990), so
-T_j -> T_j - m c^2 in the g_j'' term of eq. (3); k_j is kept.  The transport's gyroscopic
+force on the pulleys is T_j - m c^2 (belt_steady's n; the moving string's effective
+tension, Wickert & Mote 1990), so T_j -> T_j - m c^2 in the g_j'' term of eq. (3); k_j is
+kept.  The transport's gyroscopic
 terms (m c times rates) and the belt moved between spans and wraps as the arm turns (second
 order) are left out.  m counts the belt as laid (per stretched length, a 1 / lambda below
 the mass per unstretched length: 1 % at 1 % strain).
