@@ -63,8 +63,8 @@ Optionally (``belt_speed`` c m/s) the spans' centrifugal tension softens the arm
 force on the pulleys is T_j - m c^2 (belt_steady's n; the moving string's effective
 tension, Wickert & Mote 1990), so T_j -> T_j - m c^2 in the g_j'' term of eq. (3); k_j is
 kept.  The transport's gyroscopic terms (m c times rates) and the belt moved between spans
-and wraps as the arm turns (second order) are left out.  m counts the belt as laid (per stretched length, a 1 / lambda below
-the mass per unstretched length: 1 % at 1 % strain).
+and wraps as the arm turns (second order) are left out.  m counts the belt as laid (per
+stretched length, a 1 / lambda below the mass per unstretched length: 1 % at 1 % strain).
 """
 from __future__ import annotations
 
