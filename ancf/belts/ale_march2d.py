@@ -25,9 +25,10 @@ rest (vb = 0).
 
 Newton per step on the iteration matrix S = M* + gamma' C + beta' K (M* the mass of (1)-(3)
 by (q'', vb', omega'), C and K their derivatives by the rates and positions) in sparse
-form; modified: the factor is kept over iterations and steps and refreshed where an
-increment shrinks by less than ``refresh_ratio`` or a step fails; a step that fails on a
-fresh factor is halved, down to dt / 2**max_halvings.  Converged when beta' |d acc|_inf
+form, factored with diagonal pivots (the mass makes S diagonally dominant, as the
+Lagrangian march's kept factors); modified: the factor is kept over iterations and steps
+and refreshed where an increment shrinks by less than ``refresh_ratio`` (at that iterate)
+or a step fails (at its start); a step that fails on a fresh factor is halved, down to dt / 2**max_halvings.  Converged when beta' |d acc|_inf
 <= newton_tol (1 + |y_n|_inf), the march's test.
 """
 from __future__ import annotations
@@ -43,7 +44,7 @@ from ancf.belts.pulleys import RESISTING
 from ancf.belts.steady2d import SteadyProblem
 from ancf.belts.system import loads_of, window_weights
 from ancf.elements.dufva2d import damping_forces
-from ancf.solvers.alpha_march import kinematics
+from ancf.solvers.alpha_march import MAX_BACKTRACKS, kinematics
 from ancf.solvers.generalized_alpha import AlphaOptions, step_times
 from ancf.solvers.result import DynamicResult
 
@@ -234,32 +235,47 @@ class AleMarch:
         return h * h * beta * ratio, h * gamma * ratio
 
     def step(self, st, h, laws, fresh: bool):
-        """One step of size h at the laws of its end: (state, T_c, omegas, V) or _Failed."""
-        acc = st[2].copy()
-        if fresh or self.lu is None or abs(self.lu_h - h) > 1e-6 * h:
+        """One step of size h at the laws of its end: (state, T_c, omegas, V) or _Failed;
+        ``fresh``: factor at the step's start whatever the kept factor.  An increment that
+        shrank by less than ``refresh_ratio`` is recomputed on a factor at its iterate, and
+        damped by backtracking on |R| (the march's: the friction and the contact's entry
+        make R kinked, where Newton cycles)."""
+        acc, keep = st[2].copy(), self.sys.keep
+        here = fresh or self.lu is None or abs(self.lu_h - h) > 1e-6 * h  # factor at acc
+        if here:
             self._factor(st, acc, h, laws)
-            fresh = True
         bp = self._coef(h)[0]
         tol = self.opt.newton_tol * (1 + np.max(np.abs(st[0])))
-        R, T, omegas, V, _ = self._eval(st, acc, h, laws)
+        now = self._eval(st, acc, h, laws)
         last = np.inf
         for _ in range(self.opt.max_iter):
-            d = self.lu.solve(-R[self.sys.keep])
+            d = self.lu.solve(-now[0][keep])
             size = np.max(np.abs(d))
+            if bp * size > tol and not size <= self.opt.refresh_ratio * last and not here:
+                self._factor(st, acc, h, laws)
+                d = self.lu.solve(-now[0][keep])
+                size = np.max(np.abs(d))
             if not np.isfinite(size):
                 break
-            if bp * size > tol and size > self.opt.refresh_ratio * last and not fresh:
-                self._factor(st, acc, h, laws)
-                fresh = True
-                d = self.lu.solve(-R[self.sys.keep])
-                size = np.max(np.abs(d))
-            acc, last = acc + d, size
+            lam, now = self._backtrack(st, acc, d, h, laws, np.linalg.norm(now[0][keep]))
+            acc, last, here = acc + lam * d, lam * size, False
             self.iters += 1
-            R, T, omegas, V, _ = self._eval(st, acc, h, laws)
-            if bp * size <= tol:
+            if bp * last <= tol:
                 x, v, a = kinematics(acc, st, h, self.cf)
-                return (x, v, acc, a), T, omegas, V
+                return (x, v, acc, a), *now[1:4]
         raise _Failed("Newton")
+
+
+    def _backtrack(self, st, acc, d, h, laws, norm) -> tuple:
+        """(lam, the evaluation at acc + lam d): lam = 1, 1/2, ... down to 1/128, the first
+        that lowers |R| (2-norm over the unknowns' rows)."""
+        lam = 1.0
+        for _ in range(MAX_BACKTRACKS):
+            now = self._eval(st, acc + lam * d, h, laws)
+            if np.linalg.norm(now[0][self.sys.keep]) <= (1 - 1e-4 * lam) * norm:
+                break
+            lam *= 0.5
+        return lam, now
 
 
 def _laws(drive, t) -> np.ndarray:
