@@ -305,6 +305,8 @@ BAD = [  # (overrides, or an edit of the thesis file's data; the one line it giv
     (["run.steady_window=2"], r"run.steady_window = 2.0 is out of range; allowed: a number in "
      r"\(0, t_end = 1\] s"),
     (_without(("run", "t_end")), r"run.t_end: missing; allowed: a number in \(0, 100\] s"),
+    (["belt.formulation=eulerian"], "belt.formulation = 'eulerian' is out of range; "
+     "allowed: one of lagrangian, ale"),
     (_set(("belt",), 5), r"belt: 5 is not a table; allowed: a table \[belt\]"),
     (_set(("pulleys", 1), 5), r"pulleys.1: 5 is not a table; allowed: a table \[\[pulleys\]\]"),
 ]
