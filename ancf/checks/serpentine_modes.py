@@ -103,11 +103,17 @@ def inputs(desc) -> dict:
             "rhoA": b["rho"] * b["b"] * b["h"], "mu": desc.friction["mu"], "steady": ref}
 
 
-def discrete(inp: dict, EA_factor: float = 1.0) -> dict:
+def discrete(inp: dict, EA_factor: float = 1.0, belt_mass: bool = False) -> dict:
     """:func:`analytic.serpentine_rotational.modes` on ``inp`` (EA times ``EA_factor``),
-    the crank held."""
+    the crank held; ``belt_mass``: with the belt's rho A and its fastest span's speed
+    (the model's eqs. 5-6)."""
+    extra = {}
+    if belt_mass:
+        extra = {"belt_mass": inp["rhoA"],
+                 "belt_speed": max(abs(s["speed"]) for s in inp["steady"]["spans"])}
     return sr.modes(inp["pulleys"], EA=EA_factor * inp["EA"], J=inp["J"], T=inp["T"],
-                    J_arm=inp["J_arm"], m_t=0.0, arm_angle=inp["arm_angle"], driver="fixed")
+                    J_arm=inp["J_arm"], m_t=0.0, arm_angle=inp["arm_angle"], driver="fixed",
+                    **extra)
 
 
 def _end_velocities(lay, t: int, ct: np.ndarray, i: int, j: int, n: int) -> np.ndarray:
