@@ -39,6 +39,7 @@ bench: $(PEERS)
 	$(PY) -m benchmarks.peers
 	$(PY) -m benchmarks.peers_belt
 	$(PY) -m benchmarks.peers_thread
+	$(PY) -m benchmarks.peers_ale
 
 clean:
 	rm -rf $(VENV) .pytest_cache .benchmarks "$${XDG_CACHE_HOME:-$$HOME/.cache}/ancf-bench"

@@ -247,6 +247,10 @@ def running_drives_chapter() -> tuple[str, dict]:
              "the belt creeps along each wrap instead of sticking (a model of that bed is not "
              "built; a steeper law, `friction.nu_s`, moves the arm and pump modes as such a "
              "bed would, the alternator's not). The row is then DIFFERS (explained).\n", markdown_table(pd.DataFrame(effect), 5), "", _shapes()]
+    text += ["## Against Exudyn's ALE belt\n",
+             "Exudyn's ALE belt (`ALECable2D`) on THREAD against our steady solve, CPU "
+             "side by side in one run: `benchmarks/peers_ale.py` (`make bench`), "
+             "[benchmarks/peers_ale.md](benchmarks/peers_ale.md).\n"]
     text += ["## Campbell diagram\n",
              "Not computed by `--quick`.\n" if quick else _campbell()]
     status = {c.name: special.get(c.name) or rd.status(c, explained.get(c.name))
