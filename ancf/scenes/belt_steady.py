@@ -35,7 +35,7 @@ LOAD_RTOL = 0.005
 
 
 def _checked(p: dict):
-    desc = load(p["file"], bd._items(p))
+    desc = _moved(p, load(p["file"], bd._items(p)))
     if desc.belt["element"] != "dufva2d":
         raise InputError(f"belt.element = {desc.belt['element']!r}: the steady solve takes "
                          "the 2D belt; allowed: 'dufva2d'")
@@ -45,6 +45,27 @@ def _checked(p: dict):
         raise InputError(f"friction.law = {desc.friction['law']!r} carries a state and has no "
                          f"steady form here; allowed: {allowed}")
     return desc
+
+
+def _moved(p: dict, desc):
+    """The drive with every prescribed centre motion as it stands at t_end (the steady
+    state takes the laws' values there): each moved pulley at that centre (a tensioner's
+    pivot moved with it) and no motion left, so that the belt is laid and pre-tensioned on
+    the drive whose steady state is sought."""
+    from ancf.belts.pulleys import CENTRE_LAWS
+    extra = []
+    for q in desc.pulleys:
+        shift = np.asarray(q.params["centre_shift"], dtype=float)
+        if not shift.any():
+            continue
+        law = CENTRE_LAWS[q.params["centre_motion"]].of(1.0, q.params)
+        d = [float(x) for x in shift * float(law(np.array([desc.run["t_end"]]))[0][0])]
+        extra += [f"pulleys.{q.name}.centre={[a + b for a, b in zip(q.centre, d)]!r}",
+                  f"pulleys.{q.name}.centre_shift=[0.0, 0.0]"]
+        if "pivot" in q.params and q.params["pivot"] is not None:
+            pivot = [a + b for a, b in zip(q.params["pivot"], d)]
+            extra.append(f"pulleys.{q.name}.pivot={pivot!r}")
+    return load(p["file"], bd._items(p) + extra) if extra else desc
 
 
 def steady_route(p: dict) -> dict:
@@ -329,7 +350,8 @@ RESULTS = {
     "spans": field("array", "per span (pulley k to k + 1), in belt order (null when no "
                    "steady state)", items="object", nullable=True, keys={
         "from": field(STR, "pulley the span leaves"), "to": field(STR, "pulley it reaches"),
-        "length_m": field(NUM, "free length between the two wraps' contact ends, m"),
+        "length_m": field(NUM, "free length between the two wraps' contact ends, m; null "
+                               "where a wrap has no contact point", nullable=True),
         "tension_mean_N": field(NUM, "mean axial force over its middle third, N"),
         "speed_m_s": field(NUM, "mean belt speed over its middle third, m/s")}),
     "arms": field("array", "per tensioner, in belt order (null when no steady state)",
