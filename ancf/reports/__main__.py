@@ -122,14 +122,17 @@ def timing_page(root: Path, chapter: str, parts: list) -> str:
             "and the machine; whole tables in `data/timing/`).\n")
 
 
-def _previous_statuses(root: Path) -> dict:
-    """The acceptance rows of an existing README.md in root (none if there is none)."""
+def _previous_statuses(root: Path, chapter: str) -> dict:
+    """The acceptance rows of an existing README.md in root (none if there is none), less
+    the rows the chapter's previous file listed (a check it renamed or dropped goes)."""
     path = root / "README.md"
     if not path.exists():
         return {}
     text = path.read_text().split("## Acceptance summary", 1)[-1]
     rows = re.findall(r"^\| (.+?) \| (.+?) \|$", text, flags=re.M)
-    return {k: v for k, v in rows if k != "check"}
+    old = root / chapter
+    own = set(re.findall(r"^\| (.+?) \|", old.read_text(), flags=re.M)) if old.exists() else set()
+    return {k: v for k, v in rows if k != "check" and k not in own}
 
 
 def main(argv=None) -> int:
@@ -151,7 +154,7 @@ def main(argv=None) -> int:
     root.mkdir(parents=True, exist_ok=True)
     if args.chapter:
         heartbeat(args.chapter.removesuffix(".md"))
-        status = {**_previous_statuses(root), **write_chapters(root, args.chapter)}
+        status = {**_previous_statuses(root, args.chapter), **write_chapters(root, args.chapter)}
     else:
         status = write_all(root, args.quick, args.jobs)
     note = (" Reduced configuration (`--quick`): not the published data." if args.quick else "")

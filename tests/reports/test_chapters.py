@@ -114,3 +114,15 @@ def test_the_generator_loads_no_chapter_it_does_not_write():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True, cwd=REPO).stdout
     assert out.strip() == "[]"
+
+
+def test_one_chapter_rewritten_drops_its_old_rows(tmp_path):
+    """``--chapter X.md`` keeps README.md's other rows and drops the rows X.md listed
+    before (a check X renamed or dropped does not linger in the summary)."""
+    from ancf.reports.__main__ import _previous_statuses
+    (tmp_path / "README.md").write_text(
+        "## Acceptance summary\n\n| check | status |\n|---|---|\n| kept row | PASS |\n"
+        "| renamed row | FAIL |\n")
+    (tmp_path / "x.md").write_text("| check | value |\n|---|---|\n| renamed row | 1 |\n")
+    assert _previous_statuses(tmp_path, "x.md") == {"kept row": "PASS"}
+    assert _previous_statuses(tmp_path, "y.md") == {"kept row": "PASS", "renamed row": "FAIL"}
