@@ -40,6 +40,7 @@ bench: $(PEERS)
 	$(PY) -m benchmarks.peers_belt
 	$(PY) -m benchmarks.peers_thread
 	$(PY) -m benchmarks.peers_ale
+	$(PY) -m benchmarks.peers_3d --repeats 5
 
 clean:
 	rm -rf $(VENV) .pytest_cache .benchmarks "$${XDG_CACHE_HOME:-$$HOME/.cache}/ancf-bench"
