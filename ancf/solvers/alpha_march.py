@@ -261,14 +261,14 @@ def march(ts, k, k_stop, st, system, hf, cf, count, newton, max_iter, limit, max
         h = ts[k + 1] - ts[k]
         for i in range(4):
             backup[i][:] = st[i]
-        ok = _step(h, k + 1, st, system, hf, cf, count, newton, max_iter, False)
-        if not ok:
+        ok = False
+        for attempt in range(2):  # kept factors, then fresh ones: one _step compilation
+            ok = _step(h, k + 1, st, system, hf, cf, count, newton, max_iter, attempt == 1)
+            if ok:
+                break
             for i in range(4):
                 st[i][:] = backup[i]
-            ok = _step(h, k + 1, st, system, hf, cf, count, newton, max_iter, True)
         if not ok:
-            for i in range(4):
-                st[i][:] = backup[i]
             hf[0] = np.nan
             return NEWTON_FAILED, k
         k += 1
