@@ -18,8 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ancf.belts.forces import evaluate
-from ancf.belts.system import PAIRS, belt_system, load_terms, steps, window_weights
+from ancf.belts.system import PAIRS, belt_system, force_residual, steps, window_weights
 from ancf.solvers import banded
 from ancf.solvers.alpha_march import (BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_FINITE,
                                       REFRESH_RATIO, march, newton_settings)
@@ -65,11 +64,9 @@ class _March:
                                            window=window_weights(ts, self.mean_from))
 
     def initial_acceleration(self, x, v):
-        s, n, k = self.system, self.drive.n, self.drive.k
-        f = np.zeros(n + k)
-        evaluate(x, v, s.tabs[:, 0].copy(), s.drive, False, 0.0, 0.0, f, np.zeros((1, 1)),
-                 np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)))
-        load_terms(s.loads, s.tabs[:, 0].copy(), v, 0.0, False, f, np.zeros((k, k)))
+        s, n = self.system, self.drive.n
+        f = np.zeros(n + self.drive.k)
+        force_residual(s, x, v, 0, False, f)
         M = s.Mb.copy()
         piv = np.zeros(n, dtype=np.int64)
         banded.lu(M, s.kl, piv, True)

@@ -47,7 +47,7 @@ from numba import njit
 from ancf.belts import friction
 from ancf.belts.forces import evaluate
 from ancf.belts.pulleys import RESISTING, load_records
-from ancf.common.dispatch import implements
+from ancf.common.dispatch import as_struct, implements
 from ancf.solvers import banded
 from ancf.solvers.alpha_march import (system_accept, system_factor, system_prepare,
                                       system_residual, system_solve, system_tests)
@@ -106,6 +106,21 @@ def loads_of(drive) -> np.ndarray:
     has none (the thesis drives)."""
     loads = drive.rig.loads
     return load_records([(None, -1, {})] * drive.k) if loads is None else loads
+
+
+@njit(cache=True)
+def force_residual(system, x, v, k, want_J, f):
+    """f = the residual forces at (x, v) and step time index k, the residual of the march
+    (:func:`_residual`) without the inertia terms and without the iteration matrix (want_J:
+    False, from Python: a runtime flag).  Called with the march's types, the drive as its
+    struct and the laws as a column of ``tabs``, so it shares the march's compilation of
+    :func:`ancf.belts.forces.evaluate` and :func:`load_terms`."""
+    s = as_struct(system)
+    nk = s.drive.inertia.size
+    n = x.size - nk
+    evaluate(x, v, s.tabs[:, k], s.drive, want_J, 0.0, 0.0, f, np.zeros((1, 1)),
+             np.zeros((nk, n)), np.zeros((nk, n)), np.zeros((nk, nk)))
+    load_terms(s.loads, s.tabs[:, k], v, 0.0, want_J, f, np.zeros((nk, nk)))
 
 
 @njit(cache=True)
