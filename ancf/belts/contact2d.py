@@ -49,7 +49,8 @@ centre has no normal; the penalty regime (d << R) never reaches it.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.extending import overload
 
 from ancf.belts import friction
 from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_rows, positive_lengths
@@ -96,13 +97,20 @@ def _may_touch(E, e, l, o0, o1, R):
     return dist - rb <= R + BOUND_MARGIN * (dist + rb + R)
 
 
-@njit(cache=True)
 def _trial_storage(z):
     """The trial state's storage (1,) at a point; None for a drive without a friction
     state (z None: the kernels are then compiled without it, the stateless laws' code)."""
-    if z is None:
-        return None
-    return np.zeros(1)
+    raise NotImplementedError("compiled code only")
+
+
+@overload(_trial_storage)
+def _trial_storage_by_type(z):
+    """:func:`_trial_storage` chosen by z's type: a plain array where z is one (a compiled
+    ``if z is None`` would make it an optional array, and :func:`_point_law` compiled once
+    more than for post-processing's array)."""
+    if isinstance(z, types.NoneType):
+        return lambda z: None
+    return lambda z: np.zeros(1)
 
 
 @njit(cache=True)
