@@ -138,12 +138,11 @@ def _belt_damping(E, V, drive, want_J, g, K, Cv):
     """The belt's strain-rate damping forces Q_d (:func:`ancf.elements.dufva2d.damping_forces`)
     into g and dQ_d/dz into K, like the elastic forces (not with ``damping_jacobian`` rate:
     :func:`ancf.elements.dufva2d.damping_forces_rate`); dQ_d/dz' is subtracted from Cv,
-    which holds dQ_c/dz' of the contact forces on the belt's other side."""
+    which holds dQ_c/dz' of the contact forces on the belt's other side.  Both through
+    :func:`ancf.elements.dufva2d.damping_parts` with runtime flags: one compilation."""
     C = np.zeros_like(Cv)
-    if want_J and drive.damping_jacobian == 1:
-        dufva2d.damping_forces_rate(E, V, drive.element, drive.strain_damping, g, C)
-    else:
-        dufva2d.damping_forces(E, V, drive.element, drive.strain_damping, want_J, g, K, C)
+    want_K = want_J and drive.damping_jacobian != 1
+    dufva2d.damping_parts(E, V, drive.element, drive.strain_damping, want_K, want_J, g, K, C)
     Cv -= C
 
 

@@ -153,10 +153,10 @@ def _add_nodal_curvature(Ke, bI, bJ, hI, hJ, yI, yJ):
 
 
 @njit(cache=True)
-def _nodal_shear_sine(E, e, node, want_K, grad, hess):
-    """(sin gamma)^K of node 0 (I) or 1 (J), its gradient in (r_x, r_y) into grad (4,)
-    and, if want_K, its Hessian into hess (4, 4)."""
-    x, y = E[e, 3 * node + 1], E[e, 3 * node + 2]
+def _nodal_shear_sine(x, y, want_K, grad, hess):
+    """(sin gamma)^K of a node with slopes x = r_x, y = r_y (2,), its gradient in (r_x, r_y)
+    into grad (4,) and, if want_K, its Hessian into hess (4, 4).  The node's slopes, not
+    its index: a constant index would compile it once per node."""
     if want_K:
         return gen.shear_sine_hess(x[0], x[1], y[0], y[1], grad, hess)
     return gen.shear_sine_grad(x[0], x[1], y[0], y[1], grad)
@@ -175,8 +175,8 @@ def gradient_tangent(E, data, want_K, g, K):
     Ke = np.empty((nd, nd))
     ge, He = np.empty(7), np.zeros((7, 7))
     for e in range(nel):
-        sI = _nodal_shear_sine(E, e, 0, want_K, gI, hI)
-        sJ = _nodal_shear_sine(E, e, 1, want_K, gJ, hJ)
+        sI = _nodal_shear_sine(E[e, 1], E[e, 2], want_K, gI, hI)
+        sJ = _nodal_shear_sine(E[e, 4], E[e, 5], want_K, gJ, hJ)
         yI, yJ = _transverse_strain(E, e, 0), _transverse_strain(E, e, 1)
         inv_l = 1.0 / lengths[e]
         bI = bJ = wI = wJ = 0.0
@@ -357,8 +357,10 @@ def _point_measure(m, want_J, a0, a1, c0, c1, s, sx, gm, Hm):
 
 
 @njit(cache=True)
-def _damping(E, V, data, d, want_K, want_C, g, K, C):
-    """:func:`damping_forces` with dQ_d/de (want_K) and dQ_d/de' (want_C) apart."""
+def damping_parts(E, V, data, d, want_K, want_C, g, K, C):
+    """:func:`damping_forces` with dQ_d/de (want_K) and dQ_d/de' (want_C) apart (runtime
+    flags: called with constant ones, as by :func:`damping_forces_rate`, numba compiles
+    it once per constant)."""
     if d[1] == 0.0 and not want_K:
         _axial_damping(E, V, data, d[0], want_C, g, C)
         return
@@ -370,8 +372,8 @@ def _damping(E, V, data, d, want_K, want_C, g, K, C):
     Jv, HJ, Hs, G = np.empty((7, nd)), np.empty((7, nd)), np.empty((nd, nd)), np.empty(nd)
     live = np.empty(7, dtype=np.int64)
     for e in range(nel):
-        sI = _nodal_shear_sine(E, e, 0, want_K, gI, hI)
-        sJ = _nodal_shear_sine(E, e, 1, want_K, gJ, hJ)
+        sI = _nodal_shear_sine(E[e, 1], E[e, 2], want_K, gI, hI)
+        sJ = _nodal_shear_sine(E[e, 4], E[e, 5], want_K, gJ, hJ)
         ve = V[e].ravel().copy()
         inv_l = 1.0 / lengths[e]
         for q in range(nq):
@@ -389,7 +391,7 @@ def _damping(E, V, data, d, want_K, want_C, g, K, C):
 
 @njit(cache=True)
 def _axial_damping(E, V, data, dEA, want_C, g, C):
-    """:func:`_damping` of the axial strain alone (dEI = 0) without dQ_d/de: its gradient
+    """:func:`damping_parts` of the axial strain alone (dEI = 0) without dQ_d/de: its gradient
     deps/de = Jv^T deps/dv has a (Jv's rows 0, 1) alone, so dm/de[2 k + d] = BX_k deps/da_d,
     the sums of :func:`_add_damping` bit for bit (they add exact zeros besides) without the
     point Jacobian and the nodal shear sines."""
@@ -420,7 +422,7 @@ def damping_forces(E, V, data, d, want_J, g, K, C):
     """Add the strain-rate damping forces Q_d (nel, 12) to ``g`` (N or N m) and, if
     ``want_J``, dQ_d/de to ``K`` and dQ_d/de' to ``C`` (nel, 12, 12) (module docstring).
     E, V: (nel, 6, 2) coordinates and velocities; d = (dEA N s, dEI N m^2 s)."""
-    _damping(E, V, data, d, want_J, want_J, g, K, C)
+    damping_parts(E, V, data, d, want_J, want_J, g, K, C)
 
 
 @njit(cache=True)
@@ -428,7 +430,7 @@ def damping_forces_rate(E, V, data, d, g, C):
     """:func:`damping_forces` with dQ_d/de' (into ``C``) but not dQ_d/de: an iteration
     matrix's approximation (dQ_d/de is proportional to the strain rates: int dEA (deps/de
     (d2eps/de2 e')^T + eps' d2eps/de2) dx) that costs a fraction of the exact one."""
-    _damping(E, V, data, d, False, True, g, np.zeros((0, 0, 0)), C)
+    damping_parts(E, V, data, d, False, True, g, np.zeros((0, 0, 0)), C)
 
 
 class DufvaBelt2D(BeltElement):
