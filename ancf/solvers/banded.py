@@ -112,7 +112,7 @@ def count_below(AB, kl, shift):
     for i in range(n):
         A[i, kl] -= shift
     piv = np.empty(n, dtype=np.int64)
-    if lu(A, kl, piv, False) != 0:
+    if lu(A, kl, piv, bool(False)) != 0:  # not a literal: one compilation of lu
         return -1
     neg = 0
     for i in range(n):
