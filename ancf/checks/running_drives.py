@@ -32,6 +32,8 @@ SERPENTINE = EXAMPLES / "serpentine.toml"
 THESIS = EXAMPLES / "thesis_table_3_1.toml"
 #: the serpentine's span modes on a mesh of twice the file's elements (3 per 10 cm of span)
 SERPENTINE_FINE = ("belt.n_elements=120",)
+#: the march in the axially moving description (``belt.formulation``, ancf.belts.ale_march2d)
+ALE = ('belt.formulation="ale"',)
 #: the issue's acceptance: %, %, degree, % (hubloads), % (span modes), ratio (CPU: the
 #: timing page's, and benchmarks/running_drives.py's)
 TOL = {"spans": 0.5, "speeds": 0.1, "pulleys": 0.5, "arm": 0.05, "hub": 1.0, "modes": 1.0,

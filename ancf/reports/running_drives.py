@@ -28,11 +28,12 @@ def _thesis_items() -> tuple:
     return tuple(o for o in overrides() if not o.startswith("run.dt"))
 
 
-def _against_march(label, path, driven=None) -> tuple[list, list]:
-    """A drive's steady state against its march: tables, CSV files, rows."""
+def _against_march(label, path, driven=None, items=()) -> tuple[list, list]:
+    """A drive's steady state against its march (``items``: the file's overrides): tables,
+    CSV files, rows."""
     progress(f"running drives: {label}, steady and march")
-    cmp = rd.against_march(path)
-    stem = label.split(" ")[0].lower()
+    cmp = rd.against_march(path, items)
+    stem = "_".join(w.strip("()").lower() for w in label.split(" ") if w != "(creep-rate)")
     pulleys, spans = pd.DataFrame(cmp["pulleys"]), pd.DataFrame(cmp["spans"])
     write_csv(pulleys, f"running_drives_{stem}_pulleys")
     write_csv(spans, f"running_drives_{stem}_spans")
@@ -180,9 +181,11 @@ def running_drives_chapter() -> tuple[str, dict]:
         text.append("Not computed by `--quick` (the marches); `tests/checks/"
                     "test_running_drives.py` holds the steady states to the stored numbers.\n")
     else:
-        for label, path, driven in (("THREAD (creep-rate)", rd.THREAD, "driven"),
-                                    ("Serpentine", rd.SERPENTINE, None)):
-            part, rows = _against_march(label, path, driven)
+        for label, path, driven, items in (
+                ("THREAD (creep-rate)", rd.THREAD, "driven", ()),
+                ("THREAD (creep-rate) ALE march", rd.THREAD, "driven", rd.ALE),
+                ("Serpentine", rd.SERPENTINE, None, ())):
+            part, rows = _against_march(label, path, driven, items)
             text += part
             checks += rows
     progress("running drives: hubloads and span modes")
