@@ -4,32 +4,36 @@ path, the material flows through it at the transport speed vb (m/s).
 
 Unknowns: the steady problem's (:class:`ancf.belts.steady2d.SteadyProblem`): the belt's
 coordinates q less the gauge (node 0's tangential coordinate, held at its settled
-value), vb and the free pulleys' angular velocities omega_j (rad/s).  Every one is the
-rate of a position, so the march is the generalised-alpha scheme of second-order
-systems (:func:`ancf.solvers.alpha_march.kinematics`) in y = (q, s, theta): s the
-material's shift (m; vb = s'), theta_j the pulley angles (rad), both cyclic.  With the
+value), vb, the free pulleys' angular velocities omega_j (rad/s) and the tensioner arms'
+angles psi (rad).  Every one is a position or the rate of one, so the march is the
+generalised-alpha scheme of second-order systems (:func:`ancf.solvers.alpha_march.
+kinematics`) in y = (q, s, theta): s the material's shift (m; vb = s'), theta the free
+coordinates (a pulley's angle, cyclic, or an arm's psi).  With the
 element kinetic energy T = 1/2 q'^T M q' + vb q'^T M P q + 1/2 vb^2 q^T M_x q
 (:mod:`ancf.belts.modes2d`; M_x = P^T M P, :mod:`ancf.belts.ale2d`) the rows are
 
     M q'' + vb' M P q + vb (M P - P^T M) q' - vb^2 M_x q + dU/dq + Q_d - Q_c - F_g = 0  (1)
     (M P q) . q'' + (q^T M_x q) vb' + q'^T M P q' + 2 vb q^T M_x q' - Q_s = 0         (2)
-    I_j omega_j' - T_c,p + T_a,p(t) + c_j omega_j = 0                                  (3)
+    I_j omega_j' - T_c,p + T_a,p(t) + c_j (omega_j - psi') = 0                         (3)
+    I_a psi'' - A - preload + k psi + c_a psi' - c_j (omega_j - psi') = 0               (4)
 
 (1) the belt's (element sums; Q_c the contact and friction forces, Q_d the strain-rate
 damping, both at the material velocities V = q' + vb P q), (2) the axial momentum's
 d/dt (q'^T M P q + vb q^T M_x q) = Q_s, Q_s = sum_e (Q_c - Q_d)_e . (P E)_e, in the
-gauge coordinate's row, (3) the free pulleys' (the Lagrangian march's, a ``resisting``
-load by its tanh law).  The pulley laws are the drive's at each step's end (ramps and
-load steps as in :func:`ancf.belts.dynamics.simulate`); the start is the settled belt at
-rest (vb = 0).
+gauge coordinate's row, (3) the free pulleys' and (4) the arms' (the Lagrangian march's,
+a ``resisting`` load by its tanh law, A the belt's moment about the pivot; psi' the rate
+of the arm the pulley rides on, else 0: :mod:`ancf.belts.ale_rows2d`).  The pulley laws
+are the drive's at each step's end (ramps and load steps as in :func:`ancf.belts.dynamics.
+simulate`); the start is the settled belt at rest (vb = 0).
 
-Newton per step on the iteration matrix S = M* + gamma' C + beta' K (M* the mass of (1)-(3)
-by (q'', vb', omega'), C and K their derivatives by the rates and positions) in sparse
+Newton per step on the iteration matrix S = M* + gamma' C + beta' K (M* the mass of (1)-(4)
+by (q'', vb', omega', psi''), C and K their derivatives by the rates and positions) in sparse
 form, factored with diagonal pivots (the mass makes S diagonally dominant, as the
 Lagrangian march's kept factors); modified: the factor is kept over iterations and steps
 and refreshed where an increment shrinks by less than ``refresh_ratio`` (at that iterate)
-or a step fails (at its start); a step that fails on a fresh factor is halved, down to dt / 2**max_halvings.  Converged when beta' |d acc|_inf
-<= newton_tol (1 + |y_n|_inf), the march's test.
+or a step fails (at its start); a step that fails on a fresh factor is halved, down to
+dt / 2**max_halvings.  Converged when beta' |d acc|_inf <= newton_tol (1 + |y_n|_inf),
+the march's test.
 """
 from __future__ import annotations
 
@@ -40,7 +44,7 @@ import scipy.sparse as sp
 from scipy.sparse.linalg import splu
 
 from ancf.belts.ale2d import ale_terms
-from ancf.belts.pulleys import RESISTING
+from ancf.belts.ale_rows2d import free_entries, free_rows
 from ancf.belts.steady2d import SteadyProblem
 from ancf.belts.system import loads_of, window_weights
 from ancf.elements.dufva2d import damping_forces
@@ -56,13 +60,10 @@ class _Failed(Exception):
 
 
 class AleSystem:
-    """Rows (1)-(3) and their iteration matrix for a 2D drive (module docstring), in the
+    """Rows (1)-(4) and their iteration matrix for a 2D drive (module docstring), in the
     full layout (q (n), s, theta (k)); :attr:`keep` the unknowns (the gauge left out)."""
 
     def __init__(self, drive, x0):
-        if drive.rig.arms.shape[0]:
-            raise ValueError("belt.formulation = 'ale': a tensioner's arm is not carried; "
-                             "allowed: 'lagrangian' for a drive with a tensioner")
         pb = SteadyProblem(drive, 0.0)
         self.drive, self.kern, self.pb = drive, pb.kern, pb
         self.n, self.k, self.keep, self.gauge = pb.n, pb.k, pb.keep, pb.gauge
@@ -99,8 +100,9 @@ class AleSystem:
         kern, n, P = self.kern, self.n, self.P
         vb, vbd = yd[n], ydd[n]
         want = coef is not None
-        E, V, g, K, c, _ = ale_terms(kern, self.system(y), self.system(yd), vb, P, laws, want)
-        Q, Kq, Cv, Qw, T, dTq, dTv, dTw = c
+        E, V, g, K, c, arm = ale_terms(kern, self.system(y), self.system(yd), vb, P, laws,
+                                       want)
+        Q, T = c[0], c[4]
         vidx, Ef = kern.vidx, E.reshape(E.shape[0], -1)
         Ed, Edd = yd[vidx], ydd[vidx]
         PE = np.einsum("eab,eb->ea", P, Ef)
@@ -114,18 +116,11 @@ class AleSystem:
         R = self._scatter(belt)
         R[:n] -= kern.weight
         R[n] = np.sum(MPE * Edd + vbd * Ef * MxE + Ed * MPEd + 2 * vb * Ed * MxE - F * PE)
-        omegas = np.where(kern.free < 0, laws[: kern.free.size], 0.0)
-        dTa = np.zeros(self.k)
-        for p, j in enumerate(kern.free):
-            if j >= 0:
-                omegas[p] = yd[n + 1 + j]
-                Ta, dTa[j] = self._load(j, laws[p], omegas[p])
-                R[n + 1 + j] = (kern.inertia[j] * ydd[n + 1 + j] - T[p] + Ta
-                                + kern.damping[j] * omegas[p])
+        omegas, dTa = free_rows(self, R, y, yd, ydd, laws, T, arm[0])
         if not want:
             return R, T, omegas, V, None
         parts = dict(E=Ef, Ed=Ed, Edd=Edd, PE=PE, MPE=MPE, MxE=MxE, MPEd=MPEd, F=F,
-                     K=K, Kd=Kd, c=c, dTa=dTa, vb=vb, vbd=vbd)
+                     K=K, Kd=Kd, c=c, arm=arm, dTa=dTa, vb=vb, vbd=vbd)
         return R, T, omegas, V, self._matrix(parts, *coef)
 
     def _damping(self, E, V, want):
@@ -138,18 +133,10 @@ class AleSystem:
                            np.zeros_like(Kd))
         return gd, Kd
 
-    def _load(self, j, law, omega) -> tuple:
-        """(T_a N m, dT_a/domega N m s) of free coordinate j's load at its law's value."""
-        rec = self.loads[j]
-        if rec.law != RESISTING:
-            return law, 0.0
-        s = np.tanh(omega / rec.omega_reg)
-        return abs(law) * s, abs(law) * (1 - s * s) / rec.omega_reg
-
     def _matrix(self, d, bp, gp):
         """S = M* + gamma' C + beta' K (module docstring) in keep x keep."""
         kern, n, P, vb = self.kern, self.n, self.P, d["vb"]
-        Q, Kq, Cv, Qw, T, dTq, dTv, dTw = d["c"]
+        Kq, Cv = d["c"][1], d["c"][2]
         vidx, PE = kern.vidx, d["PE"]
         N = n + 1 + self.k
         CvP = np.einsum("eab,ebc->eac", Cv, P)
@@ -174,16 +161,7 @@ class AleSystem:
         put(n, vidx, d["MPE"] + gp * c_row + bp * k_row)
         put(n, n, np.sum(d["E"] * d["MxE"])
             + gp * (2 * np.sum(d["E"] * MxEd) - np.sum(CvPE * PE)))
-        for p, j in enumerate(kern.free):
-            if j < 0:
-                continue
-            put(vidx, n + 1 + j, -gp * Qw[:, p, :])
-            put(n, n + 1 + j, -gp * np.sum(Qw[:, p, :] * PE))
-            dTE = dTq[p] + vb * np.einsum("eb,eba->ea", dTv[p], P)
-            put(n + 1 + j, vidx, -gp * dTv[p] - bp * dTE)
-            put(n + 1 + j, n, -gp * np.sum(dTv[p] * PE))
-            put(n + 1 + j, n + 1 + j, kern.inertia[j]
-                + gp * (kern.damping[j] - dTw[p] + d["dTa"][j]))
+        free_entries(self, put, d, bp, gp)
         S = sp.coo_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
                           shape=(N, N)).tocsr()
         return S[self.keep][:, self.keep].tocsc()

@@ -87,7 +87,7 @@ from ancf.solvers.alpha_march import ACCEPT, REFRESH, REFRESH_RATIO
 REQUIRED = None  # the default of a key that must be given (Param's "no default")
 BOUND = 1e3      # m: coordinates of centres and pivots within +-BOUND
 #: the march's descriptions of the belt (``belt.formulation``; ``ale``: the 2D belt with a
-#: stateless friction law and no tensioner, :mod:`ancf.belts.ale_march2d`)
+#: stateless friction law, :mod:`ancf.belts.ale_march2d`)
 FORMULATIONS = ("lagrangian", "ale")
 
 

@@ -15,7 +15,7 @@ shorter than half its path or longer than the path; the same at every pulley cen
 ``centre_shift``), and a pulley law or friction law the
 belt's element does not carry (``plate36``: no tensioner, no law with a state), and a
 ``belt.formulation = 'ale'`` the ALE march does not carry (the plate belt, a friction law
-with a state, a tensioner).
+with a state).
 """
 from __future__ import annotations
 
@@ -307,14 +307,14 @@ def describe(data: dict) -> dd.DriveDescription:
     contact = _values(_table(data, "contact"), "contact.", dd.CONTACT_KEYS[element],
                       why=f" (element {element!r})")
     friction = _friction(data, element)
-    _formulation(belt, element, pulleys, friction)
+    _formulation(belt, element, friction)
     return dd.DriveDescription(belt, pulleys, friction, contact, _run(data), tuple(gravity),
                                path)
 
 
-def _formulation(belt: dict, element: str, pulleys: tuple, friction: dict) -> None:
+def _formulation(belt: dict, element: str, friction: dict) -> None:
     """``belt.formulation = 'ale'`` (:mod:`ancf.belts.ale_march2d`) on the 2D belt only,
-    with a friction law without a state and no tensioner's arm."""
+    with a friction law without a state."""
     if belt["formulation"] != "ale":
         return
     if element != "dufva2d":
@@ -325,8 +325,3 @@ def _formulation(belt: dict, element: str, pulleys: tuple, friction: dict) -> No
                          "a friction state per material point is not carried by the ALE "
                          f"march; allowed: friction.law one of {', '.join(FRICTION_PARAMS)}, "
                          "or belt.formulation = 'lagrangian'")
-    arms = [f"pulleys.{i}" for i, p in enumerate(pulleys) if dd.ROLES[p.law].arm]
-    if arms:
-        raise InputError(f"belt.formulation = 'ale' with a tensioner ({', '.join(arms)}): its "
-                         "arm is not carried by the ALE march; allowed: belt.formulation = "
-                         "'lagrangian'")
