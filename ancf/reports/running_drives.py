@@ -184,7 +184,8 @@ def running_drives_chapter() -> tuple[str, dict]:
         for label, path, driven, items in (
                 ("THREAD (creep-rate)", rd.THREAD, "driven", ()),
                 ("THREAD (creep-rate) ALE march", rd.THREAD, "driven", rd.ALE),
-                ("Serpentine", rd.SERPENTINE, None, ())):
+                ("Serpentine", rd.SERPENTINE, None, ()),
+                ("Serpentine ALE march", rd.SERPENTINE, None, rd.ALE)):
             part, rows = _against_march(label, path, driven, items)
             text += part
             checks += rows
@@ -245,11 +246,13 @@ def running_drives_chapter() -> tuple[str, dict]:
              "The belt's inertia alone: ours against ours with a belt 1000 times lighter, "
              "and the discrete model with its belt mass against without. Where the two "
              "ratios agree within 1 %, the belt's mass acts alike in both, and the rest of "
-             "the difference is stiffness the sticking model leaves out. Its likely seat is "
-             "the wraps: below saturation the creep-rate law's friction is a viscous bed, so "
-             "the belt creeps along each wrap instead of sticking (a model of that bed is not "
-             "built; a steeper law, `friction.nu_s`, moves the arm and pump modes as such a "
-             "bed would, the alternator's not). The row is then DIFFERS (explained).\n", markdown_table(pd.DataFrame(effect), 5), "", _shapes()]
+             "the difference is stiffness the sticking model leaves out, which is not "
+             "accounted for: a steeper creep law (`friction.nu_s` ten times) moves the "
+             "arm's mode about halfway to the model and the "
+             "alternator's away from it, so the wraps' creep is part of it, not all. The "
+             "row is DIFFERS (explained) for the belt's inertia; the stiffness part is "
+             "open.\n",
+             markdown_table(pd.DataFrame(effect), 5), "", _shapes()]
     text += ["## Against Exudyn's ALE belt\n",
              "Exudyn's ALE belt (`ALECable2D`) on THREAD against our steady solve, CPU "
              "side by side in one run: `benchmarks/peers_ale.py` (`make bench`), "

@@ -44,18 +44,20 @@ def test_thread_steady_state_matches_the_march(stem):
     assert abs(driven["omega"] / speeds["driven"] - 1) <= 0.001
 
 
-def test_serpentine_steady_state_matches_the_march():
+@pytest.mark.parametrize("stem", ["serpentine", "serpentine_ale_march"])
+def test_serpentine_steady_state_matches_the_march(stem):
     """Serpentine: span tensions and pulley speeds within 0.5 % (seen 0.26 %, 0.05 %), the
-    arm within 0.05° (seen 0.03°) of the march's steady window."""
+    arm within 0.05° (seen 0.03°) of the march's steady window, the Lagrangian march's and
+    the axially moving one's (seen 0.05 %, 0.001 %, 0.001°)."""
     out, _ = rd.steady(rd.SERPENTINE, (), False)
     r = out["results"]
-    march = {x["span"]: float(x["march"]) for x in _csv("running_drives_serpentine_spans")}
+    march = {x["span"]: float(x["march"]) for x in _csv(f"running_drives_{stem}_spans")}
     for s in r["spans"]:
         assert abs(s["tension_mean_N"] / march[f"{s['from']} → {s['to']}"] - 1) <= 0.005
-    speeds = {x["name"]: float(x["march"]) for x in _csv("running_drives_serpentine_pulleys")}
+    speeds = {x["name"]: float(x["march"]) for x in _csv(f"running_drives_{stem}_pulleys")}
     for p in r["pulleys"]:
         assert abs(p["omega"] / speeds[p["name"]] - 1) <= 0.005, p["name"]
-    arm = _csv("running_drives_serpentine_arms")[0]
+    arm = _csv(f"running_drives_{stem}_arms")[0]
     assert abs(math.degrees(r["arms"][0]["angle_rad"]) - float(arm["march_deg"])) <= 0.05
 
 
