@@ -13,7 +13,7 @@ its friction moment (:mod:`ancf.belts.arm2d`), both at the material velocities V
 P q of the belt's coordinates q (m), so by q they move with dX/dq + vb dX/dV P (position)
 and dX/dV (rate), by vb with dX/dV . P q (rate).  The arm's angle moves the pulley's
 centre: Qp, Tp (the belt's forces' and the moment's derivatives by psi, psi') enter the
-belt's rows (1), the axial row (2) through Q_s = sum (Q_c - Q_d) . P q, and (3).  The
+belt's rows (1) and (3).  The
 entries are those of S = M* + gamma' C + beta' K (module docstring of ale_march2d).
 """
 from __future__ import annotations
@@ -70,7 +70,6 @@ def free_entries(system, put, d, bp, gp) -> None:
         if j < 0:
             continue
         put(vidx, n + 1 + j, -gp * Qw[:, p, :])
-        put(n, n + 1 + j, -gp * np.sum(Qw[:, p, :] * PE))
         _moment_row(put, n + 1 + j, dTq[p], dTv[p], P, PE, vb, vidx, bp, gp, n)
         put(n + 1 + j, n + 1 + j, kern.inertia[j]
             + gp * (kern.damping[j] - dTw[p] + d["dTa"][j]))
@@ -82,7 +81,6 @@ def free_entries(system, put, d, bp, gp) -> None:
         put(col, col, kern.inertia[ja] + bp * (row[STIFFNESS] - dAp[a, 0])
             + gp * (kern.damping[ja] + cj - dAp[a, 1]))
         put(vidx, col, -bp * Qp[a, 0] - gp * Qp[a, 1])
-        put(n, col, -np.sum((bp * Qp[a, 0] + gp * Qp[a, 1]) * PE))
         put(n + 1 + j, col, -bp * Tp[a, 0] - gp * (Tp[a, 1] + cj))
 
 

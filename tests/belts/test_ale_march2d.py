@@ -159,10 +159,10 @@ def test_iteration_matrix_matches_central_differences(serpentine_system):
         d[s.keep[c]] = h
         Rp, Rm = (s.evaluate(y + k * bp * d, yd + k * gp * d, ydd + k * d, laws)[0]
                   for k in (1.0, -1.0))
-        fd[:, i] = (Rp - Rm)[s.keep] / (2 * h)
+        fd[:, i] = (Rp - Rm)[s.eq] / (2 * h)
     Sc = S[:, cols]
     assert np.all(np.abs(fd - Sc).max(axis=0) <= FD_TOL * np.abs(Sc).max(axis=0))
-    rows = np.abs(Sc[s.n - 1:]).max(axis=1)  # vb's, the pulleys' and the arm's rows
+    rows = np.abs(Sc[s.n - 1:]).max(axis=1)  # the gauge's, the pulleys' and the arm's rows
     assert np.all(np.abs(fd - Sc)[s.n - 1:].max(axis=1) <= FD_TOL * rows)
     arm = int(np.flatnonzero(s.keep == s.n + 1 + int(s.kern.arms[0, COORD]))[0])
     row = np.abs(Sc[arm]).max()
