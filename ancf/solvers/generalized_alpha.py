@@ -47,6 +47,8 @@ class AlphaOptions:
     max_steps: int = 200_000
     q_limit: float = 1e6          # blow-up: |q|_inf above q_limit (1 + |q0|_inf)
     compiled: bool = True         # use the compiled loop where the model allows
+    refresh_ratio: float = 0.02   # contraction above which its iteration matrix is refreshed:
+                                  # a factorisation costs a few residuals (alpha_march)
 
     def coefficients(self):
         r = self.rho_inf
@@ -265,7 +267,8 @@ def _run_compiled(model, st, s, t_out, ts, limit, opt):
     k, ok, msg, reached = 0, True, "reached t_end", ts.size - 1
     while ok:
         status, k = march(ts, k, ts.size - 1, state, ca.system, ca.hf, ca.cf, ca.count,
-                          newton_settings(opt.newton_tol), opt.max_iter, limit,
+                          newton_settings(opt.newton_tol, opt.refresh_ratio),
+                          opt.max_iter, limit,
                           opt.max_steps - st.steps, slot,
                           out_x, out_v)
         if status == DONE:

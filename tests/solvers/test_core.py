@@ -195,6 +195,24 @@ def test_compiled_alpha_matches_python_stepper(scene, setup, overrides, fewer):
     assert fast.nlu < slow.nlu / fewer  # the factorisation is kept across steps
 
 
+def test_alpha_refresh_ratio_trades_factorisations_for_iterations():
+    """The default refresh ratio (AlphaOptions) refactors more often than the march's
+    REFRESH_RATIO and so takes fewer Newton iterations, on the same trajectory: both
+    within the Newton tolerance of the Python stepper's full Newton."""
+    from dataclasses import replace
+    from ancf.solvers.alpha_march import REFRESH_RATIO
+    p = SCENES["pendulum"].resolve({"integrator": "generalized-alpha"})
+    fast, slow = _alpha_pair("pendulum", p, pendulum.setup)
+    mdl, q0 = pendulum.setup(p)[3], pendulum.setup(p)[1]
+    x0, v0 = mdl.initial(q0, np.zeros_like(q0))
+    opt = replace(AlphaOptions(dt=p["dt"], rho_inf=p["rho_inf"]), refresh_ratio=REFRESH_RATIO)
+    lazy = integrate_generalized_alpha(mdl, x0, v0, bd.times(p), opt)
+    assert AlphaOptions().refresh_ratio < REFRESH_RATIO
+    for run in (fast, lazy):
+        assert np.max(np.abs(run.q - slow.q)) <= 1e-8 * (1 + np.max(np.abs(slow.q)))
+    assert fast.nlu > lazy.nlu and fast.newton_iterations < 0.9 * lazy.newton_iterations
+
+
 def test_registry_allocates_named_blocks():
     from ancf.core.mesh import BeamMesh
     from ancf.core.registry import Registry
