@@ -390,17 +390,16 @@ def main(argv=None) -> int:
 
 
 def _ready_numba() -> None:
-    """Numba readies its compiler on the first kernel call of a process, a cache load too:
-    it imports its implementations (and, for its BLAS, scipy's BLAS module, here without
-    the rest of scipy.linalg: :mod:`ancf.common.blas`) and fills its typing tables, 0.1 s
-    CPU of objects that live as long as the process.  Done here, while the collector is
-    held (``ancf`` on the command line), they are frozen with the modules instead of walked
-    by its passes."""
+    """Numba readies its compiler on the first kernel call of a process, a cache load too
+    (0.1 s CPU): loads here ready its runtime alone (:func:`ancf.common.process_start.
+    lean_cache_loads`; a kernel not in the cache is compiled as before).  Its BLAS check,
+    where a kernel needs it, takes scipy's BLAS module without scipy.linalg's package
+    (:mod:`ancf.common.blas`, 0.09 s)."""
     if "numba" in sys.modules:
         from ancf.common.blas import preload_cython_blas
-        preload_cython_blas()  # numba's BLAS check without scipy.linalg's package: 0.09 s
-        from numba.core.registry import cpu_target
-        cpu_target.target_context.refresh()
+        from ancf.common.process_start import lean_cache_loads
+        preload_cython_blas()
+        lean_cache_loads()
 
 
 def _dispatch(args) -> int:

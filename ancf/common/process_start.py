@@ -1,5 +1,5 @@
-"""Two costs of a short ``ancf run`` process that are not its work: PyYAML at numba's
-import and the interpreter's shutdown, together about 40 ms CPU of a 0.45 s process.
+"""Three costs of a short ``ancf run`` process that are not its work: PyYAML at numba's
+import, readying numba's compiler to load cached kernels, and the interpreter's shutdown.
 
 * ``numba.core.config`` imports PyYAML (10-15 ms CPU) only to read a ``.numba_config.yaml``
   in the working directory.  :func:`numba_without_yaml` lets numba be imported with
@@ -10,6 +10,11 @@ import and the interpreter's shutdown, together about 40 ms CPU of a 0.45 s proc
   (``os._exit``): nothing in ``ancf run`` waits for the interpreter's exit handlers.  A
   numba chrome trace asked for (``NUMBA_CHROME_TRACE``) is written by one, so then the
   process ends the usual way.
+* Numba readies its whole compiler before it looks in its on-disk cache (``refresh``: it
+  imports every implementation module and fills its typing and lowering tables, about
+  0.1 s CPU), though a cached kernel is machine code that needs only numba's runtime.
+  :func:`lean_cache_loads` makes a cache load ready the runtime alone; a kernel not in the
+  cache is compiled as before (numba's compiler refreshes the tables itself first).
 """
 from __future__ import annotations
 
@@ -42,3 +47,20 @@ def end_process(code: int) -> None:
     sys.stdout.flush()
     sys.stderr.flush()
     os._exit(code)
+
+
+def lean_cache_loads() -> None:
+    """From now on numba loads a cached kernel after readying its runtime (NRT) only, not
+    its compiler; a cache miss compiles as before (``CompilerBase`` refreshes first).  A
+    numba whose cache lacks the loader this wraps keeps its own loads."""
+    import numba.cpython.hashing  # noqa: F401  its import adds the hash-secret symbols
+    from numba.core.caching import Cache
+    from numba.core.runtime import rtsys
+    if not hasattr(Cache, "_load_overload"):
+        return
+
+    def load_overload(self, sig, target_context):
+        rtsys.initialize(target_context)
+        with self._guard_against_spurious_io_errors():
+            return self._load_overload(sig, target_context)
+    Cache.load_overload = load_overload

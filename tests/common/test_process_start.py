@@ -1,0 +1,75 @@
+"""Lean cache loads (:func:`ancf.common.process_start.lean_cache_loads`): a cached kernel is
+loaded without readying numba's compiler, and gives the answer it gave when compiled; a
+signature not in the cache is compiled as before."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+#: a cached kernel using an NRT array, a reduction (numba.np) and a string hash
+KERNEL = '''
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True)
+def kernel(a):
+    b = np.empty_like(a)
+    for i in range(a.size):
+        b[i] = a[i] * a[i]
+    return float(b.sum()) + (hash("ancf") != 0)
+'''
+
+#: a module only numba's compiler refresh imports (none of the loaded code needs it)
+COMPILER_ONLY = "numba.np.random.generator_core"
+
+
+def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
+    """In a fresh process, call the kernel on input of each of ``dtypes`` in turn: for each,
+    its value, cache hits and misses so far, and whether numba's compiler tables are loaded."""
+    code = textwrap.dedent(f"""
+        import json, sys
+        import numpy as np
+        sys.path.insert(0, {str(folder)!r})
+        from ancf.common.process_start import lean_cache_loads
+        if {lean}:
+            lean_cache_loads()
+        from kmod import kernel
+        out = {{}}
+        for dtype in {dtypes!r}:
+            value = kernel(np.array([5.0, -2.0, 7.0, 4.0, 1.0], dtype=dtype))
+            out[dtype] = [value, sum(kernel.stats.cache_hits.values()),
+                          sum(kernel.stats.cache_misses.values()),
+                          {COMPILER_ONLY!r} in sys.modules]
+        print(json.dumps(out))
+    """)
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(folder / "cache"))
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
+                       env=env, timeout=120)
+    assert p.returncode == 0, p.stderr
+    return json.loads(p.stdout.strip().splitlines()[-1])
+
+
+def _expected(values) -> float:
+    """The kernel's value by plain Python: the sum of squares, plus 1 (a nonzero hash)."""
+    return sum(x * x for x in values) + 1.0
+
+
+def test_lean_load_reuses_the_cache_and_a_miss_compiles(tmp_path):
+    """Rows (value, cache hits so far, misses so far, compiler tables loaded)."""
+    (tmp_path / "kmod.py").write_text(KERNEL)
+    want = _expected([5.0, -2.0, 7.0, 4.0, 1.0])
+    first = _call(tmp_path, lean=False)  # compiles and fills the cache
+    assert first == {"float64": [want, 0, 1, True]}
+    usual = _call(tmp_path, lean=False)  # the control: numba's own load readies its compiler
+    assert usual == {"float64": [want, 1, 0, True]}
+    lean = _call(tmp_path, lean=True, dtypes=("float64", "int64"))
+    assert lean["float64"] == [want, 1, 0, False]  # loaded, the compiler not readied
+    assert lean["int64"] == [want, 1, 1, True]  # not in the cache: compiled as before
+    assert _expected([5.0, -2.0, 7.0, 4.0, 2.0]) != want  # the check sees a changed input
