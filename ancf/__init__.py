@@ -19,7 +19,6 @@ ancf keeps numba's default location.
 """
 from __future__ import annotations
 
-import hashlib
 import os
 from pathlib import Path
 
@@ -31,6 +30,7 @@ KERNEL_FOLDERS = ("common", "core", "solvers", "elements", "models", "belts")
 def source_hash(root: Path | None = None, folders=None) -> str:
     """A hash (16 hex digits) of the sources below ``root`` (default: this package), of
     the ``folders`` below it only where given."""
+    import hashlib  # here: a set NUMBA_CACHE_DIR imports ancf without hashing
     root = root or Path(__file__).resolve().parent
     paths = (root.rglob("*.py") if folders is None
              else (p for f in folders for p in (root / f).rglob("*.py")))
@@ -48,7 +48,8 @@ def numba_cache_dir(root: Path | None = None, folders=KERNEL_FOLDERS) -> Path:
     return base / "ancf-bench" / source_hash(root, folders)
 
 
-os.environ.setdefault("NUMBA_CACHE_DIR", str(numba_cache_dir()))
+if "NUMBA_CACHE_DIR" not in os.environ:  # a directory set wins: no sources read, no hash
+    os.environ["NUMBA_CACHE_DIR"] = str(numba_cache_dir())
 
 
 #: the names of the Python API (:mod:`ancf.api`), loaded on first use

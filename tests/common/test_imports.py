@@ -182,6 +182,26 @@ def test_numba_cache_follows_the_sources(tmp_path):
     assert ancf.numba_cache_dir(tmp_path) != first
 
 
+def test_a_numba_cache_dir_set_is_kept_without_hashing_the_sources(tmp_path):
+    """``NUMBA_CACHE_DIR`` set by the user is kept, and ``import ancf`` then reads and hashes
+    no source (no hashlib); unset, it is :func:`ancf.numba_cache_dir`, found by hashing."""
+    import os
+
+    import ancf
+    code = "import os, sys, ancf\nprint(os.environ['NUMBA_CACHE_DIR'], 'hashlib' in sys.modules)"
+    base = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    runs = {}
+    for name, extra in (("set", {"NUMBA_CACHE_DIR": str(tmp_path / "mine")}), ("unset", {})):
+        p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                           cwd=ROOT, env={**base, "XDG_CACHE_HOME": str(tmp_path), **extra},
+                           timeout=60)
+        assert p.returncode == 0, p.stderr
+        runs[name] = p.stdout.split()
+    assert runs["set"] == [str(tmp_path / "mine"), "False"]
+    assert runs["unset"][0] == str(tmp_path / "ancf-bench" / ancf.source_hash(
+        folders=ancf.KERNEL_FOLDERS)) and runs["unset"][1] == "True"
+
+
 def test_compiled_code_lives_in_the_kernel_folders():
     """Every module that compiles (njit, jit, leaf, overload, vectorize: as a decorator or
     called) lies in ancf.KERNEL_FOLDERS, whose sources alone name the numba cache; a layer
