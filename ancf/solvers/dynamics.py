@@ -117,6 +117,18 @@ class ReducedModel:
     def full(self, z, zd, t):
         return self.pattern.expand(z, self._g(t)), self.pattern.expand(zd, self._g(t, 1))
 
+    def samples(self, Z, Zd, ts):
+        """Global (q, q') at the times ts from the states Z, Zd (one row per time): the
+        rows of :meth:`full`, in one scatter where g does not depend on time."""
+        if self.rheo.time_dependent or not len(ts):
+            return _stacked([self.full(z, zd, t) for z, zd, t in zip(Z, Zd, ts)])
+        p, shape = self.pattern, (len(ts), self.assembly.n_dofs)
+        Q = np.broadcast_to(np.asarray(self.rheo.g0, dtype=float), shape).copy()
+        V = np.zeros(shape)
+        Q[:, p.qsel] += np.asarray(Z)[:, p.zsel]
+        V[:, p.qsel] += np.asarray(Zd)[:, p.zsel]
+        return Q, V
+
     def initial(self, q0, v0):
         return self.pattern.restrict(q0), self.pattern.restrict(v0)
 
@@ -257,7 +269,22 @@ def _ivp_jac(model, n):
 def _samples(model, t_out, X):
     """Global q, q' at the samples from the integrated states X (k, 2n)."""
     n = model.n
-    pairs = [model.full(x[:n], x[n:], t) for t, x in zip(t_out, X)]
+    X = np.asarray(X)
+    return global_samples(model, X[:, :n], X[:, n:], t_out)
+
+
+def global_samples(model, X, Xd, ts):
+    """Global (q, q') arrays at the times ts from a model's states X, Xd (one row per
+    time): its ``samples`` where it has one (a :class:`ReducedModel`), else its ``full``
+    row by row."""
+    fast = getattr(model, "samples", None)
+    if fast is not None:
+        return fast(X, Xd, ts)
+    return _stacked([model.full(x, xd, t) for x, xd, t in zip(X, Xd, ts)])
+
+
+def _stacked(pairs):
+    """Two arrays from a list of pairs of rows."""
     return np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
 
 

@@ -34,6 +34,7 @@ import scipy.sparse.linalg as spla
 from ancf.solvers.alpha_compiled import CompiledAlpha
 from ancf.solvers.alpha_march import (BLOW_UP, BUDGET, DONE, NON_FINITE, kinematics, march,
                                       newton_settings)
+from ancf.solvers.dynamics import global_samples
 from ancf.solvers.result import DynamicResult, finish
 
 
@@ -167,11 +168,22 @@ def step_times(t_out, dt: float) -> np.ndarray:
     t_out = np.asarray(t_out, dtype=float)
     gaps = np.diff(t_out)
     if dt <= gaps.min() * (1 + 1e-9):
-        parts = [t_out[:1]] + [np.linspace(a, b, max(1, math.ceil((b - a) / dt - 1e-9)) + 1)[1:]
-                               for a, b in zip(t_out[:-1], t_out[1:])]
-        return np.concatenate(parts)
+        return np.concatenate([t_out[:1], _split(t_out, np.maximum(
+            1, np.ceil(gaps / dt - 1e-9)).astype(np.int64))])
     n = max(1, math.ceil((t_out[-1] - t_out[0]) / dt - 1e-9))
     return np.linspace(t_out[0], t_out[-1], n + 1)
+
+
+def _split(t_out, m):
+    """The ends of m[i] equal parts of each interval [t_out[i], t_out[i + 1]], the
+    values of ``np.linspace(t_out[i], t_out[i + 1], m[i] + 1)[1:]``, in one array."""
+    a, b = t_out[:-1], t_out[1:]
+    which = np.repeat(np.arange(m.size), m)
+    ends = np.cumsum(m)
+    k = np.arange(1, ends[-1] + 1) - np.repeat(ends - m, m)
+    t = k * ((b - a) / m)[which] + a[which]
+    t[ends - 1] = b
+    return t
 
 
 def _hermite(s0: _State, s1: _State, ta, tb, t):
@@ -209,31 +221,32 @@ def _run_steps(st: _Stepper, s: _State, t_out, ts, limit):
     return X, V, L, True, "reached t_end"
 
 
-def _near(t, tb) -> bool:
-    return abs(t - tb) <= 1e-12 * max(1.0, abs(tb))
+def _located(t_out, ts):
+    """(i, near): per sample time, the first step end ts[i] at or after it (within
+    1e-12 s, relative above 1 s) and whether the sample falls on it."""
+    t_out = np.asarray(t_out, dtype=float)
+    i = np.minimum(np.searchsorted(ts, t_out - 1e-12 * np.maximum(1.0, np.abs(t_out))),
+                   ts.size - 1)
+    return i, np.abs(t_out - ts[i]) <= 1e-12 * np.maximum(1.0, np.abs(ts[i]))
 
 
 def _keep_slots(t_out, ts):
     """slot[i] >= 0 for the step ends whose states the samples need (the step a
     sample falls on, or both ends of the step it is interpolated in)."""
     slot = np.full(ts.size, -1, dtype=np.int64)
-    need = {0}
-    for t in t_out[1:]:
-        i = min(int(np.searchsorted(ts, t - 1e-12 * max(1.0, abs(t)))), ts.size - 1)
-        need.update((i,) if _near(t, ts[i]) else (i - 1, i))
-    for k, i in enumerate(sorted(need)):
-        slot[i] = k
-    return slot, len(need)
+    i, near = _located(t_out[1:], ts)
+    need = np.unique(np.concatenate([[0], i, i[~near] - 1]))
+    slot[need] = np.arange(need.size)
+    return slot, need.size
 
 
 def _compiled_samples(t_out, ts, slot, out_x, out_v, reached):
     """Samples (X, V) up to the step index reached, from the kept step-end states."""
     X, V = [], []
-    for t in t_out:
-        i = min(int(np.searchsorted(ts, t - 1e-12 * max(1.0, abs(t)))), ts.size - 1)
+    for t, i, near in zip(t_out, *_located(t_out, ts)):
         if i > reached:
             break
-        if _near(t, ts[i]):
+        if near:
             X.append(out_x[slot[i]]), V.append(out_v[slot[i]])
             continue
         s0, s1 = (_State(out_x[slot[j]], out_v[slot[j]], None, None, np.zeros(0)) for j in (i - 1, i))
@@ -303,9 +316,8 @@ def integrate_generalized_alpha(model, x0, v0, t_out, opt: AlphaOptions) -> Dyna
             X, V, L, ok, msg = _run_steps(st, s, t_out, ts, limit)
     cpu = time.process_time() - t0
     tt = t_out[: len(X)]
-    pairs = [model.full(x, v, t) for x, v, t in zip(X, V, tt)]
-    res = DynamicResult(t=tt, q=np.array([p[0] for p in pairs]),
-                        v=np.array([p[1] for p in pairs]), converged=ok, message=msg,
+    q, v = global_samples(model, np.array(X), np.array(V), tt)
+    res = DynamicResult(t=tt, q=q, v=v, converged=ok, message=msg,
                         integrator="generalized-alpha", steps=st.steps + int(count[4]),
                         nfev=st.nfev + int(count[0]), njev=st.nfev + int(count[1]),
                         nlu=st.nlu + int(count[2]), newton_iterations=st.iters + int(count[3]),
