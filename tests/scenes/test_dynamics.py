@@ -379,3 +379,19 @@ def test_analytic_reference_inputs():
         DYNAMIC_REFERENCES["rigid-pendulum"].execute({"t_end": -1})
     out, _ = DYNAMIC_REFERENCES["spinning-extension"].execute({"omega_s": 1e4})
     assert out["converged"] is False and "resonance" in out["message"]
+
+
+def test_pendulum_model_is_built_once_per_structure():
+    """setup shares the model between runs of one structure (a new one for another g),
+    and the gravity it holds is the parameter's: the sum of its gravity loads is the
+    weight rho L h b g (N)."""
+    p = PEND.resolve({})
+    first, again = pendulum.setup(p), pendulum.setup(dict(p))
+    other = pendulum.setup({**p, "g": 2.0 * p["g"]})
+    assert again[3] is first[3] and other[3] is not first[3]
+    first[1][:] = np.nan  # q0 is the caller's own copy
+    assert np.all(np.isfinite(pendulum.setup(p)[1]))
+    for (_, q0, asm, _, forces), g in ((first, p["g"]), (other, 2.0 * p["g"])):
+        load = forces.value(q0, np.zeros_like(q0), 0.0)
+        mass = p["rho"] * p["L"] * p["h"] * p["b"]
+        assert -load.sum() == pytest.approx(mass * g, rel=1e-12)
