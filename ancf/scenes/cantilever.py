@@ -5,6 +5,7 @@ Omar-Shabana columns are reproduced to the printed digits (reports/static_beams.
 Model 1: h = 0.1 m, nu = 0.3 (defaults); Model 2: h = 0.5 m, nu = 0.
 """
 import math
+from functools import lru_cache
 
 import numpy as np
 
@@ -18,18 +19,26 @@ from ancf.core.validity import check_static
 
 def setup(p):
     """(mesh, q0, assembly, elimination, load vector) of the cantilever (density
-    ``p["rho"]`` if given)."""
+    ``p["rho"]`` if given).  The elimination (read-only) is built once per clamp
+    (:func:`_clamp`), as the mesh and assembly are (``beam_static.build``)."""
     mesh, q0, asm = bs.build(p)
     n = p["n_elements"]
-    elim = Elimination(mesh.n_dofs)
     slots = ("r", "r_y") + (("r_x",) if p["clamp_x_slope"] == "fixed" else ())
-    for slot in (name for name in slots if name in mesh.slots):
-        for k in (0, 1):
-            d = mesh.dof(0, slot, k)
-            elim.fix(d, q0[d])
+    dofs = [mesh.dof(0, slot, k) for slot in slots if slot in mesh.slots for k in (0, 1)]
+    elim = _clamp(mesh.n_dofs, tuple((d, float(q0[d])) for d in dofs))
     Qk = np.zeros(mesh.n_dofs)
     Qk[mesh.dof(n, "r", 1)] = p["F"]
     return mesh, q0, asm, elim, Qk
+
+
+@lru_cache(maxsize=32)
+def _clamp(n_dofs: int, pins: tuple) -> Elimination:
+    """The elimination of ``n_dofs`` coordinates fixing those of ``pins`` (pairs of
+    coordinate and value)."""
+    elim = Elimination(n_dofs)
+    for d, value in pins:
+        elim.fix(d, value)
+    return elim
 
 
 def run(p):

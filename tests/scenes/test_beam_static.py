@@ -49,3 +49,16 @@ def test_runs_share_the_reduced_pattern_of_the_same_constraints():
     assert a.extra["pattern"] is b.extra["pattern"]
     assert fixed.extra["pattern"] is not a.extra["pattern"]
     assert fixed.extra["pattern"].n == a.extra["pattern"].n - 2
+
+
+def test_cantilever_clamp_is_built_once_per_clamp():
+    """setup shares the elimination between runs of one clamp; it fixes r and dr/dy of
+    the first node (and dr/dx with clamp_x_slope = fixed) at their reference values."""
+    from ancf.scenes import cantilever
+    p = SCENES["cantilever"].resolve({"element": "omar-shabana"})
+    mesh, q0, _, elim, _ = cantilever.setup(p)
+    assert cantilever.setup(dict(p))[3] is elim
+    fixed = cantilever.setup({**p, "clamp_x_slope": "fixed"})[3]
+    for e, slots in ((elim, ("r", "r_y")), (fixed, ("r", "r_x", "r_y"))):
+        want = {mesh.dof(0, s, k): q0[mesh.dof(0, s, k)] for s in slots for k in (0, 1)}
+        assert e.fixed == want
