@@ -170,13 +170,15 @@ class _Newton:
                                                     lam, self.Qk_r, opt.rtol * self.scale,
                                                     opt.xtol, opt.max_iter, hist)
         self.tangent = K if status == 0 else None
-        history.extend(float(h) for h in hist[:its])
+        history.extend(hist[:its].tolist())
         self.tangents += its
         self.factorizations += facts
-        why = ("", "residual is not finite",
+        if status == 0:
+            return z, True, its, ""
+        why = ("residual is not finite",
                "singular tangent stiffness (zero pivot or non-finite solution)",
-               f"no convergence in {opt.max_iter} iterations (|r| = {rn:.3e})")[status]
-        return z, status == 0, its, why
+               f"no convergence in {opt.max_iter} iterations (|r| = {rn:.3e})")[status - 1]
+        return z, False, its, why
 
 
 def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = None,
