@@ -32,7 +32,7 @@ import scipy.sparse.linalg as spla
 
 from ancf.core.pattern import ReducedPattern
 from ancf.solvers.linear import Singular, factor
-from ancf.solvers.result import DynamicResult, finish
+from ancf.solvers.result import DynamicResult, finish, global_samples, stacked
 
 IVP_METHODS = {"rk45": si.RK45, "dop853": si.DOP853, "radau": si.Radau, "bdf": si.BDF}
 IMPLICIT = ("radau", "bdf")
@@ -121,7 +121,7 @@ class ReducedModel:
         """Global (q, q') at the times ts from the states Z, Zd (one row per time): the
         rows of :meth:`full`, in one scatter where g does not depend on time."""
         if self.rheo.time_dependent or not len(ts):
-            return _stacked([self.full(z, zd, t) for z, zd, t in zip(Z, Zd, ts)])
+            return stacked([self.full(z, zd, t) for z, zd, t in zip(Z, Zd, ts)])
         p, shape = self.pattern, (len(ts), self.assembly.n_dofs)
         Q = np.broadcast_to(np.asarray(self.rheo.g0, dtype=float), shape).copy()
         V = np.zeros(shape)
@@ -271,21 +271,6 @@ def _samples(model, t_out, X):
     n = model.n
     X = np.asarray(X)
     return global_samples(model, X[:, :n], X[:, n:], t_out)
-
-
-def global_samples(model, X, Xd, ts):
-    """Global (q, q') arrays at the times ts from a model's states X, Xd (one row per
-    time): its ``samples`` where it has one (a :class:`ReducedModel`), else its ``full``
-    row by row."""
-    fast = getattr(model, "samples", None)
-    if fast is not None:
-        return fast(X, Xd, ts)
-    return _stacked([model.full(x, xd, t) for x, xd, t in zip(X, Xd, ts)])
-
-
-def _stacked(pairs):
-    """Two arrays from a list of pairs of rows."""
-    return np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
 
 
 def _step_loop(solver, t_out, max_steps, limit, X, count):

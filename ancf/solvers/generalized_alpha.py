@@ -34,8 +34,7 @@ import scipy.sparse.linalg as spla
 from ancf.solvers.alpha_compiled import CompiledAlpha
 from ancf.solvers.alpha_march import (BLOW_UP, BUDGET, DONE, NON_FINITE, kinematics, march,
                                       newton_settings)
-from ancf.solvers.dynamics import global_samples
-from ancf.solvers.result import DynamicResult, finish
+from ancf.solvers.result import DynamicResult, finish, global_samples
 
 
 @dataclass(frozen=True)

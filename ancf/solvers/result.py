@@ -43,3 +43,18 @@ def finish(model, res: DynamicResult, X) -> DynamicResult:
             res.multipliers = np.array([model.multipliers(q, v, t)[1]
                                         for q, v, t in zip(res.q, res.v, res.t)])
     return res
+
+
+def global_samples(model, X, Xd, ts):
+    """Global (q, q') arrays at the times ts from a model's states X, Xd (one row per
+    time): its ``samples`` where it has one (a :class:`ReducedModel`), else its ``full``
+    row by row."""
+    fast = getattr(model, "samples", None)
+    if fast is not None:
+        return fast(X, Xd, ts)
+    return stacked([model.full(x, xd, t) for x, xd, t in zip(X, Xd, ts)])
+
+
+def stacked(pairs):
+    """Two arrays from a list of pairs of rows."""
+    return np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])

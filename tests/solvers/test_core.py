@@ -283,7 +283,7 @@ def test_step_times_split_each_sample_interval_like_linspace(t_out, dt):
 
 def test_reduced_samples_are_the_full_states_row_by_row():
     """ReducedModel.samples (one scatter) equals ReducedModel.full per sample."""
-    from ancf.solvers.dynamics import global_samples
+    from ancf.solvers.result import global_samples
     p = SCENES["pendulum"].resolve({})
     mdl = pendulum.setup(p)[3]
     Z, Zd = np.random.default_rng(3).normal(size=(2, 7, mdl.n))
