@@ -42,7 +42,7 @@ def _check_basis(el):
 
 def _gradients(el, E):
     """r_x, r_y (..., nel, npts, 2) of element coordinates E (..., nel, nshape, 2)."""
-    return [np.einsum("eqk,...ekd->...eqd", b, E) for b in _check_basis(el)]
+    return [b @ E for b in _check_basis(el)]
 
 
 def _det(rx, ry):
