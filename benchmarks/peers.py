@@ -127,6 +127,22 @@ def machine() -> dict:
             "load_average_at_start": " / ".join(f"{x:.2f}" for x in os.getloadavg())}
 
 
+def record(name: str, args, settings: dict, **first) -> dict:
+    """The head of a race's JSON (``python -m benchmarks.NAME ARGS``): schema, ``first``'s
+    keys, the start time, the command, the machine and ``settings``."""
+    return {"schema": 1, **first,
+            "started": dt.datetime.now(dt.timezone.utc).isoformat(timespec="seconds"),
+            "command": f"python -m benchmarks.{name} " + " ".join(args),
+            "machine": machine(), "settings": settings}
+
+
+def write(out: Path, stem: str, res: dict, text: str) -> None:
+    """out/stem.json (the raw numbers) and out/stem.md (``text``)."""
+    out.mkdir(parents=True, exist_ok=True)
+    (out / f"{stem}.json").write_text(json.dumps(res, indent=1) + "\n")
+    (out / f"{stem}.md").write_text(text)
+
+
 def tip_error(ans: dict, ref: dict) -> float | None:
     """Largest distance between two tip trajectories (lists) or two tip points."""
     x, y, rx, ry = ans.get("tip_x"), ans.get("tip_y"), ref.get("tip_x"), ref.get("tip_y")

@@ -25,7 +25,6 @@ both against the reference) and ``peers_3d.md`` beside it.
 from __future__ import annotations
 
 import argparse
-import datetime as dt
 import json
 import math
 import statistics
@@ -303,16 +302,11 @@ def main(argv=None) -> int:
         print("peers_3d: exudyn is not installed (pip install -e .[peers]); skipped")
         return 0
     env = peers.worker_env()
-    res = {"schema": 1, "repeats": args.repeats,
-           "started": dt.datetime.now(dt.timezone.utc).isoformat(timespec="seconds"),
-           "command": "python -m benchmarks.peers_3d " + " ".join(argv),
-           "machine": peers.machine(), "settings": SETTINGS | {
-               "worker_env": peers.THREAD_ENV, "unset": peers.UNSET_ENV}}
+    res = peers.record("peers_3d", argv, SETTINGS | {
+        "worker_env": peers.THREAD_ENV, "unset": peers.UNSET_ENV}, repeats=args.repeats)
     res["cases"] = [race_case(c, n, a, args.repeats, env) for c, n, a in PLAN]
     res["workers"] = {"exudyn": res["cases"][0]["exudyn"].get("exudyn")}
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / "peers_3d.json").write_text(json.dumps(res, indent=1) + "\n")
-    (args.out / "peers_3d.md").write_text(markdown(res))
+    peers.write(args.out, "peers_3d", res, markdown(res))
     print(f"peers_3d: wrote {args.out}/peers_3d.json/.md")
     return 0
 

@@ -26,7 +26,6 @@ Exudyn) and ``peers_ale.md`` beside it.
 from __future__ import annotations
 
 import argparse
-import datetime as dt
 import json
 import statistics
 import subprocess
@@ -184,14 +183,10 @@ def main(argv=None) -> int:
     if peers.exudyn_missing():
         print("peers_ale: exudyn is not installed (pip install -e .[peers]); skipped")
         return 0
-    res = {"schema": 1, "repeats": args.repeats,
-           "started": dt.datetime.now(dt.timezone.utc).isoformat(timespec="seconds"),
-           "command": "python -m benchmarks.peers_ale " + " ".join(argv),
-           "machine": peers.machine(), "settings": _settings(args.file, args.step)}
+    res = peers.record("peers_ale", argv, _settings(args.file, args.step),
+                       repeats=args.repeats)
     res |= race(args.file, args.repeats, args.step, peers.worker_env())
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / "peers_ale.json").write_text(json.dumps(res, indent=1) + "\n")
-    (args.out / "peers_ale.md").write_text(markdown(res))
+    peers.write(args.out, "peers_ale", res, markdown(res))
     print(f"peers_ale: ratio {res['ratio']}; wrote {args.out}/peers_ale.json/.md")
     return 0
 

@@ -34,7 +34,6 @@ markdown table beside it.
 from __future__ import annotations
 
 import argparse
-import datetime as dt
 import json
 import subprocess
 import sys
@@ -157,20 +156,15 @@ def main(argv=None) -> int:
         print("peers_thread: exudyn is not installed (pip install -e .[peers]); skipped")
         return 0
     env = peers.worker_env()
-    res = {"schema": 1, "t_end": args.t_end,
-           "started": dt.datetime.now(dt.timezone.utc).isoformat(timespec="seconds"),
-           "command": "python -m benchmarks.peers_thread " + " ".join(argv or sys.argv[1:]),
-           "machine": peers.machine(),
-           "settings": {**SETTINGS, "file": _relative(args.file), "file_text": args.file.read_text(),
-                        "extra_sets": args.set,
-                        "worker_env": peers.THREAD_ENV, "unset": peers.UNSET_ENV}}
+    res = peers.record("peers_thread", argv or sys.argv[1:], {
+        **SETTINGS, "file": _relative(args.file), "file_text": args.file.read_text(),
+        "extra_sets": args.set, "worker_env": peers.THREAD_ENV, "unset": peers.UNSET_ENV},
+        t_end=args.t_end)
     res["ours"] = _ours(args.file, args.t_end, args.set, env)
     res["exudyn"] = _exudyn(args.t_end, env)
     res["ratio"] = peers._ratio(res["ours"].get("cpu_s"), res["exudyn"].get("cpu_s"))
     res["stem"] = "peers_thread" if args.t_end >= T_END else "peers_thread_short"
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / f"{res['stem']}.json").write_text(json.dumps(res, indent=1) + "\n")
-    (args.out / f"{res['stem']}.md").write_text(markdown(res))
+    peers.write(args.out, res["stem"], res, markdown(res))
     print(f"peers_thread: ratio {res['ratio']}; wrote {args.out / res['stem']}.json/.md")
     return 0
 
