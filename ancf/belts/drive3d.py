@@ -36,6 +36,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ancf.belts import friction
+from ancf.belts.arm3d import Drive3DArms
 from ancf.belts.drive2d import DriveSpec, PulleyDrive, Rig, thesis_rig
 from ancf.belts.path import laid_belt
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
@@ -178,10 +179,12 @@ class Belt3DDrive(PulleyDrive):
         return self.centres, self.axes, self.radii, np.zeros(npul), np.zeros((npul, 3))
 
     def kernel(self) -> Drive3D:
-        """The drive's compiled data (:mod:`ancf.belts.forces`)."""
+        """The drive's compiled data (:mod:`ancf.belts.forces`; with tensioner arms a
+        :class:`ancf.belts.arm3d.Drive3DArms`)."""
         r = self.rig
         moving, shift = self.motion_arrays()
-        return Drive3D(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
+        record = Drive3DArms if r.arms.shape[0] else Drive3D
+        return record(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
                        S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
                        free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,
                        arms=r.arms, z=None, h=np.zeros(1),
