@@ -28,8 +28,8 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   ``elastic_points`` (n x n Gauss points per plate), ``length`` or ``prestretch`` and
   ``contact_offset``; its ``[contact]`` is per unit area (``k_p`` N/m^3, ``c_p``
   N s/m^3, ``gauss_points`` 25, 49 or 81 over each plate's mid surface), its friction
-  parameters too (``nu_s`` kg/(m^2 s)); it refuses a tensioner (the arm's row is the
-  2D belt's) and a friction law with a state.
+  parameters too (``nu_s`` kg/(m^2 s)); a tensioner's arm turns about the z axis
+  through its pivot (:mod:`ancf.belts.arm3d`); it refuses a friction law with a state.
 * ``[[pulleys]]``, in the belt's counter-clockwise running order (:mod:`ancf.belts.path`):
   ``name``, ``centre`` [x, y] (m), ``radius`` (m), ``side`` (+1 the belt's inner side on
   it, -1 its back) and a ``law`` (a :class:`PulleyRole` of :data:`ROLES`) with its keys:
@@ -225,7 +225,7 @@ class PulleyRole:
     the prescribed angular velocity rad/s, or the load torque N m of a free pulley; None:
     none, zero); ``free`` whether it turns freely (a coordinate with its ``inertia`` and
     ``damping``); ``arm`` whether it sits on a tensioner arm (one more coordinate,
-    :mod:`ancf.belts.arm2d`: the 2D belt's only); ``steady`` its entries of the steady
+    :mod:`ancf.belts.arm2d`, :mod:`ancf.belts.arm3d`); ``steady`` its entries of the steady
     reference's pulley (:func:`analytic.belt_steady.solve`) from its resolved keys;
     ``derive`` adds derived keys to the resolved ones (InputError naming the key)."""
 
@@ -307,8 +307,6 @@ MOTION = _keys(
 )
 #: every key a pulley law or its time law may take (beyond PULLEY's)
 LAW_PARAMS = {**{k.name: k for role in ROLES.values() for k in role.keys}, **TIME_KEYS}
-#: the pulley laws each element's drive carries (a tensioner's arm: the 2D belt's only)
-ELEMENT_LAWS = {"dufva2d": LAWS, "plate36": tuple(n for n, r in ROLES.items() if not r.arm)}
 #: the keys of each pulley law (beyond PULLEY's); its time law adds that law's keys
 LAW_KEYS = {name: tuple(k.name for k in role.keys) for name, role in ROLES.items()}
 

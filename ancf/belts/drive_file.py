@@ -12,10 +12,9 @@ that does not exist or is no TOML (with the line tomllib gives), an unknown key,
 missing one, a value out of range, an unknown law or one missing a parameter, and a
 layout the belt cannot be laid on (overlapping pulleys, a pulley it cannot wrap, a belt
 shorter than half its path or longer than the path; the same at every pulley centre's
-``centre_shift``), and a pulley law or friction law the
-belt's element does not carry (``plate36``: no tensioner, no law with a state), and a
-``belt.formulation = 'ale'`` the ALE march does not carry (the plate belt, a friction law
-with a state).
+``centre_shift``), and a friction law the belt's element does not carry (``plate36``: no
+law with a state), and a ``belt.formulation = 'ale'`` the ALE march does not carry (the
+plate belt, a friction law with a state).
 """
 from __future__ import annotations
 
@@ -188,14 +187,11 @@ def _law_keys(table: dict, prefix: str) -> tuple:
     return name, {**keys, **dd.MOTION}, f" (law {name!r}: {', '.join(names[len(dd.PULLEY):])})"
 
 
-def _pulley_spec(i: int, table, element: str) -> dd.PulleySpec:
+def _pulley_spec(i: int, table) -> dd.PulleySpec:
     prefix = f"pulleys.{i}."
     if not isinstance(table, dict):
         raise InputError(f"pulleys.{i}: {table!r} is not a table; allowed: a table [[pulleys]]")
     law, keys, why = _law_keys(table, prefix)
-    if law not in dd.ELEMENT_LAWS[element]:
-        raise _refuse(prefix + "law", law, element, dd.ELEMENT_LAWS[element],
-                      "a tensioner's arm is the 2D belt's")
     v = _values(table, prefix, keys, why=why)
     if "t1" in v and not v["t1"] > v["t0"]:
         raise InputError(f"{prefix}t1 = {v['t1']!r} is out of range; allowed: a number > "
@@ -205,12 +201,12 @@ def _pulley_spec(i: int, table, element: str) -> dd.PulleySpec:
     return dd.PulleySpec(v["name"], v["centre"], v["radius"], v["side"], law, params)
 
 
-def _pulleys(data: dict, element: str) -> tuple:
+def _pulleys(data: dict) -> tuple:
     tables = data.get("pulleys")
     count = f"{len(tables)} given" if isinstance(tables, list) else "missing or not an array"
     if not isinstance(tables, list) or len(tables) < 2:
         raise InputError(f"pulleys: {count}; allowed: an array of at least 2 tables [[pulleys]]")
-    pulleys = tuple(_pulley_spec(i, t, element) for i, t in enumerate(tables))
+    pulleys = tuple(_pulley_spec(i, t) for i, t in enumerate(tables))
     for i, p in enumerate(pulleys):
         first = next(j for j, q in enumerate(pulleys) if q.name == p.name)
         if first != i:
@@ -300,7 +296,7 @@ def describe(data: dict) -> dd.DriveDescription:
     gravity = _values({k: data[k] for k in dd.TOP if k in data}, "", dd.TOP)["gravity"]
     element = _element(data)
     belt = _belt(data, element)
-    pulleys = _pulleys(data, element)
+    pulleys = _pulleys(data)
     path = _path(pulleys, belt["contact_offset"])
     _length(belt, path.length)
     _moved(pulleys, belt)

@@ -355,9 +355,7 @@ BAD_PLATE = [  # (overrides, or an edit of the 3D example's data; the one line i
      r"number in \(0, 1e\+13\] N/m\^3"),
     (_without(("friction", "nu_s")), r"friction.nu_s: missing \(law 'creep-rate'\); allowed: "
      r"a number in \(0, 1e\+09\] kg/\(m\^2 s\)"),
-    (["pulleys.idler.law=tensioner"], r"pulleys.1.law = 'tensioner' is out of range for "
-     r"belt.element = 'plate36'; allowed: one of prescribed, driven, idler, fixed \(a "
-     r"tensioner's arm is the 2D belt's\)"),
+    (["pulleys.idler.law=tensioner"], r"pulleys.1.pivot: missing \(law 'tensioner': "),
     (["friction.law=bristle"], r"friction.law = 'bristle' is out of range for belt.element = "
      r"'plate36'; allowed: one of creep-rate, coulomb \(a law with a state per contact point "
      r"is carried by the 2D belt only\)"),
