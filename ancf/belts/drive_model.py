@@ -22,7 +22,8 @@ stress-free or per laid length; the damping alike).
 
 The plate belt (``plate36``, :class:`ancf.belts.drive3d.Plate3DSpec`) is laid on the same
 path in the x-y plane, its width along the pulley axes (+z), with the same pulley rows
-(centres at z = 0; no tensioner, the file refuses it); its friction and contact are per
+(centres at z = 0; a tensioner's arm turns about z through its pivot,
+:mod:`ancf.belts.arm3d`); its friction and contact are per
 unit area, its weight that of the in-plane gravity.
 """
 from __future__ import annotations

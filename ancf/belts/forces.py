@@ -93,7 +93,7 @@ class Drive3D(NamedTuple):
     inertia: np.ndarray
     damping: np.ndarray
     weight: np.ndarray   # (n,)
-    arms: np.ndarray     # (0, ARM_COLUMNS): no tensioner arms in 3D
+    arms: np.ndarray     # (0, ARM_COLUMNS): the arms are arm3d.Drive3DArms's
     z: None              # no friction law with a state in 3D
     h: np.ndarray        # (1,)
     last: np.ndarray     # (2, np)

@@ -100,9 +100,10 @@ def span_tension(drive, smp: dict, span) -> float:
 
 
 def _contact_args(drive, x, v, t: float) -> tuple:
-    """Arguments of the 3D contact kernels at state (x, v), time t."""
+    """Arguments of the 3D contact kernels at state (x, v), time t: the centres moved by
+    their laws and a tensioner's on its arm (:meth:`ancf.belts.drive2d.PulleyDrive.moved`)."""
     E, V = drive.element_coords(drive.belt(x)), drive.element_coords(drive.belt(v))
-    o, odot = drive.centre_motion(t)
+    o, odot = drive.moved(x, v, t)
     return E, V, o, drive.omegas(t, v), odot
 
 
