@@ -169,11 +169,10 @@ def _unit_axis(axes, p, out):
 
 
 @leaf
-def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
-    """Contact law at one point, a = r - o (m), vr = rdot - odot (m/s), unit axis p.
-    Fills n, t, v_s, f_t (3,) and returns |N|, d, F_n, |v_s| and the branch:
-    0 out (d < 0), 1 clamped (F_n = 0), else the friction law's (creep-rate: 2 linear,
-    3 saturated).  Computed in registers, stored once."""
+def _point_geometry(a, vr, p, R, om, prm, n, t, vs):
+    """The geometry and normal force at one point, a = r - o (m), vr = rdot - odot (m/s),
+    unit axis p: fills n, t, v_s (3,) and returns |N|, d, F_n, |v_s| and 0 out (d < 0),
+    1 clamped (F_n = 0), -1 in contact (F_n > 0).  Computed in registers, stored once."""
     kp, cp = prm.k_p, prm.c_p
     ap = a[0] * p[0] + a[1] * p[1] + a[2] * p[2]
     n0, n1, n2 = a[0] - ap * p[0], a[1] - ap * p[1], a[2] - ap * p[2]
@@ -196,13 +195,54 @@ def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
     vsn = np.sqrt(vsn)
     n[0], n[1], n[2], t[0], t[1], t[2] = n0, n1, n2, t0, t1, t2
     vs[0], vs[1], vs[2] = vs0, vs1, vs2
-    ft[:] = 0.0
     if d < 0.0:
         return rho, d, 0.0, vsn, 0
     Fn = kp * d - cp * wn
     if Fn <= 0.0:
         return rho, d, 0.0, vsn, 1
-    return rho, d, Fn, vsn, friction.force((vs0, vs1, vs2), vsn, Fn, prm, ft)
+    return rho, d, Fn, vsn, -1
+
+
+@leaf
+def _point_law(a, vr, p, R, om, prm, n, t, vs, ft):
+    """Contact law at one point (:func:`_point_geometry`): fills n, t, v_s, f_t (3,) and
+    returns |N|, d, F_n, |v_s| and the branch: 0 out (d < 0), 1 clamped (F_n = 0), else
+    the friction law's (creep-rate: 2 linear, 3 saturated)."""
+    rho, d, Fn, vsn, where = _point_geometry(a, vr, p, R, om, prm, n, t, vs)
+    ft[:] = 0.0
+    if where >= 0:
+        return rho, d, Fn, vsn, where
+    return rho, d, Fn, vsn, friction.force((vs[0], vs[1], vs[2]), vsn, Fn, prm, ft)
+
+
+@leaf
+def _normal_rates(vr, rho, n, t, prm, gF):
+    """gF (7,): dF_n / d(r, rdot, omega) = (-(k_p n + c_p (t . vr) t / |N|), -c_p n, 0)."""
+    kp, cp = prm.k_p, prm.c_p
+    tv = t[0] * vr[0] + t[1] * vr[1] + t[2] * vr[2]
+    for c in range(3):
+        gF[c] = -kp * n[c] - cp * tv * t[c] / rho
+        gF[3 + c] = -cp * n[c]
+    gF[6] = 0.0
+
+
+@leaf
+def _add_normal(p, rho, Fn, n, t, ft, gF, D):
+    """Complete D (4, 7) whose rows 0-2 hold d f_t: add d(F_n n) to them and fill row 3,
+    d tau with tau = -f . (p x (r - o)), p x (r - o) = |N| t."""
+    for i in range(3):
+        for c in range(7):
+            D[i, c] += n[i] * gF[c]
+        for c in range(3):
+            D[i, c] += Fn * t[i] * t[c] / rho
+    px0 = p[1] * (Fn * n[2] + ft[2]) - p[2] * (Fn * n[1] + ft[1])
+    px1 = p[2] * (Fn * n[0] + ft[0]) - p[0] * (Fn * n[2] + ft[2])
+    px2 = p[0] * (Fn * n[1] + ft[1]) - p[1] * (Fn * n[0] + ft[0])
+    for c in range(7):
+        D[3, c] = -rho * (t[0] * D[0, c] + t[1] * D[1, c] + t[2] * D[2, c])
+    D[3, 0] += px0
+    D[3, 1] += px1
+    D[3, 2] += px2
 
 
 @leaf
@@ -213,14 +253,10 @@ def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, gF, G
     dn/dr = t t^T / |N|, dt/dr = -n t^T / |N|, d|N|/dr = n^T;
     dF_n = -(k_p n + c_p (t . vr) t / |N|) . dr - c_p n . drdot;
     dv_s = -((n . w) t + (t . w) n) t^T / |N| dr + (I - n n^T) drdot - R t domega."""
-    kp, cp = prm.k_p, prm.c_p
+    _normal_rates(vr, rho, n, t, prm, gF)
     tv = t[0] * vr[0] + t[1] * vr[1] + t[2] * vr[2]
     nw = n[0] * vr[0] + n[1] * vr[1] + n[2] * vr[2]
     tw = tv - om * R
-    for c in range(3):
-        gF[c] = -kp * n[c] - cp * tv * t[c] / rho
-        gF[3 + c] = -cp * n[c]
-    gF[6] = 0.0
     # G = dv_s / d(r, rdot, omega)
     for i in range(3):
         for c in range(3):
@@ -229,21 +265,7 @@ def _point_jacobian(vr, p, R, om, rho, Fn, vsn, branch, n, t, vs, ft, prm, gF, G
         G[i, 6] = -R * t[i]
     gFt = (gF[0], gF[1], gF[2], gF[3], gF[4], gF[5], gF[6])
     friction.chain(branch, (vs[0], vs[1], vs[2]), vsn, Fn, prm, G, gFt, D)  # D[:3] = d f_t
-    # + d(F_n n)
-    for i in range(3):
-        for c in range(7):
-            D[i, c] += n[i] * gF[c]
-        for c in range(3):
-            D[i, c] += Fn * t[i] * t[c] / rho
-    # tau = -f . (p x (r - o)), p x (r - o) = |N| t
-    px0 = p[1] * (Fn * n[2] + ft[2]) - p[2] * (Fn * n[1] + ft[1])
-    px1 = p[2] * (Fn * n[0] + ft[0]) - p[0] * (Fn * n[2] + ft[2])
-    px2 = p[0] * (Fn * n[1] + ft[1]) - p[1] * (Fn * n[0] + ft[0])
-    for c in range(7):
-        D[3, c] = -rho * (t[0] * D[0, c] + t[1] * D[1, c] + t[2] * D[2, c])
-    D[3, 0] += px0
-    D[3, 1] += px1
-    D[3, 2] += px2
+    _add_normal(p, rho, Fn, n, t, ft, gF, D)
 
 
 @njit(cache=True)
