@@ -40,6 +40,7 @@ from ancf.belts.arm3d import Drive3DArms
 from ancf.belts.drive2d import DriveSpec, PulleyDrive, Rig, thesis_rig
 from ancf.belts.path import laid_belt
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
+from ancf.belts.contact3d_state import Drive3DState
 from ancf.belts.forces import Drive3D
 from ancf.elements.plate36 import Plate36
 from ancf.core.pattern import ReducedPattern, scatter
@@ -59,7 +60,7 @@ class Plate3DSpec(DriveSpec):
     bending: bool               # Eq. 4.17 on (Model 1) or off (Model 2)
     k_p: float                  # penalty stiffness per unit area, N/m^3
     c_p: float                  # penalty damping per unit area, N s/m^3
-    friction: tuple             # (law, its parameters): a row of ancf.belts.friction.PARAMS
+    friction: tuple             # (law, its parameters): a row of ancf.belts.friction.ALL_PARAMS
     contact_points: int         # surface rule per element (25, 49, 81)
     ng: int = 4                 # Gauss points per direction, elastic forces
 
@@ -122,12 +123,7 @@ class Belt3DDrive(PulleyDrive):
                 np.zeros(self.pattern.n), self.Mb, True)
         self.weight = self.pattern.restrict(self._weight(gravity))
         self.S0, self.w = contact_points3d(self.lengths, np.full(n, s.width), s.contact_points)
-        friction_law, *values = s.friction
-        if friction_law in friction.STATE_LAWS:
-            raise ValueError(f"friction law {friction_law!r}: its state per contact point is "
-                             "carried by the 2D drive only; allowed in 3D: "
-                             + ", ".join(friction.LAWS))
-        self.prm = friction.contact_record(s.k_p, s.c_p, friction_law, *values)
+        self.prm = friction.contact_record(s.k_p, s.c_p, *s.friction)
         if rig is None:
             self.speed_law = law(SPEED_LAWS, s.driver_law, "driver_law")
             self.torque_law = law(TORQUE_LAWS, s.torque_law, "torque_law")
@@ -135,6 +131,19 @@ class Belt3DDrive(PulleyDrive):
                           motions=(CentreMotion(pulley=0, direction=SHIFT, law=self.shift),))
         self.rig = rig
         self.axes = np.tile(AXIS, (rig.radii.size, 1))
+        self.z = self._friction_state()
+        self.h = np.zeros(1)
+
+    def _friction_state(self):
+        """The friction state (2, nel, nq, np, 2) m of a law with a state
+        (:mod:`ancf.belts.contact3d_state`; not with tensioner arms: ValueError), else None."""
+        if not friction.has_state(self.prm):
+            return None
+        if self.rig.arms.shape[0]:
+            raise ValueError(f"friction law {self.spec.friction[0]!r}: its state per contact "
+                             "point is not carried by the plate belt's tensioner arms; "
+                             "allowed with arms: " + ", ".join(friction.LAWS))
+        return np.zeros((2, *self.w.shape, self.rig.radii.size, 2))
 
     def _weight(self, gravity) -> np.ndarray:
         """The belt's weight as global generalised forces, N: the consistent mass times
@@ -183,10 +192,11 @@ class Belt3DDrive(PulleyDrive):
         :class:`ancf.belts.arm3d.Drive3DArms`)."""
         r = self.rig
         moving, shift = self.motion_arrays()
-        record = Drive3DArms if r.arms.shape[0] else Drive3D
+        record = (Drive3DArms if r.arms.shape[0] else
+                  Drive3DState if self.z is not None else Drive3D)
         return record(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
                        S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
                        free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,
-                       arms=r.arms, z=None, h=np.zeros(1),
+                       arms=r.arms, z=self.z, h=self.h,
                        last=np.zeros((2, r.radii.size)), axes=self.axes, moving=moving,
                        shift=shift)

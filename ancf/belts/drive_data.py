@@ -28,8 +28,10 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   ``elastic_points`` (n x n Gauss points per plate), ``length`` or ``prestretch`` and
   ``contact_offset``; its ``[contact]`` is per unit area (``k_p`` N/m^3, ``c_p``
   N s/m^3, ``gauss_points`` 25, 49 or 81 over each plate's mid surface), its friction
-  parameters too (``nu_s`` kg/(m^2 s)); a tensioner's arm turns about the z axis
-  through its pivot (:mod:`ancf.belts.arm3d`); it refuses a friction law with a state.
+  parameters too (``nu_s`` kg/(m^2 s); the bristle law's ``stiffness`` N/m^3, ``damping``
+  N s/m^3, its state per contact point in the rim's tangent plane:
+  :mod:`ancf.belts.contact3d_state`); a tensioner's arm turns about the z axis through
+  its pivot (:mod:`ancf.belts.arm3d`; with a friction law without a state).
 * ``[[pulleys]]``, in the belt's counter-clockwise running order (:mod:`ancf.belts.path`):
   ``name``, ``centre`` [x, y] (m), ``radius`` (m), ``side`` (+1 the belt's inner side on
   it, -1 its back) and a ``law`` (a :class:`PulleyRole` of :data:`ROLES`) with its keys:
@@ -316,12 +318,11 @@ FRICTION_KEYS = {law: _keys(*(replace(q, default=REQUIRED) for q in params))
                  for law, params in friction.ALL_PARAMS.items()}
 #: a unit per unit length of belt (2D) -> per unit area (the plate belt)
 PER_AREA = {"kg/(m s)": "kg/(m^2 s)", "N/m^2": "N/m^3", "N s/m^2": "N s/m^3"}
-#: each element's friction laws and their parameters (the plate belt: laws without a state,
-#: per unit area)
+#: each element's friction laws and their parameters (the plate belt's per unit area)
 ELEMENT_FRICTION = {
     "dufva2d": FRICTION_KEYS,
     "plate36": {law: {k: replace(q, unit=PER_AREA.get(q.unit, q.unit)) for k, q in keys.items()}
-                for law, keys in FRICTION_KEYS.items() if law in friction.PARAMS}}
+                for law, keys in FRICTION_KEYS.items()}}
 
 CONTACT = _keys(
     Param("k_p", REQUIRED, float, "N/m^2", "penalty stiffness per unit length", lo=0,

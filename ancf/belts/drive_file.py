@@ -12,9 +12,9 @@ that does not exist or is no TOML (with the line tomllib gives), an unknown key,
 missing one, a value out of range, an unknown law or one missing a parameter, and a
 layout the belt cannot be laid on (overlapping pulleys, a pulley it cannot wrap, a belt
 shorter than half its path or longer than the path; the same at every pulley centre's
-``centre_shift``), and a friction law the belt's element does not carry (``plate36``: no
-law with a state), and a ``belt.formulation = 'ale'`` the ALE march does not carry (the
-plate belt, a friction law with a state).
+``centre_shift``), a friction law the belt's element does not carry (``plate36`` with a
+tensioner arm: no law with a state), and a ``belt.formulation = 'ale'`` the ALE march does
+not carry (the plate belt, a friction law with a state).
 """
 from __future__ import annotations
 
@@ -258,16 +258,17 @@ def _length(belt: dict, P: float) -> None:
     belt["prestretch"] = belt["length"] / P - 1.0
 
 
-def _friction(data: dict, element: str) -> dict:
+def _friction(data: dict, element: str, pulleys: tuple) -> dict:
     table = _table(data, "friction")
     law = Param("law", dd.REQUIRED, str, doc="friction law", choices=tuple(FRICTION_LAWS))
     if "law" not in table:
         raise _missing(law, "friction.")
     name = replace(law, name="friction.law").parse(table["law"])
     laws = dd.ELEMENT_FRICTION[element]
-    if name not in laws:
-        raise _refuse("friction.law", name, element, laws, "a law with a state per contact "
-                      "point is carried by the 2D belt only")
+    arms = any(p.law == "tensioner" for p in pulleys)
+    if element == "plate36" and arms and name not in FRICTION_PARAMS:
+        raise _refuse("friction.law", name, element, FRICTION_PARAMS, "a law with a state per "
+                      "contact point is not carried by the plate belt's tensioner arms")
     keys = {"law": law, **laws[name]}
     return _values(table, "friction.", keys, why=f" (law {name!r})")
 
@@ -302,7 +303,7 @@ def describe(data: dict) -> dd.DriveDescription:
     _moved(pulleys, belt)
     contact = _values(_table(data, "contact"), "contact.", dd.CONTACT_KEYS[element],
                       why=f" (element {element!r})")
-    friction = _friction(data, element)
+    friction = _friction(data, element, pulleys)
     _formulation(belt, element, friction)
     return dd.DriveDescription(belt, pulleys, friction, contact, _run(data), tuple(gravity),
                                path)

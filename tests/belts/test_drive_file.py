@@ -356,9 +356,12 @@ BAD_PLATE = [  # (overrides, or an edit of the 3D example's data; the one line i
     (_without(("friction", "nu_s")), r"friction.nu_s: missing \(law 'creep-rate'\); allowed: "
      r"a number in \(0, 1e\+09\] kg/\(m\^2 s\)"),
     (["pulleys.idler.law=tensioner"], r"pulleys.1.pivot: missing \(law 'tensioner': "),
-    (["friction.law=bristle"], r"friction.law = 'bristle' is out of range for belt.element = "
-     r"'plate36'; allowed: one of creep-rate, coulomb \(a law with a state per contact point "
-     r"is carried by the 2D belt only\)"),
+    (["friction.law=bristle", "pulleys.idler.law=tensioner", "pulleys.idler.pivot=[0.0185, -0.08]",
+      "pulleys.idler.arm_inertia=1e-5", "pulleys.idler.arm_stiffness=5.0",
+      "pulleys.idler.arm_preload=-2.0", "pulleys.idler.arm_damping=0.03"],
+     r"friction.law = 'bristle' is out of range for belt.element = 'plate36'; allowed: one of "
+     r"creep-rate, coulomb \(a law with a state per contact point is not carried by the plate "
+     r"belt's tensioner arms\)"),
 ]
 
 

@@ -1,0 +1,168 @@
+"""The plate belt's contact (:mod:`ancf.belts.contact3d`) with a friction law that carries a
+state per contact point (the bristle law, :mod:`ancf.belts.friction.bristle`), compiled
+(numba).
+
+The law acts in the rim's tangent plane on the sliding velocity's components along the
+circumferential tangent t = p x n and the axis p (v_s has no part along n),
+
+    v    = (t . v_s, p . v_s) = (t . (rdot - odot) - omega R,  p . (rdot - odot))   m/s
+    f_t  = phi_0 t + phi_1 p,   (phi, z1) = law(v, z0, h, F_n)                    N/m^2
+
+with the bristle deflection z (m, two components along t and p) of every contact point
+(element e, point q) on every pulley: z[0] at the last converged step, the trial z[1]
+stepped over the march's step h (s), stick |k_t z0 + (k_t h + d_t) v| <= mu F_n, else
+slip at mu F_n against it (:func:`ancf.belts.friction.bristle.bristle_force`).  A point out
+of contact (d < 0 or F_n clamped to 0) has the trial state 0, as in 2D
+(:mod:`ancf.belts.contact2d`); the march accepts z[1] on convergence
+(:func:`ancf.belts.system.accept_state`).
+
+Derivatives (z0 and h fixed within a step): dv_0 = -(n . vr) t^T / |N| dr + t^T drdot
+- R domega (dt/dr = -n t^T / |N|), dv_1 = p^T drdot; the law's d phi by v and F_n
+(:func:`ancf.belts.friction.state_chain`); d f_t = t d phi_0 + p d phi_1
+- phi_0 n t^T / |N| dr.  The normal force's part and the moment row are contact3d's.
+
+:class:`Drive3DState` is :class:`ancf.belts.forces.Drive3D` with the state z
+(2, nel, nq, np, 2) m: its :func:`ancf.belts.forces.drive_forces` is
+:func:`contact_forces3d_state`'s.
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from ancf.belts import friction
+from ancf.belts.contact3d import (BATCH, _add_batch, _add_force, _add_jacobians, _add_normal,
+                                  _control_points, _flush, _may_touch, _mid_velocity,
+                                  _normal_rates, _penetrates, _point_geometry, _positions,
+                                  _sides, _swap_forces, _unit_axis)
+from ancf.belts.forces import Drive3D, drive_forces, moved_centres
+from ancf.common.dispatch import implements
+from ancf.common.leaf import leaf
+from ancf.elements import plate36
+
+
+class Drive3DState(Drive3D):
+    """The compiled data of a 3D belt drive whose friction law carries a state (fields as
+    :class:`ancf.belts.forces.Drive3D`; ``z`` (2, nel, nq, np, 2) m, ``h`` (1,) s)."""
+
+    __slots__ = ()
+
+
+@leaf
+def _state_law(a, vr, p, R, om, prm, n, t, vs, ft, z0, h, z1, phi):
+    """Contact law at one point with the friction state z0 (2-tuple, m) over the step h (s):
+    fills n, t, v_s, f_t (3,), phi (2,) (f_t along t and p, N/m^2) and the trial state
+    z1 (2,) (0 out of contact); returns |N|, F_n, the branch (0 out, 1 clamped, else the
+    law's) and v (2-tuple, m/s: along t and p)."""
+    rho, _, Fn, _, where = _point_geometry(a, vr, p, R, om, prm, n, t, vs)
+    ft[:] = 0.0
+    z1[:] = 0.0
+    v = (t[0] * vs[0] + t[1] * vs[1] + t[2] * vs[2], p[0] * vs[0] + p[1] * vs[1] + p[2] * vs[2])
+    if where >= 0:
+        return rho, Fn, where, v
+    s = np.sqrt(v[0] * v[0] + v[1] * v[1])
+    branch = friction.state_force(v, s, Fn, prm, phi, z0, h, z1)
+    for c in range(3):
+        ft[c] = phi[0] * t[c] + phi[1] * p[c]
+    return rho, Fn, branch, v
+
+
+@leaf
+def _state_jacobian(vr, p, R, rho, Fn, branch, n, t, ft, phi, prm, z0, h, v, gF, G, Dz, D):
+    """D (4, 7): derivatives of (f_0, f_1, f_2, tau) by (r, rdot, omega) at a point in
+    contact (module docstring); gF (7,), G (2, 7) = dv/d(r, rdot, omega), Dz (2, 7) scratch."""
+    _normal_rates(vr, rho, n, t, prm, gF)
+    nv = n[0] * vr[0] + n[1] * vr[1] + n[2] * vr[2]
+    for c in range(3):
+        G[0, c] = -nv * t[c] / rho
+        G[0, 3 + c] = t[c]
+        G[1, c] = 0.0
+        G[1, 3 + c] = p[c]
+    G[0, 6], G[1, 6] = -R, 0.0
+    gFt = (gF[0], gF[1], gF[2], gF[3], gF[4], gF[5], gF[6])
+    s = np.sqrt(v[0] * v[0] + v[1] * v[1])
+    friction.state_chain(branch, v, s, Fn, prm, G, gFt, Dz, z0, h)
+    for i in range(3):
+        for c in range(7):
+            D[i, c] = t[i] * Dz[0, c] + p[i] * Dz[1, c]
+        for c in range(3):
+            D[i, c] -= phi[0] * n[i] * t[c] / rho
+    _add_normal(p, rho, Fn, n, t, ft, gF, D)
+
+
+@njit(cache=True)
+def contact_forces3d_state(E, V, S0, w, centres, axes, radii, omegas, centre_velocities, prm,
+                           z, h, want_J, Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
+    """:func:`ancf.belts.contact3d.contact_forces3d` with the friction state z
+    (2, nel, nq, np, 2) m of a law with a state: z[0] read, the trial z[1] written, over
+    the step h (s).  Arguments and outputs otherwise as there; returns the pairs
+    evaluated."""
+    nel, nq = w.shape
+    D, G, Dz, P, X = (np.zeros((4, 7)), np.zeros((2, 7)), np.zeros((2, 7)), np.zeros((16, 3)),
+                      np.zeros((16, 3)))
+    v, a, vr, gF, rq = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(7), np.zeros((nq, 3))
+    n, t, vs, ft, pax = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    phi, z1 = np.zeros(2), np.zeros(2)
+    ns = S0.shape[2]
+    PB, DB = np.zeros((BATCH, ns * (ns + 1) // 2)), np.zeros((BATCH, 18))
+    A = np.zeros((18, ns * (ns + 1) // 2))
+    sk, Qt = np.zeros(ns), np.zeros((3, ns))
+    pairs = 0
+    z[1, :, :, :, :] = 0.0
+    for e in range(nel):
+        sa, sb = _sides(S0, w, e)
+        _control_points(E, e, sa, sb, P)
+        placed = False
+        for p in range(radii.shape[0]):
+            _unit_axis(axes, p, pax)
+            R, om = radii[p], omegas[p]
+            if not _may_touch(P, centres[p], pax, R, X):
+                continue
+            pairs += 1
+            if not placed:
+                _positions(E, S0, e, rq)
+                placed = True
+            nb = 0
+            touched = False
+            _swap_forces(Q, e, Qt, False)
+            for q in range(nq):
+                if not _penetrates(rq, q, centres, p, pax, R):
+                    continue
+                _mid_velocity(V, S0, e, q, v)
+                for c in range(3):
+                    a[c] = rq[q, c] - centres[p, c]
+                    vr[c] = v[c] - centre_velocities[p, c]
+                z0 = (z[0, e, q, p, 0], z[0, e, q, p, 1])
+                rho, Fn, branch, v2 = _state_law(a, vr, pax, R, om, prm, n, t, vs, ft, z0, h,
+                                                 z1, phi)
+                z[1, e, q, p, 0], z[1, e, q, p, 1] = z1[0], z1[1]
+                if Fn <= 0.0:
+                    continue
+                ww = w[e, q]
+                _add_force(S0, e, q, ww, Fn, n, ft, sk, Qt)
+                T[p] -= ww * rho * (t[0] * ft[0] + t[1] * ft[1] + t[2] * ft[2])
+                if want_J:
+                    _state_jacobian(vr, pax, R, rho, Fn, branch, n, t, ft, phi, prm, z0, h, v2,
+                                    gF, G, Dz, D)
+                    _add_jacobians(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], PB, DB, nb)
+                    dTw[p] += ww * D[3, 6]
+                    nb += 1
+                    if nb == BATCH:
+                        _add_batch(PB, DB, nb, A)
+                        nb = 0
+                    touched = True
+            _swap_forces(Q, e, Qt, True)
+            if touched:
+                _add_batch(PB, DB, nb, A)
+                _flush(A, e, ns, Kq, Cv)
+    return pairs
+
+
+@implements(drive_forces, Drive3DState)
+def _forces3d_state(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
+    """The centres moved by their laws (:func:`ancf.belts.forces.moved_centres`), then the
+    contact with the friction state (:func:`contact_forces3d_state`)."""
+    plate36.gradient_tangent(E, drive.element, want_J, g, K)
+    o, odot = moved_centres(drive, laws)
+    return contact_forces3d_state(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas,
+                                  odot, drive.prm, drive.z, drive.h[0], want_J, *c)

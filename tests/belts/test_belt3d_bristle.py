@@ -1,0 +1,232 @@
+"""The bristle friction law on the 3D plate belt (issue 36 item 2,
+:mod:`ancf.belts.contact3d_state`).
+
+The law at a point against its definition computed here (stick: the spring and damper,
+slip: mu F_n against the sliding, both tangent-plane components); the kernel's exact
+derivatives against central differences (and leaving a term out is seen); a short run of
+the three-pulley plate belt whose span tensions balance the driven pulley's load and
+differ from the creep-rate law's; bad input is one line (exit 2)."""
+import re
+
+import numpy as np
+import pytest
+
+from ancf.belts import friction
+from ancf.belts.contact3d import contact_state3d
+from ancf.belts.contact3d_state import Drive3DState, _state_law, contact_forces3d_state
+from ancf.belts.drive_file import describe, override, read
+from ancf.belts.drive_model import build
+from ancf.cli import main
+from ancf.common.paths import REPO
+
+THREE3D = REPO / "examples" / "three_pulleys_3d.toml"
+BRISTLE = {"law": "bristle", "mu": 0.6, "stiffness": 1e8, "damping": 1e3}
+#: the idler on an arm (tests/belts/test_belt3d_tensioner.py's)
+ARM = ["pulleys.idler.law=tensioner", "pulleys.idler.pivot=[0.0185, -0.08]",
+       "pulleys.idler.arm_inertia=1e-5", "pulleys.idler.arm_stiffness=5.0",
+       "pulleys.idler.arm_preload=-2.0", "pulleys.idler.arm_damping=0.03"]
+FD_TOL = 1e-6  # of each column's largest entry
+K_P, C_P, MU, K_T, D_T, H = 8e7, 2e3, 0.6, 1e8, 1e3, 1e-4
+
+
+def _prm(mu=MU, kt=K_T, dt=D_T):
+    return friction.contact_record(K_P, C_P, "bristle", mu, kt, dt)
+
+
+def _expected(a, vr, om, R, z0, kt=K_T):
+    """The law at a point from its definition (axis e_z): (f_t (3,), F_n, stick, v (2,))."""
+    p = np.array([0.0, 0.0, 1.0])
+    N = a - (a @ p) * p
+    n = N / np.linalg.norm(N)
+    t = np.cross(p, n)
+    Fn = K_P * (R - np.linalg.norm(N)) - C_P * (n @ vr)
+    rel = vr - om * R * t  # the belt's velocity over the rim
+    v = np.array([t @ rel, p @ rel])
+    z1 = np.asarray(z0) + H * v
+    stick = -(kt * z1 + D_T * v)  # the spring at its new deflection and the damper
+    if np.linalg.norm(stick) <= MU * Fn:
+        return stick[0] * t + stick[1] * p, Fn, True, v
+    return None, Fn, False, v
+
+
+def _law(a, vr, om, R, z0, prm=None):
+    n, t, vs, ft = (np.zeros(3) for _ in range(4))
+    z1, phi = np.zeros(2), np.zeros(2)
+    _, Fn, branch, _ = _state_law(a, vr, np.array([0.0, 0.0, 1.0]), R, om, prm or _prm(), n,
+                                  t, vs, ft, tuple(z0), H, z1, phi)
+    return ft, Fn, branch, z1
+
+
+A = np.array([0.06, 0.08 - 1e-4, 0.01])  # 0.1 mm into a rim of radius 0.1 m
+
+
+@pytest.mark.parametrize("z0", [(1e-7, -2e-7), (-3e-7, 1e-7)])
+def test_stick_is_the_spring_and_damper(z0):
+    """A slow slip (0.3 mm/s along the rim, 0.2 mm/s axially) and a small deflection stick:
+    f_t = -(k_t z1 + d_t v) with z1 = z0 + h v, both components, to 1e-9 relative; the new
+    deflection is z1; a stiffness 10 % off is seen."""
+    om, R = 20.0, 0.1
+    t = np.cross([0.0, 0.0, 1.0], A / np.hypot(*A[:2]) * [1, 1, 0])
+    vr = om * R * t + 3e-4 * t + [0.0, 0.0, 2e-4]
+    ft, Fn, branch, z1 = _law(A, vr, om, R, z0)
+    want, Fn_want, stick, v = _expected(A, vr, om, R, z0)
+    assert stick and branch == friction.STICK and abs(v[1]) > 0
+    assert np.isclose(Fn, Fn_want, rtol=1e-12)
+    assert np.allclose(ft, want, rtol=1e-9, atol=0)
+    assert np.allclose(z1, np.array(z0) + H * v, rtol=1e-12, atol=0)
+    assert not np.allclose(_law(A, vr, om, R, z0, _prm(kt=1.1 * K_T))[0], want, rtol=1e-2)
+
+
+@pytest.mark.parametrize("z_along", [0.0, 1.0])
+def test_slip_is_coulomb_against_the_sliding(z_along):
+    """A fast slip (0.3 m/s along the rim, -0.2 m/s axially) from rest (z0 = 0) or from the
+    spring at its slip limit along the sliding: |f_t| = mu F_n and f_t = -|f_t| v / |v|
+    in both components (1e-9); the trial deflection k_t z1 = -f_t; a mu 10 % off is seen."""
+    om, R = 20.0, 0.1
+    t = np.cross([0.0, 0.0, 1.0], A / np.hypot(*A[:2]) * [1, 1, 0])
+    vr = om * R * t + 0.3 * t + [0.0, 0.0, -0.2]
+    _, Fn, stick, v = _expected(A, vr, om, R, (0.0, 0.0))
+    z0 = z_along * MU * Fn / K_T * v / np.linalg.norm(v)
+    ft, Fn_got, branch, z1 = _law(A, vr, om, R, z0)
+    assert not stick and branch == friction.SLIP
+    against = -(v[0] * t + v[1] * np.array([0.0, 0.0, 1.0])) / np.linalg.norm(v)
+    assert np.isclose(np.linalg.norm(ft), MU * Fn, rtol=1e-9)
+    assert np.allclose(ft, MU * Fn * against, rtol=1e-9, atol=1e-9 * MU * Fn)
+    assert np.allclose(K_T * z1, -np.array([ft @ t, ft[2]]), rtol=1e-9)
+    assert not np.isclose(np.linalg.norm(_law(A, vr, om, R, z0, _prm(mu=1.1 * MU))[0]),
+                          MU * Fn, rtol=1e-2)
+
+
+def _drive(fric=BRISTLE, sets=()):
+    data = override(read(THREE3D), ["belt.n_elements=12", "contact.gauss_points=25", *sets])
+    data["friction"] = dict(fric)
+    return build(describe(data))
+
+
+@pytest.fixture(scope="module")
+def kernel_state():
+    """The plate belt near its laid state with every coordinate moving, pulleys turning,
+    and a bristle deflection at every point: some points stick, some slip."""
+    drive = _drive()
+    rng = np.random.default_rng(1)
+    E = drive.element_coords(drive.q0) + 2e-5 * rng.normal(size=(12, 12, 3))
+    V = 0.05 * rng.normal(size=E.shape)
+    om = np.array([20.0, -40.0, 20.0]) + rng.normal(size=3)
+    base = (drive.S0, drive.w, drive.centres, drive.axes, drive.radii, om,
+            np.zeros((3, 3)))
+    z = np.zeros((2, *drive.w.shape, 3, 2))
+    z[0] = 2e-7 * rng.normal(size=z[0].shape)
+    return drive, E, V, om, base, z
+
+
+def _forces(E, V, base, prm, z, h, om=None, want_J=False):
+    S0, w, o, axes, radii, om0, odot = base
+    nel, npul = E.shape[0], radii.size
+    Q, T = np.zeros((nel, 36)), np.zeros(npul)
+    J = (np.zeros((nel, 36, 36)), np.zeros((nel, 36, 36)), np.zeros((nel, npul, 36)), T,
+         np.zeros((npul, nel, 36)), np.zeros((npul, nel, 36)), np.zeros(npul))
+    contact_forces3d_state(E, V, S0, w, o, axes, radii, om0 if om is None else om, odot, prm,
+                           z, h, want_J, Q, *J)
+    return Q, J
+
+
+def _columns(E, V, base, prm, z, h):
+    """dQ/dE (nel, 36, 36), dQ/dV by central differences (steps 1e-8 m, 1e-4 m/s; at
+    1e-6 m/s roundoff alone was 3e-6), every element's coordinate i moved at once (Q of
+    an element depends on its own only)."""
+    out = []
+    for which, step in ((0, 1e-8), (1, 1e-4)):
+        D = np.zeros((E.shape[0], 36, 36))
+        for i in range(36):
+            k, c = divmod(i, 3)
+            args = [[E.copy(), V.copy()], [E.copy(), V.copy()]]
+            args[0][which][:, k, c] += step
+            args[1][which][:, k, c] -= step
+            D[:, :, i] = (_forces(*args[0], base, prm, z, h)[0]
+                          - _forces(*args[1], base, prm, z, h)[0]) / (2 * step)
+        out.append(D)
+    return out
+
+
+def _error(D, FD):
+    top = np.abs(FD).max(axis=1, keepdims=True)  # each column's largest entry per element
+    return float(np.max(np.abs(D - FD) / np.where(top > 0, top, 1.0)))
+
+
+@pytest.fixture(scope="module")
+def jacobians(kernel_state):
+    drive, E, V, om, base, z = kernel_state
+    _, J = _forces(E, V, base, drive.prm, z, H, want_J=True)
+    branches = _branch_counts(drive, E, V, base, z)
+    return J, _columns(E, V, base, drive.prm, z, H), branches
+
+
+def _branch_counts(drive, E, V, base, z):
+    """(sticking, slipping) contact points: |k_t z1| = mu F_n on the slip circle."""
+    S0, w, o, axes, radii, om, odot = base
+    _forces(E, V, base, drive.prm, z, H)
+    Fn = contact_state3d(E, V, S0, o, axes, radii, om, odot,
+                         friction.contact_record(K_P, C_P, "creep-rate", 0.0, 1.0))[2]
+    load = K_T * np.linalg.norm(z[1], axis=-1)
+    on = Fn > 0
+    slip = np.isclose(load, MU * Fn, rtol=1e-9) & on
+    return int((on & ~slip).sum()), int(slip.sum())
+
+
+def test_contact_derivatives_match_central_differences(jacobians):
+    """dQ/de and dQ/dedot of the contact with the bristle state (z0, h fixed), sticking and
+    slipping points both present, against central differences: within 1e-6 of each
+    column's largest entry."""
+    (Kq, Cv, *_), (FDq, FDv), (sticking, slipping) = jacobians
+    assert sticking > 20 and slipping > 20, (sticking, slipping)
+    assert _error(Kq, FDq) <= FD_TOL
+    assert _error(Cv, FDv) <= FD_TOL
+
+
+def test_moment_and_speed_derivatives_match_central_differences(kernel_state, jacobians):
+    """dQ/domega_p and dT_p/domega_p against central differences (1e-6 rad/s)."""
+    drive, E, V, om, base, z = kernel_state
+    (_, _, Qw, _, _, _, dTw), _, _ = jacobians
+    for p in range(3):
+        step = np.zeros(3)
+        step[p] = 1e-6
+        (Qa, Ja), (Qb, Jb) = (_forces(E, V, base, drive.prm, z, H, om=om + s * step)
+                              for s in (1, -1))
+        dQ = (Qa - Qb) / 2e-6
+        assert np.abs(Qw[:, p] - dQ).max() <= FD_TOL * np.abs(dQ).max()
+        assert abs(dTw[p] - (Ja[3][p] - Jb[3][p]) / 2e-6) <= FD_TOL * abs(dTw[p])
+
+
+@pytest.mark.parametrize("left_out", ["spring", "friction"])
+def test_leaving_a_term_out_fails(kernel_state, jacobians, left_out):
+    """The iteration matrix without the spring's k_t h in df/dv (the damper's d_t alone:
+    the derivatives at h = 0), or without the friction's terms (mu = 0), fails the check
+    above by far (above 1e3 times its tolerance)."""
+    drive, E, V, om, base, z = kernel_state
+    _, (FDq, FDv), _ = jacobians
+    if left_out == "spring":
+        Kq, Cv = _forces(E, V, base, drive.prm, z.copy(), 0.0, want_J=True)[1][:2]
+    else:
+        Kq, Cv = _forces(E, V, base, _prm(mu=0.0), z.copy(), H, want_J=True)[1][:2]
+    assert max(_error(Kq, FDq), _error(Cv, FDv)) > 1e3 * FD_TOL
+
+
+def test_plate_drive_carries_the_state():
+    """A plate36 drive file with the bristle law builds the stateful kernel (its state
+    (2, nel, nq, np, 2) m); with a tensioner arm it is refused (one line, exit 2)."""
+    drive = _drive()
+    assert isinstance(drive.kernel(), Drive3DState)
+    assert drive.z.shape == (2, 12, 25, 3, 2) and drive.kernel().z is drive.z
+
+
+def test_bristle_with_a_tensioner_is_one_line(tmp_path, capsys):
+    text = re.sub(r"\[friction\][^\[]*", "[friction]\nlaw = 'bristle'\nmu = 0.6\n"
+                  "stiffness = 1e8\ndamping = 1e3\n\n", THREE3D.read_text())
+    path = tmp_path / "bristle.toml"
+    path.write_text(text)
+    argv = ["run", "belt-drive", "--json", "--file", str(path)]
+    for s in ARM:
+        argv += ["--set", s]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("error: friction.law = 'bristle'"), err
