@@ -405,7 +405,8 @@ def _ready_numba() -> None:
 def _dispatch(args) -> int:
     try:
         if args.cmd == "run":  # this scene's modules only: no sympy, pandas, dask or matplotlib
-            from ancf.common.process_start import numba_without_yaml
+            from ancf.common.process_start import metadata_on_first_use, numba_without_yaml
+            metadata_on_first_use()
             with numba_without_yaml():  # numba loads with the scene's modules
                 from ancf.scenes import module_of, scene
                 if module_of(args.name) is None:

@@ -1,10 +1,13 @@
-"""Three costs of a short ``ancf run`` process that are not its work: PyYAML at numba's
-import, readying numba's compiler to load cached kernels, and the interpreter's shutdown.
+"""Costs of a short ``ancf run`` process that are not its work: PyYAML and
+importlib.metadata at numba's import, readying numba's compiler to load cached kernels,
+and the interpreter's shutdown.
 
 * ``numba.core.config`` imports PyYAML (10-15 ms CPU) only to read a ``.numba_config.yaml``
   in the working directory.  :func:`numba_without_yaml` lets numba be imported with
   ``yaml`` unimportable where no such file exists (numba then reads nothing either way);
   afterwards ``import yaml`` works as before.  With the file, nothing changes.
+  :func:`metadata_on_first_use` defers importlib.metadata, which numba imports for its
+  extension scan, to that scan (see below).
 * The end of a process tears down every module numba and llvmlite loaded (about 25 ms
   CPU).  :func:`end_process` flushes the output and ends the process at once
   (``os._exit``): nothing in ``ancf run`` waits for the interpreter's exit handlers.  A
@@ -15,6 +18,12 @@ import, readying numba's compiler to load cached kernels, and the interpreter's 
   0.1 s CPU), though a cached kernel is machine code that needs only numba's runtime.
   :func:`lean_cache_loads` makes a cache load ready the runtime alone; a kernel not in the
   cache is compiled as before (numba's compiler refreshes the tables itself first).
+  Two more costs of a cache load go with it: unpickling a kernel rebuilds the environment
+  (module globals) of every numba implementation it inlined, importing that module
+  (numba.np.arrayobj, arraymath, npyimpl, linalg: about 40 ms CPU), though only object-mode
+  code ever reads those globals (``numba.core.pylowering``), and each first call scans every
+  installed distribution for numba extensions (``entrypoints.init_all``, 10 ms), which only
+  compiling needs (numba's compiler refresh runs that scan too).
 """
 from __future__ import annotations
 
@@ -37,6 +46,22 @@ def numba_without_yaml():
     finally:
         if block and sys.modules.get("yaml", 0) is None:
             del sys.modules["yaml"]
+
+
+def metadata_on_first_use() -> None:
+    """Import ``importlib.metadata`` lazily (:class:`importlib.util.LazyLoader`): numba's
+    extension loader imports it with numba (8 ms CPU) but reads it only before compiling."""
+    name = "importlib.metadata"
+    if name in sys.modules:
+        return
+    import importlib
+    import importlib.util
+    spec = importlib.util.find_spec(name)
+    spec.loader = importlib.util.LazyLoader(spec.loader)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    importlib.metadata = module
 
 
 def end_process(code: int) -> None:
@@ -64,3 +89,32 @@ def lean_cache_loads() -> None:
         with self._guard_against_spurious_io_errors():
             return self._load_overload(sig, target_context)
     Cache.load_overload = load_overload
+    _environments_unimported()
+    _extensions_at_compile()
+
+
+def _environments_unimported() -> None:
+    """An unpickled kernel's environment of a module not imported yet gets the globals
+    ``{"__name__": module}`` instead of importing it: nopython code never reads them, and
+    pickling such an environment again gives the same state (module name, consts, name)."""
+    from numba.core import environment
+
+    def rebuild_env(modname, consts, env_name):
+        if modname in sys.modules:
+            return rebuild(modname, consts, env_name)
+        env = environment.lookup_environment(env_name)
+        if env is None:
+            env = environment.Environment({"__name__": modname})
+            env.consts[:] = consts
+            env.env_name = env_name
+            environment.Environment._memo[env_name] = env
+        return env
+    rebuild = environment._rebuild_env
+    environment._rebuild_env = rebuild_env
+
+
+def _extensions_at_compile() -> None:
+    """A dispatcher's first call no longer loads numba's extensions; the compiler's refresh
+    before any compilation still does (``BaseContext.refresh``)."""
+    from numba.core.dispatcher import _DispatcherBase
+    _DispatcherBase._compilation_chain_init_hook = lambda self: None

@@ -1,6 +1,8 @@
 """Lean cache loads (:func:`ancf.common.process_start.lean_cache_loads`): a cached kernel is
-loaded without readying numba's compiler, and gives the answer it gave when compiled; a
-signature not in the cache is compiled as before."""
+loaded without readying numba's compiler, importing the numba modules whose code it inlined
+or scanning for numba extensions, and gives the answer it gave when compiled; a signature
+not in the cache is compiled as before.  Numba's import with importlib.metadata deferred
+(:func:`ancf.common.process_start.metadata_on_first_use`)."""
 from __future__ import annotations
 
 import json
@@ -28,11 +30,14 @@ def kernel(a):
 
 #: a module only numba's compiler refresh imports (none of the loaded code needs it)
 COMPILER_ONLY = "numba.np.random.generator_core"
+#: the module of np.empty_like's implementation, inlined into the kernel (its environment)
+INLINED = "numba.np.arrayobj"
 
 
 def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
     """In a fresh process, call the kernel on input of each of ``dtypes`` in turn: for each,
-    its value, cache hits and misses so far, and whether numba's compiler tables are loaded."""
+    its value, cache hits and misses so far, and whether numba's compiler tables are loaded,
+    the inlined module :data:`INLINED` is imported and numba's extensions were scanned."""
     code = textwrap.dedent(f"""
         import json, sys
         import numpy as np
@@ -41,12 +46,14 @@ def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
         if {lean}:
             lean_cache_loads()
         from kmod import kernel
+        from numba.core import entrypoints
         out = {{}}
         for dtype in {dtypes!r}:
             value = kernel(np.array([5.0, -2.0, 7.0, 4.0, 1.0], dtype=dtype))
             out[dtype] = [value, sum(kernel.stats.cache_hits.values()),
                           sum(kernel.stats.cache_misses.values()),
-                          {COMPILER_ONLY!r} in sys.modules]
+                          {COMPILER_ONLY!r} in sys.modules, {INLINED!r} in sys.modules,
+                          entrypoints._already_initialized]
         print(json.dumps(out))
     """)
     env = dict(os.environ, NUMBA_CACHE_DIR=str(folder / "cache"))
@@ -62,14 +69,34 @@ def _expected(values) -> float:
 
 
 def test_lean_load_reuses_the_cache_and_a_miss_compiles(tmp_path):
-    """Rows (value, cache hits so far, misses so far, compiler tables loaded)."""
+    """Rows (value, cache hits so far, misses so far, compiler tables loaded, inlined
+    module imported, extensions scanned)."""
     (tmp_path / "kmod.py").write_text(KERNEL)
     want = _expected([5.0, -2.0, 7.0, 4.0, 1.0])
     first = _call(tmp_path, lean=False)  # compiles and fills the cache
-    assert first == {"float64": [want, 0, 1, True]}
+    assert first == {"float64": [want, 0, 1, True, True, True]}
     usual = _call(tmp_path, lean=False)  # the control: numba's own load readies its compiler
-    assert usual == {"float64": [want, 1, 0, True]}
+    assert usual == {"float64": [want, 1, 0, True, True, True]}
     lean = _call(tmp_path, lean=True, dtypes=("float64", "int64"))
-    assert lean["float64"] == [want, 1, 0, False]  # loaded, the compiler not readied
-    assert lean["int64"] == [want, 1, 1, True]  # not in the cache: compiled as before
+    assert lean["float64"] == [want, 1, 0, False, False, False]  # loaded, nothing readied
+    assert lean["int64"] == [want, 1, 1, True, True, True]  # a miss: compiled as before
     assert _expected([5.0, -2.0, 7.0, 4.0, 2.0]) != want  # the check sees a changed input
+
+
+def test_numba_imports_with_metadata_deferred_until_used():
+    """importlib.metadata stays an unloaded lazy module through numba's import; its first use
+    loads it and answers as pip's record does (numpy's version, read by numpy itself)."""
+    code = textwrap.dedent("""
+        import sys
+        from ancf.common.process_start import metadata_on_first_use
+        metadata_on_first_use()
+        import numba, numpy
+        lazy = type(sys.modules["importlib.metadata"]).__name__
+        from importlib import metadata
+        print(lazy, metadata.version("numpy") == numpy.__version__,
+              type(sys.modules["importlib.metadata"]).__name__)
+    """)
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
+                       timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.split() == ["_LazyModule", "True", "module"]
