@@ -28,6 +28,7 @@ and the interpreter's shutdown.
 from __future__ import annotations
 
 import os
+import pickle
 import sys
 from contextlib import contextmanager
 
@@ -91,6 +92,7 @@ def lean_cache_loads() -> None:
     Cache.load_overload = load_overload
     _environments_unimported()
     _extensions_at_compile()
+    _runtime_from_cache()
 
 
 def _environments_unimported() -> None:
@@ -118,3 +120,54 @@ def _extensions_at_compile() -> None:
     before any compilation still does (``BaseContext.refresh``)."""
     from numba.core.dispatcher import _DispatcherBase
     _DispatcherBase._compilation_chain_init_hook = lambda self: None
+
+
+def _runtime_from_cache() -> None:
+    """Numba's runtime library (``nrtdynmod.compile_nrt_functions``: incref, decref and
+    atomics, about 25 ms CPU to optimise and emit) is kept as machine code in numba's cache
+    directory, named by a hash of its LLVM IR, the numba and llvmlite versions and the
+    target machine; a later process loads it as it loads a cached kernel.  Without a cache
+    directory, or with the file unreadable, it is compiled as before."""
+    from numba.core import config
+    from numba.core.runtime import nrtdynmod
+    if not config.CACHE_DIR:
+        return
+    folder = os.path.join(config.CACHE_DIR, "ancf_nrt")
+
+    def compile_nrt_functions(ctx):
+        ir_mod, library = nrtdynmod.create_nrt_module(ctx)
+        path = os.path.join(folder, _runtime_key(ctx, ir_mod) + ".nbo")
+        try:
+            with open(path, "rb") as f:
+                return ctx.codegen().unserialize_library(pickle.load(f))
+        except (OSError, EOFError, pickle.UnpicklingError, ValueError, TypeError):
+            pass
+        library.enable_object_caching()
+        library.add_ir_module(ir_mod)
+        library.finalize()
+        _write_atomic(path, pickle.dumps(library.serialize_using_object_code()))
+        return library
+    nrtdynmod.compile_nrt_functions = compile_nrt_functions
+
+
+def _runtime_key(ctx, ir_mod) -> str:
+    """sha1 of the runtime's LLVM IR, numba's and llvmlite's versions and the target."""
+    import hashlib
+
+    import llvmlite
+    import numba
+    text = repr((numba.__version__, llvmlite.__version__, ctx.codegen().magic_tuple()))
+    return hashlib.sha1((text + str(ir_mod)).encode()).hexdigest()
+
+
+def _write_atomic(path: str, data: bytes) -> None:
+    """Write ``data`` to ``path`` by a rename (readers see the whole file or none); a
+    folder that cannot be written leaves the runtime uncached."""
+    tmp = f"{path}.{os.getpid()}.tmp"
+    try:
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(tmp, "wb") as f:
+            f.write(data)
+        os.replace(tmp, path)
+    except OSError:
+        pass

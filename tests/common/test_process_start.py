@@ -37,7 +37,8 @@ INLINED = "numba.np.arrayobj"
 def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
     """In a fresh process, call the kernel on input of each of ``dtypes`` in turn: for each,
     its value, cache hits and misses so far, and whether numba's compiler tables are loaded,
-    the inlined module :data:`INLINED` is imported and numba's extensions were scanned."""
+    the inlined module :data:`INLINED` is imported, numba's extensions were scanned and
+    numba's runtime library was loaded as machine code (not compiled in the process)."""
     code = textwrap.dedent(f"""
         import json, sys
         import numpy as np
@@ -47,13 +48,15 @@ def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
             lean_cache_loads()
         from kmod import kernel
         from numba.core import entrypoints
+        from numba.core.runtime import rtsys
         out = {{}}
         for dtype in {dtypes!r}:
             value = kernel(np.array([5.0, -2.0, 7.0, 4.0, 1.0], dtype=dtype))
             out[dtype] = [value, sum(kernel.stats.cache_hits.values()),
                           sum(kernel.stats.cache_misses.values()),
                           {COMPILER_ONLY!r} in sys.modules, {INLINED!r} in sys.modules,
-                          entrypoints._already_initialized]
+                          entrypoints._already_initialized,
+                          getattr(rtsys.library, "_compiled_object", 0) is None]
         print(json.dumps(out))
     """)
     env = dict(os.environ, NUMBA_CACHE_DIR=str(folder / "cache"))
@@ -70,16 +73,18 @@ def _expected(values) -> float:
 
 def test_lean_load_reuses_the_cache_and_a_miss_compiles(tmp_path):
     """Rows (value, cache hits so far, misses so far, compiler tables loaded, inlined
-    module imported, extensions scanned)."""
+    module imported, extensions scanned, runtime loaded from the cache)."""
     (tmp_path / "kmod.py").write_text(KERNEL)
     want = _expected([5.0, -2.0, 7.0, 4.0, 1.0])
     first = _call(tmp_path, lean=False)  # compiles and fills the cache
-    assert first == {"float64": [want, 0, 1, True, True, True]}
+    assert first == {"float64": [want, 0, 1, True, True, True, False]}
     usual = _call(tmp_path, lean=False)  # the control: numba's own load readies its compiler
-    assert usual == {"float64": [want, 1, 0, True, True, True]}
+    assert usual == {"float64": [want, 1, 0, True, True, True, False]}
     lean = _call(tmp_path, lean=True, dtypes=("float64", "int64"))
-    assert lean["float64"] == [want, 1, 0, False, False, False]  # loaded, nothing readied
-    assert lean["int64"] == [want, 1, 1, True, True, True]  # a miss: compiled as before
+    assert lean["float64"] == [want, 1, 0, False, False, False, False]  # runtime compiled
+    assert lean["int64"] == [want, 1, 1, True, True, True, False]  # a miss: compiled
+    again = _call(tmp_path, lean=True)  # the runtime's machine code from the last process
+    assert again == {"float64": [want, 1, 0, False, False, False, True]}
     assert _expected([5.0, -2.0, 7.0, 4.0, 2.0]) != want  # the check sees a changed input
 
 
