@@ -177,7 +177,7 @@ def _belt_inputs(belt_mass, belt_speed) -> tuple[float, float]:
 def matrices(pulleys, *, EA, J, T, J_arm=None, m_t=0.0, arm_angle=None, belt_mass=0.0,
              belt_speed=0.0) -> dict:
     """M and K of eqs. (3)-(6) (kg m^2, N m/rad; the psi row in the same units) with the
-    coordinate names and the layout.  ``pulleys``: belt_steady's dicts; ``EA`` N; ``J``
+    coordinate names, the layout and the stretch rows ``B`` (row j: b_j of eq. 3, m/rad).  ``pulleys``: belt_steady's dicts; ``EA`` N; ``J``
     kg m^2 per pulley; ``T`` N per span in belt order (span j: pulley j to j + 1);
     ``J_arm`` kg m^2, the arm about its pivot, and ``m_t`` kg, the tensioner pulley's mass
     (only with a tensioner); ``arm_angle`` rad, the arm's steady angle from x (default:
@@ -205,10 +205,10 @@ def matrices(pulleys, *, EA, J, T, J_arm=None, m_t=0.0, arm_angle=None, belt_mas
     if m > 0:
         M = M + belt_inertia(lay, m, n, t, ct)
     names = [f"theta_{p['name']}" for p in pulleys] + (["psi"] if arm is not None else [])
-    return {"M": M, "K": K, "coordinates": names, "layout": lay, "tensioner": t}
+    return {"M": M, "K": K, "coordinates": names, "layout": lay, "tensioner": t, "B": B}
 
 
-def _basis(M, pulleys, lay: Layout, driver: str) -> np.ndarray:
+def basis(M, pulleys, lay: Layout, driver: str) -> np.ndarray:
     """Columns spanning the admissible motions: without the driver's theta ("fixed"), or
     M-orthogonal to the rigid mode theta_i = s_i / r_i ("free")."""
     n = len(M)
@@ -232,7 +232,7 @@ def modes(pulleys, *, EA, J, T, J_arm=None, m_t=0.0, arm_angle=None, belt_mass=0
     mat = matrices(pulleys, EA=EA, J=J, T=T, J_arm=J_arm, m_t=m_t, arm_angle=arm_angle,
                    belt_mass=belt_mass, belt_speed=belt_speed)
     M, K = mat["M"], mat["K"]
-    Q = _basis(M, pulleys, mat["layout"], driver)
+    Q = basis(M, pulleys, mat["layout"], driver)
     lam, Y = eigh(Q.T @ K @ Q, Q.T @ M @ Q)
     if lam[0] <= 0:  # only the arm's geometric stiffness can be negative
         raise ValueError(f"pulleys.{mat['tensioner']}.stiffness: the belt's tension buckles "
