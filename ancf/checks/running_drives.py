@@ -3,7 +3,8 @@
 file and law, hubloads against the span tensions, the running drive's modes (``ancf modes
 belt-drive --about steady``, :mod:`ancf.belts.modes2d`) against the axially moving beam
 (:mod:`analytic.moving_beam`), the serpentine's rotational modes against the march's
-(:mod:`ancf.checks.serpentine_modes`) and the discrete model, and each route's CPU time.
+(:mod:`ancf.checks.serpentine_modes`) and the discrete models (sticking here, creeping
+wraps in :mod:`ancf.checks.serpentine_creep`), and each route's CPU time.
 
 Drives: THREAD's benchmark with the creep-rate law (``examples/thread_creep_rate.toml``:
 the steady solve takes stateless laws), the serpentine (``examples/serpentine.toml``),
@@ -252,13 +253,6 @@ def rotational_check(rows: list[dict]) -> Check:
                  "(the march's matrix pencil, ancf/checks/serpentine_modes.py)")
 
 
-def discrete_check(rows: list[dict]) -> Check:
-    worst = max(abs(r["error_belt_mass_pct"]) for r in rows)
-    return Check("Serpentine: rotational modes within 1 % of the discrete model (belt mass)",
-                 worst, 0.0, worst, TOL["rotational"], "%", "largest abs(f / f_discrete − 1): "
-                 "arm, alternator, pump (analytic/serpentine_rotational.py with rho A)")
-
-
 def mass_effect(rows: list[dict]) -> list[dict]:
     """The belt's inertia alone: per rotational mode, ours over ours with the belt
     :data:`LIGHT` times as dense, against the discrete model with its belt mass over the
@@ -273,17 +267,6 @@ def mass_effect(rows: list[dict]) -> list[dict]:
                     "discrete with / without belt mass": theirs,
                     "difference %": 100 * (ours / theirs - 1)})
     return out
-
-
-def discrete_status(check: Check, effect: list[dict]) -> str:
-    """PASS; DIFFERS (explained) where the belt's inertia acts within 1 % alike in ours and
-    in the discrete model (:func:`mass_effect`), so that the rest is the stiffness the
-    discrete model leaves out (the wraps' creep: the friction law's sliding zone, where the
-    sticking model holds each wrap rigid); else FAIL."""
-    if check.passed:
-        return "PASS"
-    alike = all(abs(e["difference %"]) <= TOL["rotational"] for e in effect)
-    return "DIFFERS (explained)" if alike else "FAIL"
 
 
 def bracketed(rows: list[dict]) -> bool:

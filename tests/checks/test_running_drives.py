@@ -131,16 +131,14 @@ def test_thread_span_modes_match_the_march_spectrum():
 
 def test_belt_inertia_acts_alike_in_ours_and_the_discrete_model():
     """The serpentine's rotational modes: the belt's mass lowers ours (against a belt 1000
-    times lighter) as it lowers the discrete model's (with ρA against without) within 1 %
-    (seen 0.06-0.65 %), so the remaining 5-7 % below the discrete model is stiffness: the
-    check is DIFFERS (explained), not PASS; with the discrete model's mass effect doubled it
-    would be FAIL."""
+    times lighter) as it lowers the sticking model's (with ρA against without) within 1 %
+    (seen 0.06-0.65 %), so the remaining 5-7 % below that model is stiffness (the wraps'
+    creep: tests/checks/test_serpentine_creep.py); the sticking model with its mass effect
+    doubled would differ by more."""
     rows = rd.rotational(march_too=False)
     effect = rd.mass_effect(rows)
     assert all(abs(e["difference %"]) <= 1.0 for e in effect), effect
-    check = rd.discrete_check(rows)
-    assert not check.passed and rd.discrete_status(check, effect) == "DIFFERS (explained)"
-    doubled = [{**e, "difference %": 100 * (e["ours / light belt"]
-                                           / (2 * e["discrete with / without belt mass"] - 1)
-                                           - 1)} for e in effect]
-    assert rd.discrete_status(check, doubled) == "FAIL"
+    assert all(r["error_belt_mass_pct"] < -4 for r in rows), rows
+    doubled = [e["ours / light belt"] / (2 * e["discrete with / without belt mass"] - 1)
+               for e in effect]
+    assert max(abs(100 * (d - 1)) for d in doubled) > 1.0
