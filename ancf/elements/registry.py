@@ -1,8 +1,9 @@
 """The element registry: every element, one :class:`ElementType` record each, in :data:`ELEMENTS`.
 
-A record names the element, its space dimension (2, 3), its kind (beam, plate, belt),
-its nodes per element, its basis (a generated shape-function family of
-``analytic/shape_functions.py``, from which the coordinates per node follow), its
+A record names the element, its space dimension (2, 3), its kind (beam, plate, belt,
+shell, solid), its nodes per element, its basis (a generated shape-function family of
+``analytic/shape_functions.py``, or for a family not generated there, as Chrono's
+elements', the class's ``own_shapes``; the coordinates per node follow from it), its
 strain model and material law, its class (``module:Class``, imported on first use so
 that a scene loads only the elements it builds) and how a scene's parameters become
 the class's keyword arguments.  :meth:`ElementType.field` interpolates element
@@ -22,9 +23,10 @@ from typing import Callable, NamedTuple
 
 import numpy as np
 
+from ancf.elements import basis
 from ancf.elements.basis import family_shapes
 
-KINDS = ("beam", "plate", "belt")
+KINDS = ("beam", "plate", "belt", "shell", "solid")
 
 #: the physics an element can model; ``ancf recommend`` proposes only models providing the
 #: physics a question needs (``ancf.study.references.model_physics``)
@@ -87,7 +89,10 @@ class ElementType:
         return getattr(importlib.import_module(module), name)
 
     def shapes(self) -> dict:
-        """The basis: the family's generated evaluators (see basis.family_shapes)."""
+        """The basis: the family's generated evaluators (see basis.family_shapes), or the
+        class's own (``own_shapes``) when the family is not a generated one."""
+        if not hasattr(basis, f"{self.family}_S"):
+            return self.cls.own_shapes()
         return family_shapes(self.family)
 
     @property
@@ -112,25 +117,30 @@ class ElementType:
         """The family's reference directions: x, y of a plate, x, y[, z] of a beam."""
         return "xy" if self.kind == "plate" else "xyz"[:self.dim]
 
-    def _points(self, size, xi, eta) -> tuple:
-        """Arguments of the generated evaluators at xi (and eta, plates) in [0, 1]:
-        beams on the centre line X = xi l (size: lengths (nel,)), plates at
-        (xi a, eta b) (size: (a, b), each (nel,) or scalar)."""
+    def _points(self, size, xi, eta, zeta) -> tuple:
+        """Arguments of the evaluators at xi (and eta, zeta) in [0, 1]: beams on the
+        centre line X = xi l (size: lengths (nel,)), plates at (xi a, eta b) (size: (a, b),
+        each (nel,) or scalar), shells on the mid-surface (xi a, eta b, 0), solids at
+        (xi a, eta b, zeta c) (size (a, b, c))."""
         xi = np.atleast_1d(np.asarray(xi, dtype=float))
-        if self.kind == "plate":
-            a, b = (np.asarray(v, dtype=float).reshape(-1, 1) for v in size)
-            eta = np.broadcast_to(np.asarray(eta, dtype=float), xi.shape)
-            return xi[None, :] * a, eta[None, :] * b, a, b
+        if self.kind in ("plate", "shell", "solid"):
+            sides = [np.asarray(v, dtype=float).reshape(-1, 1) for v in size]
+            local = [np.broadcast_to(np.asarray(v, dtype=float), xi.shape) for v in (eta, zeta)]
+            X = [u[None, :] * a for u, a in zip((xi, *local), sides)]
+            if self.kind == "shell":
+                X.append(np.zeros_like(X[0]))
+            return (*X, *sides)
         l = np.asarray(size, dtype=float).reshape(-1, 1)
         return (xi[None, :] * l, *(np.zeros((1, xi.size)),) * (self.dim - 1), l)
 
-    def field(self, e, size, xi, eta=0.0, e0=None) -> Field:
+    def field(self, e, size, xi, eta=0.0, e0=None, *, zeta=0.0) -> Field:
         """The :class:`Field` of element coordinates e (nel, ndof) (ordered shape function
         k times dim plus component) at local coordinates xi (npts,) in [0, 1] (and eta,
-        the plate's second one), r = S e (Eq. 2.10).  ``size``: element lengths (nel,) m,
-        or (a, b) of plates; ``e0`` the reference coordinates (default: F0 = I, the
-        straight or flat reference of the meshes)."""
-        fns, args = self.shapes(), self._points(size, xi, eta)
+        the plate's second one, zeta a solid's third), r = S e (Eq. 2.10).  ``size``: element
+        lengths (nel,) m, or (a, b) of plates and shells, (a, b, c) of solids; ``e0`` the
+        reference coordinates (default: F0 = I, the straight or flat reference of the
+        meshes)."""
+        fns, args = self.shapes(), self._points(size, xi, eta, zeta)
         nel = args[-1].shape[0]
         E = np.asarray(e, dtype=float).reshape(nel, fns["n"], self.dim)
         F = self._gradient(fns, args, E)
@@ -144,6 +154,35 @@ class ElementType:
         """F: dr/dX_i (nel, npts, nd, dim) along the family's directions."""
         return np.stack([np.einsum("eqk,ekd->eqd", fns[d](*args), E) for d in self.directions()], -2)
 
+
+_CHRONO_STRAIN = "ancf.elements.continuum3d"
+_BEAM_LAW = "St Venant-Kirchhoff, k1 = k2 = ks on the shears, Poisson part on the axis"
+_SOLID = frozenset({"axial", "bending", "shear", "large-rotation", "inertia", "3D"})
+#: Chrono's ANCF elements (``ancf.elements.chrono_element``), one exact rule each
+_CHRONO = (
+    ElementType(name="ancf3243", dim=3, kind="beam", family="cubic3d", nodes=2,
+                strain=_CHRONO_STRAIN, material=_BEAM_LAW,
+                path="ancf.elements.chrono_element:Beam3243", knobs=("ks",),
+                variants=(("", {}),), physics=_BEAM | {"3D"},
+                doc="Chrono's fully parameterised beam ChElementBeamANCF_3243, 24 coordinates"),
+    ElementType(name="ancf3333", dim=3, kind="beam", family="ancf3333", nodes=3,
+                strain=_CHRONO_STRAIN, material=_BEAM_LAW,
+                path="ancf.elements.chrono_element:Beam3333", knobs=("ks",), variants=(),
+                physics=_BEAM | {"3D"},
+                doc="Chrono's 3-node shear-deformable beam ChElementBeamANCF_3333, 27 coordinates"),
+    ElementType(name="ancf3443", dim=3, kind="shell", family="ancf3443", nodes=4,
+                strain=_CHRONO_STRAIN, material="isotropic 3D St Venant-Kirchhoff (Chrono's)",
+                path="ancf.elements.chrono_element:Shell3443", variants=(), physics=_SOLID,
+                doc="Chrono's 4-node shell ChElementShellANCF_3443, 48 coordinates"),
+    ElementType(name="ancf3833", dim=3, kind="shell", family="ancf3833", nodes=8,
+                strain=_CHRONO_STRAIN, material="isotropic 3D St Venant-Kirchhoff",
+                path="ancf.elements.chrono_element:Shell3833", variants=(), physics=_SOLID,
+                doc="Chrono's 8-node higher-order shell ChElementShellANCF_3833, 72 coordinates"),
+    ElementType(name="ancf3843", dim=3, kind="solid", family="ancf3843", nodes=8,
+                strain=_CHRONO_STRAIN, material="isotropic 3D St Venant-Kirchhoff",
+                path="ancf.elements.chrono_element:Brick3843", variants=(), physics=_SOLID,
+                doc="Chrono's 8-node brick ChElementHexaANCF_3843, 96 coordinates"),
+)
 
 ELEMENTS = {t.name: t for t in (
     ElementType(name="linear", dim=2, kind="beam", family="linear2d", nodes=2,
@@ -184,6 +223,7 @@ ELEMENTS = {t.name: t for t in (
                 path="ancf.elements.plate36:Plate36", knobs=("ng",), variants=(),
                 physics=frozenset({"axial", "bending", "large-rotation", "inertia", "3D"}),
                 doc="Dufva and Shabana's thin plate, 36 coordinates"),
+    *_CHRONO,
 )}
 
 
