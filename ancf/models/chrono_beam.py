@@ -39,6 +39,9 @@ from functools import lru_cache
 
 import numpy as np
 
+from ancf.core.assembly import Assembly, ElementGroup
+from ancf.core.mesh import BeamMesh
+from ancf.core.quadrature import RectangularSection
 from ancf.elements import ancf3243, ancf3333
 from ancf.elements import continuum3d as c3
 
@@ -203,3 +206,21 @@ def cardan_xyz(R: np.ndarray) -> np.ndarray:
     """Chrono's Cardan angles (a, b, c) in rad of R = Rz(c) Ry(b) Rx(a)."""
     return np.array([np.arctan2(R[2, 1], R[2, 2]), -np.arcsin(np.clip(R[2, 0], -1, 1)),
                      np.arctan2(R[1, 0], R[0, 0])])
+
+
+def quadratic_model(p: dict, cls, kw: dict):
+    """(mesh, q0, assembly) of the beam scenes (``beam3d-cantilever``) with a 3-node element
+    class ``cls`` (``ancf3333``'s registry class, keyword arguments ``kw``): the mesh above,
+    a :class:`~ancf.core.mesh.BeamMesh` of 2n segments (nodes at x_i = i L/(2n), slots
+    r, r_y, r_z, the tip its last node), element k on the nodes A, B, C = 2k, 2k + 2,
+    2k + 1.  p: L, n_elements, b (z), h (y), E, nu (Pa, -), rho (kg/m^3, default 0)."""
+    n = p["n_elements"]
+    m = BeamMesh(p["L"], 2 * n, cls.slots, dim=3)
+    q0 = m.reference()
+    k = np.arange(n)
+    nodes = np.stack([2 * k, 2 * k + 2, 2 * k + 1], axis=1)
+    dofmap = m.block.start + (nodes[:, :, None] * m.per_node + np.arange(m.per_node))
+    dofmap = dofmap.reshape(n, -1)
+    el = cls(np.full(n, p["L"] / n), q0[dofmap], RectangularSection(p["b"], p["h"]), p["E"],
+             p["nu"], rho=p.get("rho", 0.0), **kw)
+    return m, q0, Assembly(m.n_dofs, [ElementGroup(el, dofmap)])

@@ -8,7 +8,10 @@ reproduces the 2D scene (element ``linear``) to round-off; 90 bends it about y.
 ``Mx``, ``My``, ``Mz``: tip moments about the fixed global axes, on the section slopes
 (:class:`ancf.core.forces.SectionMoment`).
 Clamp: every slot of the first node but r_x (position and section orientation), all
-three components.  ``element``: the 3D elements of :data:`ancf.models.beam3d.BUILDERS`.
+three components.  ``element``: the 3D elements of :data:`ancf.models.beam3d.BUILDERS` (the
+registry's two-node 3D beams: linear3d, belt3d, ancf3243) and its three-node 3D beams
+(ancf3333, on :func:`ancf.models.chrono_beam.quadratic_model`'s mesh of 2n segments);
+Chrono's beams take ``ks`` for both shear corrections and ignore ``integration``.
 Results ``tip_x``, ``tip_y``, ``tip_z``: the tip node's position.
 """
 from __future__ import annotations
@@ -19,12 +22,20 @@ from dataclasses import replace
 import numpy as np
 
 from ancf.scenes import accuracy
-from ancf.models import beam3d
+from ancf.elements.registry import ELEMENTS
+from ancf.models import beam3d, chrono_beam
 from ancf.scenes import beam_static as bs
 from ancf.scenes import sense
 from ancf.common.params import InputError, Param
 from ancf.scenes.base import STATIC_RESULTS, STEEL_DENSITY, ReferenceFailed, Scene, nullable
 from ancf.scenes.cantilever import cantilever_params, reissner_tip
+
+
+#: the registry's three-node 3D beams (ancf3333)
+QUADRATIC = tuple(n for n, t in ELEMENTS.items() if t.kind == "beam" and t.dim == 3
+                  and t.nodes == 3)
+#: the scene's elements
+CHOICES = tuple(beam3d.BUILDERS) + QUADRATIC
 
 
 def params(presets: dict | None = None) -> tuple:
@@ -34,13 +45,13 @@ def params(presets: dict | None = None) -> tuple:
     for q in cantilever_params():
         if q.name == "element":
             q = Param("element", "linear3d", str, doc="3D element type",
-                      choices=tuple(beam3d.BUILDERS))
+                      choices=CHOICES)
         elif q.name == "integration":
             q = Param("integration", "thesis", str,
                       doc="integration scheme (linear3d: thesis, exact, report-selective, "
                           "report-fix) or a spec like 'normal=2x2,shear=1x1'; belt3d has one "
                           "rule (elastic_points along the axis, the section in closed form) "
-                          "and ignores it")
+                          "and ignores it, as do ancf3243 and ancf3333 (exact rules)")
         elif q.name == "clamp_x_slope":
             continue
         out.append(q)
@@ -62,7 +73,7 @@ def params(presets: dict | None = None) -> tuple:
 
 
 def check(p: dict) -> None:
-    cls = beam3d.BUILDERS[p["element"]](p)[0]
+    cls = ELEMENTS[p["element"]].build(p)[0]
     if not cls.schemes:  # one rule (belt3d)
         return
     try:
@@ -73,17 +84,25 @@ def check(p: dict) -> None:
                          "or a spec 'normal=NXxNY,shear=NXxNY'") from None
 
 
+def model(p):
+    """(mesh, q0, assembly) of ``p["element"]``: :func:`ancf.models.beam3d.model` or, a
+    three-node element, :func:`ancf.models.chrono_beam.quadratic_model`."""
+    t = ELEMENTS[p["element"]]
+    return beam3d.model(p) if t.nodes == 2 else chrono_beam.quadratic_model(p, *t.build(p))
+
+
 def setup(p):
     """(mesh, q0, assembly, elimination, load vector) of the 3D cantilever (density
-    ``p["rho"]`` if given)."""
-    m, q0, asm = beam3d.model(p)
+    ``p["rho"]`` if given); the tip force on the mesh's last node."""
+    m, q0, asm = model(p)
     elim = beam3d.elimination(m, q0, beam3d.clamp(m))
-    return m, q0, asm, elim, beam3d.load_vector(m, beam3d.tip_load(p))
+    load = beam3d.tip_load({**p, "n_elements": m.n_nodes - 1})
+    return m, q0, asm, elim, beam3d.load_vector(m, load)
 
 
 def run(p):
     m, q0, asm, elim, Qk = setup(p)
-    dofs = [m.dof(p["n_elements"], "r", c) for c in range(3)]
+    dofs = [m.dof(m.n_nodes - 1, "r", c) for c in range(3)]
     return bs.solve(p, m, q0, asm, elim, Qk,
                     lambda q: {f"tip_{c}": float(q[d]) for c, d in zip("xyz", dofs)},
                     forces=beam3d.tip_moment(m, p))
