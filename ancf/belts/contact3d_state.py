@@ -32,7 +32,8 @@ from numba import njit
 
 from ancf.belts import friction
 from ancf.belts.contact3d import (BATCH, _add_batch, _add_force, _add_jacobians, _add_normal,
-                                  _control_points, _flush, _may_touch, _mid_velocity,
+                                  _control_points, _flush, _may_touch, _mid_surface,
+                                  _mid_velocity,
                                   _normal_rates, _penetrates, _point_geometry, _positions,
                                   _sides, _swap_forces, _unit_axis)
 from ancf.belts.forces import Drive3D, drive_forces, moved_centres
@@ -166,3 +167,36 @@ def _forces3d_state(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
     o, odot = moved_centres(drive, laws)
     return contact_forces3d_state(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas,
                                   odot, drive.prm, drive.z, drive.h[0], want_J, *c)
+
+
+@njit(cache=True)
+def contact_state3d_stepped(E, V, S, centres, axes, radii, omegas, centre_velocities, prm,
+                            z0, h):
+    """:func:`ancf.belts.contact3d.contact_state3d` (post-processing at the points of S,
+    (nel, nq, 36)) with the friction state z0 (nel, nq, np, 2) m at those points stepped
+    over h (s): r, d, F_n, f_t, v_s, branch as there."""
+    nel, nq, npul = S.shape[0], S.shape[1], radii.shape[0]
+    rr = np.zeros((nel, nq, 3))
+    d, Fn = np.zeros((nel, nq, npul)), np.zeros((nel, nq, npul))
+    fts, vss = np.zeros((nel, nq, npul, 3)), np.zeros((nel, nq, npul, 3))
+    br = np.zeros((nel, nq, npul), dtype=np.int64)
+    r, v, a, vr = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    n, t, vs, ft, pax = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    phi, z1 = np.zeros(2), np.zeros(2)
+    for e in range(nel):
+        for q in range(nq):
+            _mid_surface(E, V, S, e, q, r, v)
+            rr[e, q] = r
+            for p in range(npul):
+                _unit_axis(axes, p, pax)
+                for c in range(3):
+                    a[c] = r[c] - centres[p, c]
+                    vr[c] = v[c] - centre_velocities[p, c]
+                _, dd, _, _, _ = _point_geometry(a, vr, pax, radii[p], omegas[p], prm, n, t,
+                                                 vs)
+                _, F, b, _ = _state_law(a, vr, pax, radii[p], omegas[p], prm, n, t, vs, ft,
+                                        (z0[e, q, p, 0], z0[e, q, p, 1]), h, z1, phi)
+                d[e, q, p], Fn[e, q, p], br[e, q, p] = dd, F, b
+                fts[e, q, p] = ft
+                vss[e, q, p] = vs
+    return rr, d, Fn, fts, vss, br

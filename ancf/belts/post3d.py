@@ -22,7 +22,9 @@ import numpy as np
 
 from ancf.belts.post2d import _span_coords, spans
 from ancf.belts.strains import DEFAULT_POINTS, measures
+from ancf.belts import friction
 from ancf.belts.contact3d import contact_forces3d, contact_state3d
+from ancf.belts.contact3d_state import contact_forces3d_state, contact_state3d_stepped
 from ancf.core.quadrature import gauss01
 from ancf.elements.basis import plate36_S, plate36_x, plate36_y
 
@@ -107,32 +109,77 @@ def _contact_args(drive, x, v, t: float) -> tuple:
     return E, V, o, drive.omegas(t, v), odot
 
 
-def pulley_moments(drive, x, v, t: float) -> np.ndarray:
+def _state(drive, state):
+    """(z0 (nel, nq, np, 2) m at the march's contact points, h s) of a friction law with a
+    state: ``state`` (the march's at a sample: the state its step started from, and that
+    step, ``res.extra["friction_state"][i]``) or the drive's own z[0] over 0 s; None for a
+    stateless law."""
+    if not friction.has_state(drive.prm):
+        return None
+    return (drive.z[0], 0.0) if state is None else state
+
+
+def pulley_moments(drive, x, v, t: float, state=None) -> np.ndarray:
     """Moments (np,) of the contact forces about the pulley axes at state (x, v), N m
-    (a driven pulley's is the integral of the friction of Eq. 4.45 times the lever)."""
+    (a driven pulley's is the integral of the friction of Eq. 4.45 times the lever); a
+    friction law with a state on ``state`` (:func:`_state`)."""
     E, V, o, om, odot = _contact_args(drive, x, v, t)
     nel, npul = E.shape[0], drive.radii.size
     T = np.zeros(npul)
-    contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, om, odot, drive.prm,
-                     False, np.zeros((nel, 36)), np.zeros((0, 36, 36)), np.zeros((0, 36, 36)),
-                     np.zeros((0, npul, 36)), T, np.zeros((npul, 0, 36)),
-                     np.zeros((npul, 0, 36)), np.zeros(npul))
+    out = (False, np.zeros((nel, 36)), np.zeros((0, 36, 36)), np.zeros((0, 36, 36)),
+           np.zeros((0, npul, 36)), T, np.zeros((npul, 0, 36)), np.zeros((npul, 0, 36)),
+           np.zeros(npul))
+    stepped = _state(drive, state)
+    if stepped is None:
+        contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, om, odot,
+                         drive.prm, *out)
+    else:
+        z = np.zeros((2, *np.shape(stepped[0])))
+        z[0] = stepped[0]
+        contact_forces3d_state(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, om, odot,
+                               drive.prm, z, float(stepped[1]), *out)
     return T
 
 
-def contact_sample(drive, x, v, t: float) -> tuple:
-    """:func:`ancf.belts.contact3d.contact_state3d` at state (x, v): r, d, F_n, f_t, v_s, branch."""
+def contact_sample(drive, x, v, t: float, state=None) -> tuple:
+    """:func:`ancf.belts.contact3d.contact_state3d` at state (x, v) at the march's contact
+    points: r, d, F_n, f_t, v_s, branch (a friction law with a state on ``state``)."""
     E, V, o, om, odot = _contact_args(drive, x, v, t)
-    return contact_state3d(E, V, drive.S0, o, drive.axes, drive.radii, om, odot, drive.prm)
+    stepped = _state(drive, state)
+    if stepped is None:
+        return contact_state3d(E, V, drive.S0, o, drive.axes, drive.radii, om, odot, drive.prm)
+    return contact_state3d_stepped(E, V, drive.S0, o, drive.axes, drive.radii, om, odot,
+                                   drive.prm, np.ascontiguousarray(stepped[0]),
+                                   float(stepped[1]))
 
 
-def width_contact(drive, x, v, t: float, npts: int = DEFAULT_POINTS) -> tuple:
+def _state_along(drive, z0, xi) -> np.ndarray:
+    """The state z0 (nel, n n, np, 2) at the march's n x n Gauss points (q = n i + j, i
+    along the belt) carried to the points (xi_k, y_j) of each element, k major: linear
+    along the belt between the Gauss points of each row j, periodic (the belt is closed)."""
+    nel = z0.shape[0]
+    n = int(round(np.sqrt(z0.shape[1])))
+    tg, _ = gauss01(n)
+    rows = np.reshape(z0, (nel, n, n, *z0.shape[2:]))  # e, i, j, p, c
+    at = (np.arange(nel)[:, None] + np.asarray(xi)[None, :]).ravel()
+    g = (np.arange(nel)[:, None] + tg[None, :]).ravel()
+    out = np.empty((nel, np.size(xi), n, *z0.shape[2:]))
+    for j in range(n):
+        for p in range(z0.shape[2]):
+            for c in range(z0.shape[3]):
+                out[:, :, j, p, c] = np.interp(at, g, rows[:, :, j, p, c].ravel(),
+                                               period=nel).reshape(nel, np.size(xi))
+    return np.ascontiguousarray(out.reshape(nel, np.size(xi) * n, *z0.shape[2:]))
+
+
+def width_contact(drive, x, v, t: float, npts: int = DEFAULT_POINTS, state=None) -> tuple:
     """(normal, friction) (nel * npts,) N/m: the pulleys' force on the belt per unit
     length at the points of a :func:`line_sample` along the belt (xi = (j + 1/2) / npts
     of each element), the contact state of :func:`ancf.belts.contact3d.contact_state3d`
     at the contact rule's n Gauss points across the width integrated over it and summed
     over the pulleys: the normal force F_n and the friction along each pulley's
-    counter-clockwise tangent p x n (0 off contact)."""
+    counter-clockwise tangent p x n (0 off contact); a friction law with a state on
+    ``state`` (:func:`_state`), carried to the points by :func:`_state_along`."""
     s, L = drive.spec, drive.lengths
     E, V, o, om, odot = _contact_args(drive, x, v, t)
     yg, wg = gauss01(int(round(np.sqrt(s.contact_points))))
@@ -141,7 +188,14 @@ def width_contact(drive, x, v, t: float, npts: int = DEFAULT_POINTS) -> tuple:
     Y = np.broadcast_to(np.tile(yg * s.width, npts), X.shape)
     S = np.ascontiguousarray(plate36_S(X, Y, np.broadcast_to(L[:, None], X.shape),
                                        np.full_like(X, s.width)))
-    r, _, Fn, ft = contact_state3d(E, V, S, o, drive.axes, drive.radii, om, odot, drive.prm)[:4]
+    stepped = _state(drive, state)
+    if stepped is None:
+        r, _, Fn, ft = contact_state3d(E, V, S, o, drive.axes, drive.radii, om, odot,
+                                       drive.prm)[:4]
+    else:
+        r, _, Fn, ft = contact_state3d_stepped(E, V, S, o, drive.axes, drive.radii, om, odot,
+                                               drive.prm, _state_along(drive, stepped[0], xi),
+                                               float(stepped[1]))[:4]
     a = r[:, :, None, :] - o[None, None]
     a -= np.einsum("eqpc,pc->eqp", a, drive.axes)[..., None] * drive.axes
     tang = np.cross(drive.axes, a / np.linalg.norm(a, axis=-1, keepdims=True))

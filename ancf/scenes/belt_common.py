@@ -188,7 +188,7 @@ def penetrations(drive, res) -> np.ndarray:
     the plate belt's contact points (:func:`ancf.belts.post3d.contact_sample`)."""
     x, v, t = res.q[-1], res.v[-1], float(res.t[-1])
     if isinstance(drive, Belt3DDrive):
-        d = post3d.contact_sample(drive, x, v, t)[1]
+        d = post3d.contact_sample(drive, x, v, t, res.extra.get("friction_state", [None])[-1])[1]
     else:
         d = post2d.sample(drive, x, v, t).d
     return np.asarray(d).reshape(-1, drive.radii.size).max(axis=0)

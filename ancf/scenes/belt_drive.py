@@ -134,21 +134,23 @@ def _end3d(desc, drive, res, window) -> dict:
     spans = _spans(desc, window, last,
                    lambda i: post3d.line_sample(drive, res.q[i], res.v[i], npts=4),
                    lambda smp, span: post3d.span_tension(drive, smp, span))
-    normal, friction = post3d.width_contact(drive, x, v, t)
+    state = res.extra.get("friction_state", [None])[-1]
+    normal, friction = post3d.width_contact(drive, x, v, t, state=state)
+    depth = post3d.contact_sample(drive, x, v, t, state)[1]
     return dict(spans=spans, belt_s_m=last["s"].tolist(),
                 axial_force_N=last["tension_membrane_N"].tolist(),
                 speed_m_s=last["speed"].tolist(),
-                penetration_max_m=float(max(post3d.contact_sample(drive, x, v, t)[1].max(), 0.0)),
+                penetration_max_m=float(max(depth.max(), 0.0)),
                 belt_x_m=last["r"][:, 0].tolist(), belt_y_m=last["r"][:, 1].tolist(),
                 normal_force_N_m=normal.tolist(), friction_force_N_m=friction.tolist())
 
 
 def _moments(desc, drive, res) -> np.ndarray:
     """The belt's moment on every pulley at every sample (samples, np), N m."""
-    if desc.belt["element"] == "plate36":
-        return np.array([post3d.pulley_moments(drive, x, v, float(t))
-                         for x, v, t in zip(res.q, res.v, res.t)])
     states = res.extra.get("friction_state", [None] * res.t.size)
+    if desc.belt["element"] == "plate36":
+        return np.array([post3d.pulley_moments(drive, x, v, float(t), z)
+                         for x, v, t, z in zip(res.q, res.v, res.t, states)])
     W = res.extra.get("element_velocities", [None] * res.t.size)
     return np.array([pulley_moments(drive, x, v, float(t), z, V)
                      for x, v, t, z, V in zip(res.q, res.v, res.t, states, W)])

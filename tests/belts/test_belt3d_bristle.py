@@ -300,3 +300,33 @@ def test_the_law_matters(runs):
     assert gap > 1e-3, gap
     diff, balance = _balance(dc, desc, rc, desc.pulleys[2].params["load_torque"])
     assert abs(abs(diff) - balance) <= 0.03 * balance, (diff, balance)
+
+
+def test_scene_reports_the_stateful_contact(runs, tmp_path):
+    """``ancf run belt-drive`` on a plate36 file with the bristle law: its post-processing
+    evaluates the contact on the march's friction state (post3d.pulley_moments,
+    contact_sample, width_contact with ``state``).  The driven pulley's mean moment over
+    the window equals the run's moment balance within 3 % (load, damping, inertia), and
+    the moment on the drive's own state equals the one on the saved sample state."""
+    from ancf.scenes import SCENES
+    text = re.sub(r"\[friction\][^\[]*", "[friction]\nlaw = 'bristle'\nmu = 0.6\n"
+                  "stiffness = 1e8\ndamping = 1e3\n\n", THREE3D.read_text())
+    path = tmp_path / "bristle.toml"
+    path.write_text(text)
+    out, res = SCENES["belt-drive"].execute({
+        "file": str(path), "run.t_end": str(T_END), "run.dt": "2e-4",
+        "run.steady_window": str(WINDOW),
+        "set": "; ".join(["contact.gauss_points=25", *RUN])})
+    assert out["converged"], out.get("message")
+    driven = next(p for p in out["results"]["pulleys"] if p["name"] == "driven")
+    drive, desc, run = runs["bristle"]
+    load = desc.pulleys[2].params["load_torque"]
+    balance = _balance(drive, desc, run, load)[1] * drive.radii[2]
+    assert abs(abs(driven["torque_mean_Nm"]) - balance) <= 0.03 * balance, (driven, balance)
+    assert np.isfinite(out["results"]["friction_force_N_m"]).all()
+    assert 0 < out["results"]["penetration_max_m"] < 1e-3
+    last = run.extra["friction_state"][-1]
+    x, v, t = run.q[-1], run.v[-1], float(run.t[-1])
+    on_saved = post3d.pulley_moments(drive, x, v, t, last)
+    stateless = post3d.pulley_moments(drive, x, v, t, (np.zeros_like(last[0]), 0.0))
+    assert abs(on_saved[2]) > 0.5 * balance and abs(stateless[2]) < 0.5 * abs(on_saved[2])
