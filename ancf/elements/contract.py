@@ -6,7 +6,11 @@ contract tests run over its constructions on a beam mesh (``CONTRACT_ELEMENTS`` 
 finite-difference gradients and tangents, symmetry, rigid-motion invariance,
 zero-energy-mode counts, exact mass) and over every record
 (``tests/elements/test_registry.py``: the field at points, rigid motion, exact
-tangent), so a new element gets them by being registered.
+tangent; for Chrono's elements, kinds beam, shell and solid of
+:mod:`ancf.elements.chrono_element`, also zero internal force under rigid motion, six
+zero-energy modes and the mass exact against the box's closed-form inertia), so a new
+element gets them by being registered.  Shells and solids have no ``section`` (their
+thickness ``h`` or sides are element sizes).
 """
 from __future__ import annotations
 

@@ -169,7 +169,8 @@ _CHRONO = (
                 strain=_CHRONO_STRAIN, material=_BEAM_LAW,
                 path="ancf.elements.chrono_element:Beam3333", knobs=("ks",), variants=(),
                 physics=_BEAM | {"3D"},
-                doc="Chrono's 3-node shear-deformable beam ChElementBeamANCF_3333, 27 coordinates"),
+                doc="Chrono's 3-node shear-deformable beam ChElementBeamANCF_3333, "
+                    "27 coordinates"),
     ElementType(name="ancf3443", dim=3, kind="shell", family="ancf3443", nodes=4,
                 strain=_CHRONO_STRAIN, material="isotropic 3D St Venant-Kirchhoff (Chrono's)",
                 path="ancf.elements.chrono_element:Shell3443", variants=(), physics=_SOLID,

@@ -335,3 +335,27 @@ def modes(plate: Plate, fixed, k: int = 6) -> np.ndarray:
     w2 = np.sort(spla.eigsh(K, k=k, M=M, sigma=SHIFT, which="LM",
                             return_eigenvectors=False))
     return np.sqrt(np.abs(w2)) * np.sign(w2) / (2 * np.pi)
+
+
+def simply_supported_square(shell_cls, n: int, a: float, H: float, E: float, nu: float,
+                            p: float):
+    """(plate, u) of the scene ``plate-square`` with a registry shell class ``shell_cls``
+    (``chrono_element.Shell3443`` or ``Shell3833``): n x n elements over a x a (m),
+    thickness H (m), E (Pa), nu; w = 0 on the four edges (``simply_supported``) and
+    ``in_plane_rigid``; the uniform pressure p (Pa) along +z (eq. (3)); the linear solve
+    K(e0) u = F_p on the free coordinates, K(e0) (N/m) the class's tangent assembled on
+    this mesh; u (ndof,) in m."""
+    plate = Plate(shell_cls.module.__name__[-4:], n, n, a, a, H, E, nu)
+    e0 = plate.reference()[plate.dofs]
+    el = shell_cls(np.full(n * n, a / n), np.full(n * n, a / n), H, E, nu, e0=e0)
+    K = _scatter(plate, el.gradient(e0, tangent=True)[1])
+    f = plate.free([plate.simply_supported(edge) for edge in EDGES] + [plate.in_plane_rigid()])
+    u = np.zeros(plate.ndof)
+    u[f] = spla.spsolve(K[f][:, f].tocsc(), pressure(plate, p)[f])
+    return plate, u
+
+
+def centre_node(plate: Plate) -> int:
+    """The node nearest the plate's centre (x0 + a/2, y0 + b/2)."""
+    centre = np.array([plate.x0 + plate.a / 2, plate.y0 + plate.b / 2])
+    return int(np.argmin(np.linalg.norm(plate.positions() - centre, axis=1)))

@@ -51,7 +51,7 @@ def params(presets: dict | None = None) -> tuple:
                       doc="integration scheme (linear3d: thesis, exact, report-selective, "
                           "report-fix) or a spec like 'normal=2x2,shear=1x1'; belt3d has one "
                           "rule (elastic_points along the axis, the section in closed form) "
-                          "and ignores it, as do ancf3243 and ancf3333 (exact rules)")
+                          "and ignores it")
         elif q.name == "clamp_x_slope":
             continue
         out.append(q)

@@ -3,9 +3,13 @@ plate of thesis 4.3 against Navier's series).
 
 ``n_elements`` x ``n_elements`` ``plate36`` elements (bending on, ``ng`` x ``ng`` Gauss
 points) over a x a; simply supported: w = 0 and the slope along the edge vanish on the
-boundary, the in-plane coordinates are fixed.  Linear (small-deflection) static solve
-at the flat reference with a sparse direct solver (``ancf.models.plate``): valid while
-the centre deflection is small against the thickness (h/47 at the defaults).
+boundary, the in-plane coordinates are fixed.  ``element`` = ``ancf3443`` or ``ancf3833``
+(Chrono's shells, ``ancf run`` only): the registry's class on
+:func:`ancf.models.chrono_shell.simply_supported_square`'s mesh, w = 0 on the edges
+(:meth:`~ancf.models.chrono_shell.Plate.simply_supported`), in-plane rigid motion removed.
+Linear (small-deflection) static solve at the flat reference with a sparse direct solver
+(``ancf.models.plate``): valid while the centre deflection is small against the
+thickness (h/47 at the defaults).
 ``center_deflection_m`` is signed, positive along the pressure; it is held against
 Navier's double series (``ancf analytic navier-plate``, summed as Lévy's single series;
 Kirchhoff's rigidity D = E h^3 / (12 (1 - nu^2))).  Inputs whose rigidity, a^4 or
@@ -26,6 +30,8 @@ import math
 
 from analytic import navier_plate
 from ancf.core.constraints import Elimination
+from ancf.elements.registry import ELEMENTS
+from ancf.models import chrono_shell
 from ancf.models.plate import grid_points, simply_supported, simply_supported_model
 from ancf.common.params import InputError, Param
 from ancf.scenes import sense
@@ -37,8 +43,15 @@ SUPPORTS = Param("supports", "simple", str, doc="edge supports (ancf modes only)
                  choices=("simple", "free"))
 
 
+#: the scene's elements: the registry's plate (plate36, the default) and its shells
+CHOICES = tuple(n for n, t in ELEMENTS.items() if t.kind == "plate") + tuple(
+    n for n, t in ELEMENTS.items() if t.kind == "shell")
+
+
 def params() -> tuple:
     return (
+        Param("element", "plate36", str, doc="plate element: plate36, or Chrono's shells "
+              "ancf3443, ancf3833 (exact rules, ng ignored; ancf run only)", choices=CHOICES),
         Param("a", 1.0, float, "m", "side of the square", lo=0, lo_open=True),
         Param("h", 0.01, float, "m", "thickness", lo=0, lo_open=True),
         Param("E", 2.1e11, float, "Pa", "Young's modulus", lo=0, lo_open=True),
@@ -78,15 +91,27 @@ def run(p: dict) -> SceneResult:
     if failed:
         return failed
     geo = dict(h=p["h"], E=p["E"], nu=p["nu"], p=p["p"])
-    m, u = simply_supported(p["n_elements"], p["a"], p["a"], ng=p["ng"], **geo)
-    w = float(u[m.dof(m.node(p["n_elements"] // 2, p["n_elements"] // 2), "r", 2)])
+    w, extra = _centre_deflection(p, geo)
     w_ref, terms = navier_plate.centre_deflection(p["a"], p["a"], **geo)
     rel = (w - w_ref) / w_ref if w_ref else 0.0
     return SceneResult(True, "linear static solve", {
         "center_deflection_m": w, "navier_center_deflection_m": w_ref, "navier_terms": terms,
         "relative_error": rel,
-        "tangent_evaluations": 1, "factorizations": 1},
-        extra={"mesh": m, "q0": m.reference(), "q": m.reference() + u})
+        "tangent_evaluations": 1, "factorizations": 1}, extra=extra)
+
+
+def _centre_deflection(p: dict, geo: dict) -> tuple:
+    """(w at the centre node in m, the result's extra) of the linear solve: plate36's
+    (``ancf.models.plate``) or a shell's (:func:`ancf.models.chrono_shell.simply_supported_square`,
+    the registry's class on Chrono's plate mesh)."""
+    n = p["n_elements"]
+    if p["element"] == "plate36":
+        m, u = simply_supported(n, p["a"], p["a"], ng=p["ng"], **geo)
+        w = float(u[m.dof(m.node(n // 2, n // 2), "r", 2)])
+        return w, {"mesh": m, "q0": m.reference(), "q": m.reference() + u}
+    plate, u = chrono_shell.simply_supported_square(ELEMENTS[p["element"]].cls, n, p["a"],
+                                                    p["h"], p["E"], p["nu"], p["p"])
+    return float(u[plate.coordinate(chrono_shell.centre_node(plate), 0, 2)]), {}
 
 
 def _failed() -> dict:
@@ -109,7 +134,10 @@ def warn(p: dict, res: SceneResult) -> list:
 
 def _model(p: dict):
     """(mesh, q0, assembly, elimination, load) of the nonlinear plate of ``ancf modes``
-    (refused before it is built when it would not fit in memory)."""
+    (refused before it is built when it would not fit in memory); plate36 only."""
+    if p["element"] != "plate36":
+        raise InputError(f"element = {p['element']!r} is out of range; allowed: one of "
+                         "plate36 (ancf modes)")
     check_cost(p["n_elements"], p["n_elements"])
     m, q0, asm, elim, load = simply_supported_model(p["n_elements"], p["a"], p["a"], p["h"],
                                                     p["E"], p["nu"], p["p"], p["ng"], p["rho"])
