@@ -56,6 +56,16 @@ def test_min_det_of_a_rigid_rotation_is_one():
     assert np.allclose(deformation_dets(asm.groups, q, q0), 1.0, rtol=1e-12)
 
 
+def test_det_follows_a_changed_reference_of_the_same_element():
+    """det J0 is kept per element for its last reference: another reference of the same
+    element (q0 stretched along x by 2, the state q0 itself: det F = 1/2) is not served
+    the kept one (which would give 1)."""
+    mesh, q0, asm = _model("linear")
+    assert min_det(asm.groups, q0, q0)[0] == pytest.approx(1.0, rel=1e-12)
+    assert min_det(asm.groups, q0, _scaled_x(mesh, q0, 2.0))[0] == pytest.approx(0.5, rel=1e-12)
+    assert min_det(asm.groups, q0, q0)[0] == pytest.approx(1.0, rel=1e-12)
+
+
 def test_min_det_names_the_inverted_element():
     mesh, q0, asm = _model("linear")
     q = q0.copy()
