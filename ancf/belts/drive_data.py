@@ -50,6 +50,11 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   none), reached at ``centre_shift_time`` (s, default 0.05) by the ``centre_motion`` law
   (:data:`ancf.belts.pulleys.CENTRE_LAWS`: ``ramp``, u = u0 t / t0 up to t0); a
   tensioner's whole arm (its pivot) is carried so.
+  A plate belt's pulley may have its axis misaligned (:data:`ALIGNMENT`, degrees, default 0,
+  within +-:data:`MAX_ALIGN_DEG`; refused for the 2D belt): ``axis_tilt_deg`` turns it
+  toward the running direction of the span entering it (the belt walks along the axis),
+  ``axis_roll_deg`` toward the radius to that span's tangent point, both about the mid-face
+  (:mod:`ancf.belts.tracking3d` defines them with a sketch).
   Angular velocities are counter-clockwise positive; a load torque T_a resists the
   pulley's running direction (Eq. 3.26 with -T_a; counter-clockwise on the belt's inner
   side, clockwise on its back); a table is ``[[t, value], ...]``, t increasing,
@@ -306,6 +311,20 @@ MOTION = _keys(
           "t0)", lo=0, lo_open=True, hi=100),
     Param("centre_motion", "ramp", str, doc="the centre's motion law "
           "(ancf.belts.pulleys.CENTRE_LAWS; 'ramp': Eq. 4.46)", choices=tuple(CENTRE_LAWS)),
+)
+#: the largest misalignment of a pulley axis, deg: within it tan(angle) is the angle to 1 %
+#: (the tracking rule's linear regime) and the belt laid on the aligned path lies within
+#: (w / 2) sin(angle) <= 0.087 w of the turned face at its edges (settling puts it on)
+MAX_ALIGN_DEG = 10.0
+#: the plate belt's pulley axis misalignment (ancf.belts.tracking3d), any pulley's
+ALIGNMENT = _keys(
+    Param("axis_tilt_deg", 0.0, float, "deg", "the axis turned toward the running direction "
+          "of the span entering the pulley (about the radius to that span's tangent point): "
+          "the belt walks along the axis at -v tan(tilt) (ancf.belts.tracking3d)",
+          lo=-MAX_ALIGN_DEG, hi=MAX_ALIGN_DEG),
+    Param("axis_roll_deg", 0.0, float, "deg", "the axis turned toward the radius to the "
+          "entering span's tangent point (about that span's direction; after the tilt)",
+          lo=-MAX_ALIGN_DEG, hi=MAX_ALIGN_DEG),
 )
 #: every key a pulley law or its time law may take (beyond PULLEY's)
 LAW_PARAMS = {**{k.name: k for role in ROLES.values() for k in role.keys}, **TIME_KEYS}

@@ -13,8 +13,9 @@ missing one, a value out of range, an unknown law or one missing a parameter, an
 layout the belt cannot be laid on (overlapping pulleys, a pulley it cannot wrap, a belt
 shorter than half its path or longer than the path; the same at every pulley centre's
 ``centre_shift``), a friction law the belt's element does not carry (``plate36`` with a
-tensioner arm: no law with a state), and a ``belt.formulation = 'ale'`` the ALE march does
-not carry (the plate belt, a friction law with a state).
+tensioner arm: no law with a state), a ``belt.formulation = 'ale'`` the ALE march does
+not carry (the plate belt, a friction law with a state), and a misaligned pulley axis
+(``axis_tilt_deg``, ``axis_roll_deg``) on the 2D belt.
 """
 from __future__ import annotations
 
@@ -184,7 +185,8 @@ def _law_keys(table: dict, prefix: str) -> tuple:
         choice = replace(dd.LAW_PARAMS[sub], name=prefix + sub).parse(table[sub])
         names += [k for k in dd.ROLES[name].laws[choice].keys if k not in names]
     keys = {k: dd.PULLEY.get(k) or dd.LAW_PARAMS[k] for k in names}
-    return name, {**keys, **dd.MOTION}, f" (law {name!r}: {', '.join(names[len(dd.PULLEY):])})"
+    why = f" (law {name!r}: {', '.join(names[len(dd.PULLEY):])})"
+    return name, {**keys, **dd.MOTION, **dd.ALIGNMENT}, why
 
 
 def _pulley_spec(i: int, table) -> dd.PulleySpec:
@@ -305,8 +307,22 @@ def describe(data: dict) -> dd.DriveDescription:
                       why=f" (element {element!r})")
     friction = _friction(data, element, pulleys)
     _formulation(belt, element, friction)
+    _alignment(pulleys, element)
     return dd.DriveDescription(belt, pulleys, friction, contact, _run(data), tuple(gravity),
                                path)
+
+
+def _alignment(pulleys: tuple, element: str) -> None:
+    """A misaligned pulley axis (:data:`ancf.belts.drive_data.ALIGNMENT`) on the plate belt
+    only: the 2D belt's axes are its plane's normal."""
+    if element == "plate36":
+        return
+    for i, p in enumerate(pulleys):
+        for key in dd.ALIGNMENT:
+            if p.params[key] != 0:
+                raise InputError(f"pulleys.{i}.{key} = {p.params[key]!r} is out of range for "
+                                 f"belt.element = {element!r}; allowed: 0 (a misaligned axis "
+                                 "needs belt.element = 'plate36')")
 
 
 def _formulation(belt: dict, element: str, friction: dict) -> None:
