@@ -61,8 +61,8 @@ def _roundoff_floor(k_inf: float, z) -> float:
 
 @njit(cache=True)
 def _newton_band(z, g, group, kl, lam, Qr, tol, xtol, max_iter, hist):
-    """The iterations of :meth:`_Newton.run` in one compiled call, for a planar
-    Green-strain group on band storage without force terms (tol = rtol |Qk|).
+    """The iterations of :meth:`_Newton.run` at one load factor in one compiled call, for
+    a compiled element group on band storage without force terms (tol = rtol |Qk|).
     Returns (z, status, iterations, |r|, factorisations, K); status 0 converged, 1 residual
     not finite, 2 singular tangent, 3 out of iterations; |r| per iteration in hist; K the
     tangent at the converged z (band storage), factored in place otherwise."""
@@ -98,6 +98,43 @@ def _newton_band(z, g, group, kl, lam, Qr, tol, xtol, max_iter, hist):
 
 
 @njit(cache=True)
+def _march_band(z, g, group, kl, Qr, tol, xtol, max_iter, n_steps, min_step, max_total_iter):
+    """:func:`solve_static`'s load stepping over :func:`_newton_band` in one compiled call,
+    the same steps: lam 0 -> 1 from increments 1/n_steps, doubled after a step of at most
+    4 iterations, halved after a failed one (giving up below min_step, or past
+    max_total_iter iterations).  Returns (z, converged, lam, iterations, load steps,
+    factorisations, last status, its |r|, K of the last step, |r| of every iteration,
+    iterations of each attempt); K the tangent at z when converged."""
+    hist = np.zeros(max_iter)
+    res, counts = np.empty(8 * max_iter), np.empty(16, dtype=np.int64)
+    K = np.zeros((0, 0))
+    lam, step, rn = 0.0, 1.0 / n_steps, 0.0
+    total = steps = facts = attempts = nres = status = 0
+    while lam < 1.0 - 1e-14:
+        step = min(step, 1.0 - lam)
+        z_new, status, its, rn, f, K = _newton_band(z, g, group, kl, lam + step, Qr, tol,
+                                                    xtol, max_iter, hist)
+        total += its
+        facts += f
+        if nres + its > res.size:  # more room: twice as much
+            res = np.concatenate((res[:nres], np.empty(res.size + its)))
+        if attempts == counts.size:
+            counts = np.concatenate((counts, np.empty(counts.size, dtype=np.int64)))
+        res[nres:nres + its] = hist[:its]
+        counts[attempts] = its
+        nres, attempts = nres + its, attempts + 1
+        if status == 0:
+            z, lam, steps = z_new, lam + step, steps + 1
+            step *= 2.0 if its <= 4 else 1.0
+        else:
+            step *= 0.5
+            if step < min_step or total > max_total_iter:
+                break
+    ok = status == 0
+    return z, ok, lam, total, steps, facts, status, rn, K, res[:nres], counts[:attempts]
+
+
+@njit(cache=True)
 def _assemble_group(group, z, g, grad, K):
     """:func:`~ancf.core.pattern.assemble_group` with the tangent, called from Python."""
     assemble_group(group, z, g, True, grad, K)
@@ -113,7 +150,6 @@ class _Newton:
         self.scale = max(np.linalg.norm(Qk_r + self._force(q0, 1.0, None)), 1.0)
         self.tangents = self.factorizations = 0
         self.compiled = pattern.compiled(assembly)
-        self.tangent = None  # the tangent at the last converged z (compiled iterations)
 
     def _assemble(self, z):
         """(T^T dU/dq, T^T K T in the pattern's storage) at z: one compiled call where
@@ -138,8 +174,6 @@ class _Newton:
 
     def run(self, z, lam, history):
         """Iterate at load factor lam; returns (z, converged, iterations, why)."""
-        if self.compiled is not None and self.forces is None:
-            return self._run_compiled(z, lam, history)
         opt, small_step = self.opt, False
         for it in range(1, opt.max_iter + 1):
             grad, K = self._assemble(z)
@@ -163,22 +197,35 @@ class _Newton:
             small_step = np.linalg.norm(dz) <= opt.xtol * (1.0 + np.linalg.norm(z))
         return z, False, opt.max_iter, f"no convergence in {opt.max_iter} iterations (|r| = {rn:.3e})"
 
-    def _run_compiled(self, z, lam, history):
-        opt = self.opt
-        hist = np.zeros(opt.max_iter)
-        z, status, its, rn, facts, K = _newton_band(z, self.g, self.compiled, self.pattern.kl,
-                                                    lam, self.Qk_r, opt.rtol * self.scale,
-                                                    opt.xtol, opt.max_iter, hist)
-        self.tangent = K if status == 0 else None
-        history.extend(hist[:its].tolist())
-        self.tangents += its
-        self.factorizations += facts
-        if status == 0:
-            return z, True, its, ""
-        why = ("residual is not finite",
-               "singular tangent stiffness (zero pivot or non-finite solution)",
-               f"no convergence in {opt.max_iter} iterations (|r| = {rn:.3e})")[status - 1]
-        return z, False, its, why
+    def march(self, z) -> StaticResult:
+        """The whole load stepping in one compiled call (:func:`_march_band`), for a
+        compiled element group without force terms."""
+        opt, pattern = self.opt, self.pattern
+        z, ok, lam, total, steps, facts, status, rn, K, res, counts = _march_band(
+            z, self.g, self.compiled, pattern.kl, self.Qk_r, opt.rtol * self.scale, opt.xtol,
+            opt.max_iter, opt.n_steps, opt.min_step, opt.max_total_iter)
+        flat, histories, start = res.tolist(), [], 0
+        for its in counts.tolist():
+            histories.append(flat[start:start + its])
+            start += its
+        message = "converged" if ok else _given_up(_why(status, rn, opt.max_iter), lam, opt)
+        return StaticResult(
+            q=pattern.expand(z, self.g), converged=ok, message=message,
+            load_factor=1.0 if ok else lam, iterations=total, load_steps=steps,
+            residual_history=histories, tangent_evaluations=total, factorizations=facts,
+            pattern=pattern, tangent=K if ok else None)
+
+
+def _why(status: int, rn: float, max_iter: int) -> str:
+    """The reason of :func:`_newton_band`'s status 1, 2 or 3."""
+    return ("residual is not finite",
+            "singular tangent stiffness (zero pivot or non-finite solution)",
+            f"no convergence in {max_iter} iterations (|r| = {rn:.3e})")[status - 1]
+
+
+def _given_up(why: str, lam: float, opt: NewtonOptions) -> str:
+    return (f"No convergence: {why}; load factor reached {lam:.4f} "
+            f"(increment fell below {opt.min_step:g})")
 
 
 def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = None,
@@ -191,13 +238,14 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
         assembly.n_dofs, [grp.dofmap for grp in assembly.groups] + forces.dofmaps(), T)
     z = pattern.restrict(q0)
     newton = _Newton(assembly, pattern, g, pattern.reduce(Qk), opt, forces, pattern.expand(z, g))
+    if newton.compiled is not None and forces is None:
+        return newton.march(z)
     lam, step = 0.0, 1.0 / opt.n_steps
     total, steps, histories, why = 0, 0, [], ""
     result = lambda ok, msg, lf: StaticResult(  # noqa: E731
         q=pattern.expand(z, g), converged=ok, message=msg, load_factor=lf, iterations=total,
         load_steps=steps, residual_history=histories, tangent_evaluations=newton.tangents,
-        factorizations=newton.factorizations, pattern=pattern,
-        tangent=newton.tangent if ok else None)
+        factorizations=newton.factorizations, pattern=pattern)
     while lam < 1.0 - 1e-14:
         step = min(step, 1.0 - lam)
         hist = []
@@ -210,8 +258,7 @@ def solve_static(assembly, elimination, Qk, q0, options: NewtonOptions | None = 
         else:
             step *= 0.5
             if step < opt.min_step or total > opt.max_total_iter:
-                return result(False, f"No convergence: {why}; load factor reached {lam:.4f} "
-                                     f"(increment fell below {opt.min_step:g})", lam)
+                return result(False, _given_up(why, lam, opt), lam)
     return result(True, "converged", 1.0)
 
 
