@@ -29,6 +29,8 @@ ZERO_EIGENVALUE_REL = 1e-14
 NEGATIVE_EIGENVALUE_REL = 1e-9
 #: relative precision of the lowest eigenvalue found by bisection on inertia counts
 LOWEST_RTOL = 1e-3
+#: inverse iterations allowed for the lowest eigenvalue of a positive definite matrix
+INVERSE_ITERATIONS = 60
 
 
 class Singular(Exception):
@@ -104,8 +106,7 @@ def counter(pattern, data):
 
 
 def _top(pattern, data) -> float:
-    if pattern.band:
-        return float(banded.largest_magnitude(data, pattern.kl, 40))
+    """Largest eigenvalue magnitude of a CSR-stored symmetric matrix (ARPACK)."""
     import scipy.sparse.linalg as spla
     return float(abs(spla.eigsh(pattern.as_csr(data), k=1, which="LM",
                                 return_eigenvectors=False)[0]))
@@ -125,9 +126,33 @@ def _lowest_by_bisection(count, top) -> float:
 
 
 @njit(cache=True)
+def _band_stability(data, kl, x, iterations, rtol):
+    """:func:`stability` of a band-stored matrix in one compiled call, the same steps:
+    (top = largest |eigenvalue| by power iteration, negative count, zero count, count
+    below the zero band, column + 1 of a zero pivot of the LU (0: none), mu, finite);
+    mu the lowest eigenvalue by inverse iteration from ``x`` when the count below the
+    zero band is 0 and the LU succeeded, else 0."""
+    n = data.shape[0]
+    top = banded.largest_magnitude(data, kl, 40)
+    if top == 0.0:
+        return top, 0, n, 0, 0, 0.0, True
+    neg = banded.count_below(data, kl, -NEGATIVE_EIGENVALUE_REL * top)
+    below = banded.count_below(data, kl, ZERO_EIGENVALUE_REL * top)
+    zero = 0 if below == neg else below - banded.count_below(data, kl, -ZERO_EIGENVALUE_REL * top)
+    if below != 0:
+        return top, neg, zero, below, 0, 0.0, True
+    AB, piv = data.copy(), np.empty(n, dtype=np.int64)
+    k = banded.lu(AB, kl, piv, bool(True))  # not a literal: one compilation of lu
+    if k != 0:
+        return top, neg, zero, below, k, 0.0, True
+    mu, finite = _band_inverse_iteration(AB, kl, piv, x, iterations, rtol)
+    return top, neg, zero, below, 0, mu, finite
+
+
+@njit(cache=True)
 def _band_inverse_iteration(AB, kl, piv, x, iterations, rtol):
-    """(mu, finite): :func:`_lowest_by_inverse_iteration`'s Rayleigh quotient on the band
-    LU (AB, piv) in one compiled call, the same steps; finite False on a non-finite
+    """(mu, finite): the Rayleigh quotient of inverse iteration (x <- K^-1 x) on the band
+    LU (AB, piv), stopped when it settles to ``rtol``; finite False on a non-finite
     iterate."""
     mu = np.inf
     for _ in range(iterations):
@@ -143,16 +168,16 @@ def _band_inverse_iteration(AB, kl, piv, x, iterations, rtol):
     return mu, True
 
 
-def _lowest_by_inverse_iteration(lu, n, top, iterations=60) -> float:
+def _start(n: int) -> np.ndarray:
+    """The start vector of inverse iteration (n,)."""
+    return 1.0 + 0.5 * np.sin(1.0 + 7.0 * np.arange(n))
+
+
+def _lowest_by_inverse_iteration(lu, n, top, iterations=INVERSE_ITERATIONS) -> float:
     """Lowest eigenvalue / top of a positive definite matrix: inverse iteration
-    (x <- K^-1 x) with the factorisation at hand, stopped when the Rayleigh
-    quotient settles to LOWEST_RTOL (band LU: compiled, :func:`_band_inverse_iteration`)."""
-    x = 1.0 + 0.5 * np.sin(1.0 + 7.0 * np.arange(n))
-    if isinstance(lu, _BandLU):
-        mu, finite = _band_inverse_iteration(lu.AB, lu.kl, lu.piv, x, iterations, LOWEST_RTOL)
-        if not finite:
-            raise Singular("non-finite solution")
-        return mu / top
+    (x <- K^-1 x) with the factorisation at hand (SuperLU), stopped when the Rayleigh
+    quotient settles to LOWEST_RTOL."""
+    x = _start(n)
     mu = np.inf
     for _ in range(iterations):
         x /= np.linalg.norm(x)
@@ -171,6 +196,8 @@ def stability(pattern, data):
     factorisations plus a few solves when the matrix is positive definite."""
     if pattern.n == 0:
         return 0, 0, None
+    if pattern.band:
+        return _stability_band(pattern, data)
     top = _top(pattern, data)
     if top == 0.0:
         return 0, pattern.n, 0.0
@@ -181,3 +208,18 @@ def stability(pattern, data):
     if below_zero_band == 0:
         return int(neg), int(zero), _lowest_by_inverse_iteration(factor(pattern, data), pattern.n, top)
     return int(neg), int(zero), _lowest_by_bisection(count, top)
+
+
+def _stability_band(pattern, data):
+    """:func:`stability` on band storage (:func:`_band_stability`; bisection in Python)."""
+    top, neg, zero, below, k, mu, finite = _band_stability(
+        data, pattern.kl, _start(pattern.n), INVERSE_ITERATIONS, LOWEST_RTOL)
+    if top == 0.0:
+        return 0, pattern.n, 0.0
+    if below != 0:
+        return int(neg), int(zero), _lowest_by_bisection(counter(pattern, data), top)
+    if k:
+        raise Singular(f"zero pivot in column {k - 1}")
+    if not finite:
+        raise Singular("non-finite solution")
+    return int(neg), int(zero), mu / top

@@ -294,20 +294,21 @@ def test_reduced_samples_are_the_full_states_row_by_row():
 
 @pytest.mark.parametrize("seed", range(3))
 def test_band_inverse_iteration_is_the_python_loop(seed):
-    """The compiled inverse iteration of a band LU takes the Python loop's steps (the
-    same LU behind a plain ``solve``) and finds the lowest eigenvalue of an SPD band
-    matrix to LOWEST_RTOL of numpy's eigvalsh."""
+    """The compiled band stability check (``linear._band_stability``) takes the Python
+    inverse iteration's steps (the same band LU behind its ``solve``), finds the lowest
+    eigenvalue of an SPD band matrix to LOWEST_RTOL of numpy's eigvalsh, its largest
+    magnitude by power iteration as a lower bound within 1 %, and no negative or zero
+    eigenvalue."""
     from ancf.solvers import linear
     A = _random_band(40, 3, seed, symmetric=True)
     lam = np.linalg.eigvalsh(A)
     A = A + (1e-3 - lam[0]) * np.eye(40)  # SPD, lowest eigenvalue 1e-3
-    lu = linear._BandLU(_band_of(A, 3), 3)
-
-    class Plain:  # the band LU behind a solve: the Python path
-        solve = staticmethod(lu.solve)
-
-    top = float(np.abs(np.linalg.eigvalsh(A)).max())
-    fast = linear._lowest_by_inverse_iteration(lu, 40, top)
-    slow = linear._lowest_by_inverse_iteration(Plain(), 40, top)
-    assert fast == slow
-    assert fast == pytest.approx(1e-3 / top, rel=linear.LOWEST_RTOL)
+    data = _band_of(A, 3)
+    top, neg, zero, below, k, mu, finite = linear._band_stability(
+        data, 3, linear._start(40), linear.INVERSE_ITERATIONS, linear.LOWEST_RTOL)
+    assert (neg, zero, below, k, finite) == (0, 0, 0, 0, True)
+    exact = float(np.abs(np.linalg.eigvalsh(A)).max())
+    assert 0.99 * exact <= top <= exact * (1.0 + 1e-12)
+    slow = linear._lowest_by_inverse_iteration(linear._BandLU(data, 3), 40, top)
+    assert mu / top == slow
+    assert mu / top == pytest.approx(1e-3 / top, rel=linear.LOWEST_RTOL)
