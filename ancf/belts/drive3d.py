@@ -134,6 +134,20 @@ class Belt3DDrive(PulleyDrive):
         self.z = self._friction_state()
         self.h = np.zeros(1)
 
+    def align(self, axes) -> None:
+        """Turn the pulley axes to ``axes`` (np, 3), each about its pulley's mid-face point:
+        the centres the kernels take are raised to z = w / 2 (on an aligned axis a shift
+        along it, which the contact does not see), the axes normalised."""
+        axes = np.asarray(axes, dtype=float)
+        norms = np.linalg.norm(axes, axis=-1) if axes.shape == self.axes.shape else 0.0
+        if not np.all(np.isfinite(norms) & (norms > 0)):
+            raise ValueError(f"axes: {axes.shape} array; allowed: {self.axes.shape}, finite, "
+                             "no row zero")
+        centres = self.rig.centres.copy()
+        centres[:, 2] = 0.5 * self.spec.width
+        self.rig = replace(self.rig, centres=centres)
+        self.axes = axes / norms[:, None]
+
     def _friction_state(self):
         """The friction state (2, nel, nq, np, 2) m of a law with a state
         (:mod:`ancf.belts.contact3d_state`; not with tensioner arms: ValueError), else None."""

@@ -35,7 +35,7 @@ from ancf.belts.arm2d import BETA0, COORD, PULLEY
 from ancf.belts.contact2d import contact_forces_moving
 from ancf.belts.drive_data import ROLES, element_modulus, time_law
 from ancf.belts.drive_file import load
-from ancf.belts import post3d
+from ancf.belts import post3d, tracking3d
 from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, simulate
 from ancf.belts.path import PulleyPath
@@ -188,6 +188,9 @@ def _results(desc, drive, res) -> dict:
            "arms": _arms(drive, res, window)}
     end = _end3d if desc.belt["element"] == "plate36" else _end2d
     out.update(end(desc, drive, res, window))
+    if desc.belt["element"] == "plate36":
+        for pulley, more in zip(out["pulleys"], tracking3d.histories(drive, res)):
+            pulley.update(more)
     return out
 
 
@@ -201,7 +204,7 @@ def _ale(drive, t_out, opt, x0, progress, mean_from):
 
 def run(p: dict) -> SceneResult:
     desc = load(p["file"], _items(p))
-    drive, r = build(desc), desc.run
+    drive, r = tracking3d.align(build(desc), desc), desc.run
     x0, pre = settle(drive) if r["start"] == "settled" else (None, None)
     opt = BeltOptions(dt=r["dt"], rho_inf=r["rho_inf"], newton_tol=r["newton_tol"],
                       refresh_ratio=r["refresh_ratio"], newton_accept=r["newton_accept"],
@@ -398,7 +401,14 @@ RESULTS = {
                            "radius along the belt's running direction, so above 1 it turns "
                            "against its belt and below 0 it runs ahead of the driver"),
         "penetration_max_m": field(NUM, "the belt's largest penetration into it at t_end "
-                                        "(<= 0: no contact over its wrap), m")}),
+                                        "(<= 0: no contact over its wrap), m"),
+        "lateral_position_m": field("array", "the plate belt's mid-width position along its "
+                                    "axis from its mid-face at every sample (mean over the "
+                                    "contact points, ancf.belts.tracking3d; null off "
+                                    "contact), m", required=False, items=NUM),
+        "axial_force_N": field("array", "the plate belt's contact force from it along its "
+                               "axis at every sample (summed over the contact points), N",
+                               required=False, items=NUM)}),
     "arms": field("array", "per tensioner, in belt order (null when the run stopped)",
                   items="object", nullable=True, keys={
         "name": field(STR, "the tensioner pulley's name"),

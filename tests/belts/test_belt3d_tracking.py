@@ -1,0 +1,143 @@
+"""Misaligned pulleys and belt tracking on the plate belt (issue 36 item 4):
+``axis_tilt_deg`` / ``axis_roll_deg`` (ancf.belts.tracking3d), the per-pulley
+``lateral_position_m`` and ``axial_force_N`` of the belt-drive scene.
+
+The runs: examples/three_pulleys_3d.toml coarsened (20 plates, 5 x 5 contact points), the
+driver ramped to 20 rad/s (v = 1 m/s) in 20 ms, laid on its path (no frictionless settling
+on the turned pulley), 0.12 s; drift speeds are least-squares slopes over 0.04-0.12 s (past
+the laid start's transient; the belt walks 1.2 mm of its 40 mm width at 1 deg).  The
+tracking rule is checked where it acts, at the entry (tracking3d's Eq. 2): the belt's
+mid-line point nearest the entering tangent point T walks along p at -v e . p, e the
+entering belt's direction measured 12 mm upstream; e . p starts at sin(tilt) (the laid
+span runs along d: the classic v tan(tilt)) and falls as the span turns, so the belt's
+mean position over the wrap walks slower than v tan(tilt) (0.63 of it here)."""
+import json
+
+import numpy as np
+import pytest
+
+from ancf.belts import post3d
+from ancf.belts.drive_file import load
+from ancf.cli import main
+from ancf.common.params import InputError
+from ancf.common.paths import REPO
+from ancf.scenes import SCENES
+from ancf.study.schemas import schema, validate
+
+EXAMPLES = REPO / "examples"
+THREE3D, THREE2D = EXAMPLES / "three_pulleys_3d.toml", EXAMPLES / "three_pulleys.toml"
+OMEGA, WINDOW = 20.0, (0.04, 0.12)  # rad/s; s
+
+
+def _run(tilt: float) -> tuple:
+    """(out, v m/s, the drift speeds (np,) m/s of lateral_position_m, the scene's result)
+    of the coarse run, the driven pulley tilted by ``tilt`` deg."""
+    sets = ["pulleys.driver.t0=0", "pulleys.driver.t1=0.02", "pulleys.driven.t0=0",
+            "pulleys.driven.t1=0.02", f"pulleys.driver.omega_final={OMEGA}",
+            "pulleys.driven.load_torque=0.05", f"pulleys.driven.axis_tilt_deg={tilt}",
+            "belt.n_elements=20", "contact.gauss_points=25", "run.start=laid"]
+    out, res = SCENES["belt-drive"].execute({
+        "file": str(THREE3D), "run.t_end": str(WINDOW[1]), "run.steady_window": "0.005",
+        "run.output_dt": "0.0025", "set": "; ".join(sets)})
+    out = json.loads(json.dumps(out))
+    t = np.array(out["results"]["times"])
+    sel = t >= WINDOW[0] - 1e-12
+    rates = [np.polyfit(t[sel], np.array(p["lateral_position_m"], float)[sel], 1)[0]
+             for p in out["results"]["pulleys"]]
+    v = OMEGA * res.extra["drive"].radii[0]
+    return out, v, np.array(rates), res
+
+
+@pytest.fixture(scope="module")
+def runs() -> dict:
+    return {tilt: _run(tilt) for tilt in (0.0, 0.5, 1.0, -1.0)}
+
+
+def test_aligned_drive_does_not_walk(runs):
+    """Every pulley's drift below 1e-6 m per belt revolution (P / v); the output is valid
+    JSON of the scene's schema.  A tilted pulley's drift is thousands of times that."""
+    out, v, rates, _ = runs[0.0]
+    assert out["converged"] and validate(out, schema("belt-drive")) == []
+    period = load(THREE3D).path.length / v
+    assert np.all(np.abs(rates) * period < 1e-6), rates * period
+    assert abs(runs[0.5][2][2]) * period > 1e3 * 1e-6
+
+
+def test_tilted_pulley_walks_by_the_tracking_rule(runs):
+    """Eq. 2 of ancf.belts.tracking3d: a positive tilt walks the belt toward -p, and no
+    faster than v tan(tilt) (the rate while the entering span is straight; its turning only
+    slows the walk); the rate is linear in tan(tilt) and odd in the tilt, within 5 %."""
+    rate = {tilt: runs[tilt][2][2] for tilt in (0.5, 1.0, -1.0)}
+    v = runs[1.0][1]
+    for tilt in (0.5, 1.0):
+        bound = v * np.tan(np.radians(tilt))
+        assert -bound < rate[tilt] < -0.3 * bound, (tilt, rate[tilt], bound)
+    assert rate[0.5] / rate[1.0] == pytest.approx(np.tan(np.radians(0.5))
+                                                  / np.tan(np.radians(1.0)), rel=0.05)
+    assert rate[-1.0] == pytest.approx(-rate[1.0], rel=0.05)
+
+
+def _entry(res, k: int = 2) -> tuple:
+    """(s_E, e . p) at every sample on pulley k: the lateral position (r - f) . p of the
+    belt's mid-line point nearest the entering tangent point T, m, and the entering belt's
+    unit direction e there (the chord from 12 mm upstream) along the axis p."""
+    drive, desc, march = res.extra["drive"], res.extra["description"], res.extra["result"]
+    T, w, p = desc.path.spans[k - 1].end, desc.belt["b"], drive.axes[k]
+    f = np.append(desc.pulleys[k].centre, 0.5 * w)
+    s, ep = [], []
+    for x, v in zip(march.q, march.v):
+        r = post3d.line_sample(drive, x, v, y=0.5 * w, npts=8)["r"]  # 3.1 mm apart
+        j = int(np.argmin(np.linalg.norm(r[:, :2] - T, axis=1)))
+        e = r[j] - r[j - 4]
+        s.append((r[j] - f) @ p)
+        ep.append(e @ p / np.linalg.norm(e))
+    return np.array(s), np.array(ep)
+
+
+@pytest.mark.parametrize("tilt", [0.5, 1.0])
+def test_entry_walks_by_the_tracking_rule(runs, tilt):
+    """Eq. 2 at the entry: the entry point's drift speed is -v e . p averaged over the
+    window within 10 % (seen 0.92); e . p starts at sin(tilt) to 1e-4 (the laid span along d); the
+    classic -v tan(tilt), which holds while the span is straight, is not the window's."""
+    out, v, _, res = runs[tilt]
+    s, ep = _entry(res)
+    t = np.array(out["results"]["times"])
+    sel = t >= WINDOW[0] - 1e-12
+    speed = v * np.array(out["results"]["pulleys"][0]["omega"]) / OMEGA
+    rule = np.mean(-speed[sel] * ep[sel])
+    rate = np.polyfit(t[sel], s[sel], 1)[0]
+    assert rate == pytest.approx(rule, rel=0.10)
+    classic = -np.mean(speed[sel]) * np.tan(np.radians(tilt))
+    assert rate != pytest.approx(classic, rel=0.10)
+    assert ep[0] == pytest.approx(np.sin(np.radians(tilt)), rel=1e-4)
+
+
+def test_axial_force_is_reported_per_pulley(runs):
+    """The aligned belt's axial contact force on each pulley vanishes against the tilted
+    one's (the friction holding the belt on its walk)."""
+    aligned = [np.abs(p["axial_force_N"]).max() for p in runs[0.0][0]["results"]["pulleys"]]
+    tilted = np.abs(runs[1.0][0]["results"]["pulleys"][2]["axial_force_N"]).max()
+    assert max(aligned) < 1e-6 * tilted
+
+
+@pytest.mark.parametrize("path, item, words", [
+    (THREE3D, "pulleys.driven.axis_tilt_deg=10.5", "axis_tilt_deg = 10.5 is out of range; "
+     "allowed: a number in [-10, 10]"),
+    (THREE3D, "pulleys.idler.axis_roll_deg=-12", "axis_roll_deg = -12.0 is out of range; "
+     "allowed: a number in [-10, 10]"),
+    (THREE2D, "pulleys.0.axis_tilt_deg=1", "axis_tilt_deg = 1.0 is out of range for "
+     "belt.element = 'dufva2d'; allowed: 0"),
+])
+def test_bad_alignment_is_one_line(path, item, words):
+    with pytest.raises(InputError) as err:
+        load(path, [item])
+    assert words in str(err.value) and "\n" not in str(err.value)
+
+
+def test_cli_refuses_a_2d_tilt_with_exit_2(capsys):
+    """``ancf run belt-drive`` on the 2D belt with a roll: one ``error:`` line, exit 2."""
+    assert main(["run", "belt-drive", "--file", str(THREE2D), "--set",
+                 "pulleys.0.axis_roll_deg=0.5"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("error: "), err
+    assert "pulleys.0.axis_roll_deg" in err
