@@ -86,13 +86,35 @@ def lean_cache_loads() -> None:
         return
 
     def load_overload(self, sig, target_context):
-        rtsys.initialize(target_context)
-        with self._guard_against_spurious_io_errors():
-            return self._load_overload(sig, target_context)
+        with _llvm_lock_unannounced():
+            rtsys.initialize(target_context)
+            with self._guard_against_spurious_io_errors():
+                return self._load_overload(sig, target_context)
     Cache.load_overload = load_overload
     _environments_unimported()
     _extensions_at_compile()
     _runtime_from_cache()
+
+
+@contextmanager
+def _llvm_lock_unannounced():
+    """Within: llvmlite's calls take its lock without numba's ``numba:llvm_lock`` events.
+    A cache load makes about 2300 such calls (reading the symbols of each kernel's
+    module), each announced twice to numba's event system (3 us of 3.7 us a call, about
+    9 ms CPU per run); the events feed only compile-time statistics and a chrome trace,
+    which keeps them (``NUMBA_CHROME_TRACE``)."""
+    from llvmlite.binding import ffi
+    lock = getattr(ffi.lib, "_lock", None)
+    callbacks = getattr(lock, "_cblist", None)
+    if not isinstance(callbacks, list) or os.environ.get("NUMBA_CHROME_TRACE"):
+        yield
+        return
+    saved = callbacks[:]
+    callbacks.clear()
+    try:
+        yield
+    finally:
+        callbacks[:0] = saved
 
 
 def _environments_unimported() -> None:

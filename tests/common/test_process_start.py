@@ -37,8 +37,9 @@ INLINED = "numba.np.arrayobj"
 def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
     """In a fresh process, call the kernel on input of each of ``dtypes`` in turn: for each,
     its value, cache hits and misses so far, and whether numba's compiler tables are loaded,
-    the inlined module :data:`INLINED` is imported, numba's extensions were scanned and
-    numba's runtime library was loaded as machine code (not compiled in the process)."""
+    the inlined module :data:`INLINED` is imported, numba's extensions were scanned,
+    numba's runtime library was loaded as machine code (not compiled in the process) and
+    numba announced LLVM lock events so far."""
     code = textwrap.dedent(f"""
         import json, sys
         import numpy as np
@@ -47,8 +48,10 @@ def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
         if {lean}:
             lean_cache_loads()
         from kmod import kernel
-        from numba.core import entrypoints
+        from numba.core import entrypoints, event
         from numba.core.runtime import rtsys
+        llvm = event.RecordingListener()
+        event.register("numba:llvm_lock", llvm)
         out = {{}}
         for dtype in {dtypes!r}:
             value = kernel(np.array([5.0, -2.0, 7.0, 4.0, 1.0], dtype=dtype))
@@ -56,7 +59,8 @@ def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
                           sum(kernel.stats.cache_misses.values()),
                           {COMPILER_ONLY!r} in sys.modules, {INLINED!r} in sys.modules,
                           entrypoints._already_initialized,
-                          getattr(rtsys.library, "_compiled_object", 0) is None]
+                          getattr(rtsys.library, "_compiled_object", 0) is None,
+                          len(llvm.buffer) > 0]
         print(json.dumps(out))
     """)
     env = dict(os.environ, NUMBA_CACHE_DIR=str(folder / "cache"))
@@ -73,18 +77,19 @@ def _expected(values) -> float:
 
 def test_lean_load_reuses_the_cache_and_a_miss_compiles(tmp_path):
     """Rows (value, cache hits so far, misses so far, compiler tables loaded, inlined
-    module imported, extensions scanned, runtime loaded from the cache)."""
+    module imported, extensions scanned, runtime loaded from the cache, LLVM lock events
+    announced)."""
     (tmp_path / "kmod.py").write_text(KERNEL)
     want = _expected([5.0, -2.0, 7.0, 4.0, 1.0])
     first = _call(tmp_path, lean=False)  # compiles and fills the cache
-    assert first == {"float64": [want, 0, 1, True, True, True, False]}
+    assert first == {"float64": [want, 0, 1, True, True, True, False, True]}
     usual = _call(tmp_path, lean=False)  # the control: numba's own load readies its compiler
-    assert usual == {"float64": [want, 1, 0, True, True, True, False]}
+    assert usual == {"float64": [want, 1, 0, True, True, True, False, True]}
     lean = _call(tmp_path, lean=True, dtypes=("float64", "int64"))
-    assert lean["float64"] == [want, 1, 0, False, False, False, False]  # runtime compiled
-    assert lean["int64"] == [want, 1, 1, True, True, True, False]  # a miss: compiled
+    assert lean["float64"] == [want, 1, 0, False, False, False, False, False]  # NRT compiled
+    assert lean["int64"] == [want, 1, 1, True, True, True, False, True]  # a miss: compiled
     again = _call(tmp_path, lean=True)  # the runtime's machine code from the last process
-    assert again == {"float64": [want, 1, 0, False, False, False, True]}
+    assert again == {"float64": [want, 1, 0, False, False, False, True, False]}
     assert _expected([5.0, -2.0, 7.0, 4.0, 2.0]) != want  # the check sees a changed input
 
 
