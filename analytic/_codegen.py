@@ -1,9 +1,16 @@
 """Shared pieces of the SymPy code generators (``shape_functions``, ``dufva_belt``,
-``plate_thin``): numba functions of an expression with its exact derivatives, the
-generated module's header, and the ``--write`` command line."""
+``plate_thin``, ``belt3d``): numba functions of an expression with its exact derivatives,
+the generated module's header, its stamp, and the ``--write`` command line.
+
+Stamp: the last line of a generated module is ``STAMP_PREFIX`` + the SHA-256 of the
+generator's source files (the generator module and this one), the SymPy version and the
+module's text without that line.  A hand edit of the generated text, or a change of a
+generator or of SymPy without regeneration, makes ``stamp_ok`` false in milliseconds,
+where regenerating takes up to a minute."""
 from __future__ import annotations
 
 import argparse
+import hashlib
 from pathlib import Path
 
 import sympy as sp
@@ -52,6 +59,35 @@ def numba_header(title: str, module: str) -> list:
             f'in ``analytic/{module}.py``. Do not edit by hand."""', "",
             "import math", "",
             "from numba import njit", "", ""]
+
+
+STAMP_PREFIX = "# generator stamp (sha256 of generator sources, SymPy version, text): "
+
+
+def sources(module_file: str) -> tuple:
+    """The files a generator's output depends on: its module and this one."""
+    return Path(module_file).resolve(), Path(__file__).resolve()
+
+
+def _digest(text: str, source_files) -> str:
+    h = hashlib.sha256()
+    for f in source_files:
+        h.update(Path(f).name.encode() + b"\0" + Path(f).read_bytes() + b"\0")
+    h.update(sp.__version__.encode() + b"\0" + text.encode())
+    return h.hexdigest()
+
+
+def stamped(text: str, source_files) -> str:
+    """``text`` (ending in a newline) with its stamp line appended."""
+    return text + STAMP_PREFIX + _digest(text, source_files) + "\n"
+
+
+def stamp_ok(target: Path, source_files) -> bool:
+    """Whether ``target``'s last line is the stamp of the rest of it and of the sources."""
+    text = Path(target).read_text()
+    body, _, last = text.rstrip("\n").rpartition("\n")
+    return (last.startswith(STAMP_PREFIX) and text == body + "\n" + last + "\n"
+            and last == (STAMP_PREFIX + _digest(body + "\n", source_files)))
 
 
 def main(generate, target: Path, description: str, argv=None) -> int:

@@ -41,7 +41,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from analytic._codegen import emit_with_derivatives, main, numba_header
+from analytic._codegen import emit_with_derivatives, main, numba_header, sources, stamped
 
 # kinematics of one section direction d = y or z: (a, c, p, p_x, s, s_x) -> (r_s, r_s,x)
 _A = sp.symbols("a0:3", real=True)
@@ -139,10 +139,11 @@ def generate() -> str:
     node = "s^K = -(r_x.r_d)/(|r_x| |r_d|) of (rx0, rx1, rx2, rd0, rd1, rd2)"
     lines += emit_with_derivatives("shear_sine", node, nodal_shear_sine(), NODAL,
                                    [str(v) for v in NODAL])
-    return "\n".join(lines).rstrip() + "\n"
+    return stamped("\n".join(lines).rstrip() + "\n", SOURCES)
 
 
 TARGET = Path(__file__).resolve().parent.parent / "ancf" / "elements" / "_belt3d_generated.py"
+SOURCES = sources(__file__)  # what the generated text depends on (its stamp)
 
 
 if __name__ == "__main__":

@@ -43,7 +43,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from analytic._codegen import emit, emit_with_derivatives, main, numba_header
+from analytic._codegen import emit, emit_with_derivatives, main, numba_header, sources, stamped
 
 a0, a1, c0, c1, s, sx, ey = POINT = sp.symbols("a0 a1 c0 c1 s sx ey", real=True)
 K = sp.symbols("k0:6", real=True)
@@ -112,10 +112,11 @@ def generate() -> str:
         lines += emit(f"{name}_grad", doc + "; gradient into grad (7,)", m, POINT, pargs[:-1], 1)
         lines += emit(f"{name}_hess", doc + "; gradient into grad (7,), Hessian into hess (7, 7)",
                       m, POINT, pargs[:-1], 2, f"{name}_grad")
-    return "\n".join(lines).rstrip() + "\n"
+    return stamped("\n".join(lines).rstrip() + "\n", SOURCES)
 
 
 TARGET = Path(__file__).resolve().parent.parent / "ancf" / "elements" / "_dufva_generated.py"
+SOURCES = sources(__file__)  # what the generated text depends on (its stamp)
 
 
 if __name__ == "__main__":

@@ -36,7 +36,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from analytic._codegen import emit_with_derivatives, main, numba_header
+from analytic._codegen import emit_with_derivatives, main, numba_header, sources, stamped
 
 RX = sp.symbols("rx0:3", real=True)
 RY = sp.symbols("ry0:3", real=True)
@@ -94,10 +94,11 @@ def generate() -> str:
     lines += emit_with_derivatives("membrane", mdoc, wm, MEMBRANE, margs)
     bdoc = "w_b (J/m^2) at (r_x, r_y, r_xx, r_xy, r_yy) with coefficients k (3,)"
     lines += emit_with_derivatives("bending", bdoc, wb, POINT, bargs)
-    return "\n".join(lines).rstrip() + "\n"
+    return stamped("\n".join(lines).rstrip() + "\n", SOURCES)
 
 
 TARGET = Path(__file__).resolve().parent.parent / "ancf" / "elements" / "_plate_generated.py"
+SOURCES = sources(__file__)  # what the generated text depends on (its stamp)
 
 
 if __name__ == "__main__":

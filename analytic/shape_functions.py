@@ -26,7 +26,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from analytic._codegen import main
+from analytic._codegen import main, sources, stamped
 
 x, y, z = sp.symbols("x y z", real=True)
 l, a, b = sp.symbols("l a b", positive=True)  # element length; plate sides a (x), b (y)
@@ -172,10 +172,11 @@ def generate() -> str:
              "", ""]
     for fam in FAMILIES.values():
         lines += _emit_family(fam) + [""]
-    return "\n".join(lines).rstrip() + "\n"
+    return stamped("\n".join(lines).rstrip() + "\n", SOURCES)
 
 
 TARGET = Path(__file__).resolve().parent.parent / "ancf" / "elements" / "_generated.py"
+SOURCES = sources(__file__)  # what the generated text depends on (its stamp)
 
 
 if __name__ == "__main__":

@@ -3458,3 +3458,4 @@ def shear_sine_hess(rx0, rx1, rx2, rd0, rd1, rd2, grad, hess):
     hess[4, 5] = hess[5, 4] = x49*(-x19*x44 + x42)
     hess[5, 5] = x49*(-x4*(3*x48 - 1) + x46)
     return value
+# generator stamp (sha256 of generator sources, SymPy version, text): 31b688348be274abdfe8f3988f4647b581b7c4fa0674a569a069ca24ea1157fd

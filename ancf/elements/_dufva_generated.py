@@ -383,3 +383,4 @@ def bending_strain_hess(a0, a1, c0, c1, s, sx, ey, grad, hess):
     hess[5, 6] = hess[6, 5] = 0
     hess[6, 6] = 0
     return value
+# generator stamp (sha256 of generator sources, SymPy version, text): a3e4d373b51e8e6345a31ac748337bc5d689fb1c03c1ccd9d14d27285cba9182

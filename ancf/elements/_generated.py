@@ -187,3 +187,4 @@ def plate36_mass(a, b):
         [-137/12600*a*b**2, -1/600*a**2*b**2, -1/420*a*b**3, -29/6300*a*b**2, (1/900)*a**2*b**2, -1/840*a*b**3, -199/25200*a*b**2, (1/600)*a**2*b**2, (1/630)*a*b**3, -461/25200*a*b**2, -1/400*a**2*b**2, (1/315)*a*b**3]])
 
 PLATE36_MASS_ARGS = ('a', 'b')
+# generator stamp (sha256 of generator sources, SymPy version, text): a4cf77acdac1195ccd87bc05908687c101653062e2a1d008af675675bc50768b

@@ -806,3 +806,4 @@ def bending_hess(rx0, rx1, rx2, ry0, ry1, ry2, rxx0, rxx1, rxx2, rxy0, rxy1, rxy
     hess[13, 14] = hess[14, 13] = -x25*x491
     hess[14, 14] = x39*x490
     return value
+# generator stamp (sha256 of generator sources, SymPy version, text): 7fa9cbd65a7664982f10ccea7a37997a10bf49436241e1f280e7438d7618e611

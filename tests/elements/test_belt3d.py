@@ -25,6 +25,7 @@ from ancf.elements.belt3d import DufvaBelt3D
 from ancf.core.mesh import BeamMesh
 from ancf.core.quadrature import RectangularSection, gauss01
 from ancf.solvers.static import NewtonOptions, solve_static
+from tests.analytic.test_codegen import REGENERATE
 
 MODEL1, SECTION1 = planar.MODEL1, planar.SECTION1  # L = 2 m, b = h = 0.1 m, E = 2.07e11 Pa
 FLAT = RectangularSection(0.05, 0.1)  # b (z) != h (y): tells the two planes apart
@@ -68,6 +69,7 @@ def _rotation(axis, angle):
 
 # ------------------------------------------------------------------ generated code
 @pytest.mark.slow
+@REGENERATE  # the stamp test in tests/analytic/test_codegen.py runs always
 def test_generated_module_up_to_date():
     assert belt3d.generate() == belt3d.TARGET.read_text(), (
         "ancf/elements/_belt3d_generated.py is stale: run `python -m analytic.belt3d --write`")

@@ -30,6 +30,7 @@ from ancf.core.forces import EndMoment
 from ancf.core.mesh import BeamMesh
 from ancf.core.quadrature import gauss01
 from ancf.solvers.static import NewtonOptions, solve_static
+from tests.analytic.test_codegen import REGENERATE
 
 
 def _tip_under(n, F, n_steps=4, **kw):
@@ -46,6 +47,7 @@ def _tip_under(n, F, n_steps=4, **kw):
 
 # ------------------------------------------------------------------ generated code
 @pytest.mark.slow
+@REGENERATE  # the stamp test in tests/analytic/test_codegen.py runs always
 def test_generated_module_up_to_date():
     """Also re-proves (SymPy) that the invariant density equals Eqs 3.4, 3.10, 3.18, 3.19."""
     assert dufva_belt.generate() == dufva_belt.TARGET.read_text(), (

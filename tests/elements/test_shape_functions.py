@@ -21,6 +21,7 @@ from ancf.core.assembly import Assembly, ElementGroup
 from ancf.elements import _generated as gen
 from ancf.core.mesh import BeamMesh
 from ancf.core.quadrature import RectangularSection
+from tests.analytic.test_codegen import REGENERATE
 
 E_MOD, NU, RHO = 2.07e11, 0.3, 7850.0
 SECTION = RectangularSection(0.1, 0.2)  # b (z) = 0.1 m, h (y) = 0.2 m
@@ -227,6 +228,7 @@ def test_rigid_body_motion_has_no_strain_energy(cls, kw):
 
 # --------------------------------------------------------------- generated module
 @pytest.mark.slow
+@REGENERATE  # the stamp test in tests/analytic/test_codegen.py runs always
 def test_generated_module_up_to_date():
     committed = sf.TARGET.read_text()
     assert sf.generate() == committed, (

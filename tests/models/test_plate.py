@@ -31,6 +31,7 @@ from ancf.models import plate as plate_models
 from ancf.core.assembly import Assembly, ElementGroup
 from ancf.elements.plate36 import Plate36
 from ancf.models.plate_mesh import SLOTS, PlateMesh
+from tests.analytic.test_codegen import REGENERATE
 
 STEEL = dict(h=0.01, E=2.1e11, nu=0.3)
 NAVIER_TOL = 0.01  # relative centre-deflection error of the finest mesh
@@ -55,6 +56,7 @@ def _perturbed(m, scale, seed=0):
 
 # ------------------------------------------------------------------ generated code
 @pytest.mark.slow
+@REGENERATE  # the stamp test in tests/analytic/test_codegen.py runs always
 def test_generated_plate_code_is_up_to_date():
     assert plate_thin.generate() == plate_thin.TARGET.read_text(), (
         "ancf/elements/_plate_generated.py is stale: run `python -m analytic.plate_thin --write`")
