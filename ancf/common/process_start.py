@@ -23,12 +23,16 @@ and the interpreter's shutdown.
   (numba.np.arrayobj, arraymath, npyimpl, linalg: about 40 ms CPU), though only object-mode
   code ever reads those globals (``numba.core.pylowering``), and each first call scans every
   installed distribution for numba extensions (``entrypoints.init_all``, 10 ms), which only
-  compiling needs (numba's compiler refresh runs that scan too).
+  compiling needs (numba's compiler refresh runs that scan too).  The lean loads also keep
+  numba's runtime library as machine code in the cache (:func:`_runtime_from_cache`), leave
+  a library's bitcode unparsed until a compilation links it (:func:`_bitcode_when_linked`)
+  and take llvmlite's lock without numba's events (:func:`_llvm_lock_unannounced`).
 """
 from __future__ import annotations
 
 import os
 import pickle
+import struct
 import sys
 from contextlib import contextmanager
 
@@ -94,6 +98,7 @@ def lean_cache_loads() -> None:
     _environments_unimported()
     _extensions_at_compile()
     _runtime_from_cache()
+    _bitcode_when_linked()
 
 
 @contextmanager
@@ -115,6 +120,60 @@ def _llvm_lock_unannounced():
         yield
     finally:
         callbacks[:0] = saved
+
+
+def _bitcode_when_linked() -> None:
+    """A cached library holds its machine code and its LLVM bitcode, which numba parses at
+    load (20-25 ms CPU a run) for two uses: the names it defines, and linking it into code
+    compiled later.  The names are read from the machine code's ELF symbol table instead
+    (the same set, checked on every cached library of the suite); the bitcode is parsed
+    when a compilation first links the library.  Machine code that is not a 64-bit
+    little-endian ELF object loads as numba does it."""
+    import llvmlite.binding as ll
+    from numba.core import codegen
+    library = codegen.CPUCodeLibrary
+    unserialize, linking = library._unserialize.__func__, library._get_module_for_linking
+
+    def _unserialize(cls, cg, state):
+        name, kind, data = state
+        names = _elf_defined(data[0]) if kind == "object" else None
+        if names is None:
+            return unserialize(cls, cg, state)
+        self = cg.create_library(name)
+        self.enable_object_caching()
+        self._set_compiled_object(data[0])
+        self._bitcode = data[1]
+        self._finalize_final_module()
+        cg._engine._defined_symbols |= names
+        return self
+
+    def _get_module_for_linking(self):
+        bitcode = self.__dict__.pop("_bitcode", None)
+        if bitcode is not None:
+            self._shared_module = ll.parse_bitcode(bitcode)
+        return linking(self)
+    library._unserialize = classmethod(_unserialize)
+    library._get_module_for_linking = _get_module_for_linking
+
+
+def _elf_defined(obj: bytes):
+    """Names of the functions and data an ELF64 little-endian object defines (its symbol
+    table's named symbols of type NOTYPE, OBJECT or FUNC with a section), or None."""
+    if obj[:6] != b"\x7fELF\x02\x01":
+        return None
+    shoff, = struct.unpack_from("<Q", obj, 0x28)
+    size, count = struct.unpack_from("<HH", obj, 0x3A)
+    sections = [struct.unpack_from("<IIQQQQIIQQ", obj, shoff + i * size) for i in range(count)]
+    names = set()
+    for _, kind, _, _, offset, length, link, _, _, entry in sections:
+        if kind != 2:  # SHT_SYMTAB
+            continue
+        strings = sections[link][4]
+        for k in range(offset, offset + length, entry):
+            at, info, _, section = struct.unpack_from("<IBBH", obj, k)
+            if at and section and info & 0xF <= 2:
+                names.add(obj[strings + at:obj.index(b"\0", strings + at)].decode())
+    return names
 
 
 def _environments_unimported() -> None:

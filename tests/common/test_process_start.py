@@ -14,7 +14,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 
-#: a cached kernel using an NRT array, a reduction (numba.np) and a string hash
+#: a cached kernel using an NRT array, a reduction (numba.np) and a string hash, and an
+#: uncached function calling it (compiling it links the kernel's library)
 KERNEL = '''
 import numpy as np
 from numba import njit
@@ -26,6 +27,11 @@ def kernel(a):
     for i in range(a.size):
         b[i] = a[i] * a[i]
     return float(b.sum()) + (hash("ancf") != 0)
+
+
+@njit
+def twice(a):
+    return 2.0 * kernel(a)
 '''
 
 #: a module only numba's compiler refresh imports (none of the loaded code needs it)
@@ -34,12 +40,14 @@ COMPILER_ONLY = "numba.np.random.generator_core"
 INLINED = "numba.np.arrayobj"
 
 
-def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
+def _call(folder: Path, lean: bool, dtypes=("float64",), linked: bool = False) -> dict:
     """In a fresh process, call the kernel on input of each of ``dtypes`` in turn: for each,
     its value, cache hits and misses so far, and whether numba's compiler tables are loaded,
     the inlined module :data:`INLINED` is imported, numba's extensions were scanned,
-    numba's runtime library was loaded as machine code (not compiled in the process) and
-    numba announced LLVM lock events so far."""
+    numba's runtime library was loaded as machine code (not compiled in the process),
+    numba announced LLVM lock events so far and the bitcode of the kernel's first library
+    is still unparsed; with ``linked``, ``twice``'s value on the first input type (it
+    links that library) and whether that bitcode is then still unparsed."""
     code = textwrap.dedent(f"""
         import json, sys
         import numpy as np
@@ -47,7 +55,7 @@ def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
         from ancf.common.process_start import lean_cache_loads
         if {lean}:
             lean_cache_loads()
-        from kmod import kernel
+        from kmod import kernel, twice
         from numba.core import entrypoints, event
         from numba.core.runtime import rtsys
         llvm = event.RecordingListener()
@@ -55,12 +63,16 @@ def _call(folder: Path, lean: bool, dtypes=("float64",)) -> dict:
         out = {{}}
         for dtype in {dtypes!r}:
             value = kernel(np.array([5.0, -2.0, 7.0, 4.0, 1.0], dtype=dtype))
+            first = next(iter(kernel.overloads.values())).library
             out[dtype] = [value, sum(kernel.stats.cache_hits.values()),
                           sum(kernel.stats.cache_misses.values()),
                           {COMPILER_ONLY!r} in sys.modules, {INLINED!r} in sys.modules,
                           entrypoints._already_initialized,
                           getattr(rtsys.library, "_compiled_object", 0) is None,
-                          len(llvm.buffer) > 0]
+                          len(llvm.buffer) > 0, "_bitcode" in vars(first)]
+        if {linked}:
+            out["twice"] = [twice(np.array([5.0, -2.0, 7.0, 4.0, 1.0], dtype={dtypes[0]!r})),
+                            "_bitcode" in vars(first)]
         print(json.dumps(out))
     """)
     env = dict(os.environ, NUMBA_CACHE_DIR=str(folder / "cache"))
@@ -78,18 +90,21 @@ def _expected(values) -> float:
 def test_lean_load_reuses_the_cache_and_a_miss_compiles(tmp_path):
     """Rows (value, cache hits so far, misses so far, compiler tables loaded, inlined
     module imported, extensions scanned, runtime loaded from the cache, LLVM lock events
-    announced)."""
+    announced, kernel bitcode unparsed)."""
     (tmp_path / "kmod.py").write_text(KERNEL)
     want = _expected([5.0, -2.0, 7.0, 4.0, 1.0])
     first = _call(tmp_path, lean=False)  # compiles and fills the cache
-    assert first == {"float64": [want, 0, 1, True, True, True, False, True]}
+    assert first == {"float64": [want, 0, 1, True, True, True, False, True, False]}
     usual = _call(tmp_path, lean=False)  # the control: numba's own load readies its compiler
-    assert usual == {"float64": [want, 1, 0, True, True, True, False, True]}
+    assert usual == {"float64": [want, 1, 0, True, True, True, False, True, False]}
     lean = _call(tmp_path, lean=True, dtypes=("float64", "int64"))
-    assert lean["float64"] == [want, 1, 0, False, False, False, False, False]  # NRT compiled
-    assert lean["int64"] == [want, 1, 1, True, True, True, False, True]  # a miss: compiled
-    again = _call(tmp_path, lean=True)  # the runtime's machine code from the last process
-    assert again == {"float64": [want, 1, 0, False, False, False, True, False]}
+    assert lean["float64"] == [want, 1, 0, False, False, False, False, False, True]
+    assert lean["int64"] == [want, 1, 1, True, True, True, False, True, True]  # a miss
+    # the runtime's machine code from the last process; a miss and a caller compiled after
+    again = _call(tmp_path, lean=True, dtypes=("float64", "int32"), linked=True)
+    assert again == {"float64": [want, 1, 0, False, False, False, True, False, True],
+                     "int32": [want, 1, 1, True, True, True, True, True, True],
+                     "twice": [2.0 * want, False]}  # linking parsed the kernel's bitcode
     assert _expected([5.0, -2.0, 7.0, 4.0, 2.0]) != want  # the check sees a changed input
 
 
@@ -110,3 +125,26 @@ def test_numba_imports_with_metadata_deferred_until_used():
                        timeout=120)
     assert p.returncode == 0, p.stderr
     assert p.stdout.split() == ["_LazyModule", "True", "module"]
+
+
+def test_elf_symbols_are_the_bitcode_definitions():
+    """The names numba reads from a library's bitcode (defined functions and globals) are
+    those of its machine code's ELF symbol table (numba's runtime library, compiled
+    here); anything but an ELF64 little-endian object gives None."""
+    import llvmlite.binding as ll
+    from numba.core.compiler_lock import global_compiler_lock
+    from numba.core.registry import cpu_target
+    from numba.core.runtime import nrtdynmod
+
+    from ancf.common.process_start import _elf_defined
+    with global_compiler_lock:
+        ir_mod, library = nrtdynmod.create_nrt_module(cpu_target.target_context)
+        library.enable_object_caching()
+        library.add_ir_module(ir_mod)
+        library.finalize()
+        obj, bitcode = library.serialize_using_object_code()[2]
+    mod = ll.parse_bitcode(bitcode)
+    defined = {v.name for vs in (mod.functions, mod.global_variables) for v in vs
+               if not v.is_declaration}
+    assert "NRT_incref" in defined and _elf_defined(obj) == defined
+    assert _elf_defined(obj[:4] + b"\x01" + obj[5:]) is None  # a 32-bit ELF header
