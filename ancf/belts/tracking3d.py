@@ -36,7 +36,10 @@ meeting the surface square (no walk by Eq. 2).  As the belt walks the entering s
 toward the surface's direction (e . p falls from sin a) and the walk slows: on a closed
 belt, whose other pulleys hold the span's upstream end, the belt's mean position over the
 wrap walks slower than v tan a (tests/belts/test_belt3d_tracking.py: 0.63 v tan a over
-the first 0.12 m of travel; its entry point by Eq. 2 within 10 %).
+the first 0.12 m of travel; its entry point by Eq. 2 within 10 %).  With the span's
+upstream end held, its inclination z / L (L its length) gives dz/dt = v (tan a - z / L):
+the entry settles at the offset L tan a over a few L of travel (analytic/belt_tracking.py,
+Eq. 3; the plate belt's entry point within 8 % over 0.27 to 2.1 L of travel).
 
 Per pulley, at every output sample (:func:`histories`): ``lateral_position_m``, the mean
 over the belt's contact points on it (penetration > 0, weighted by their areas) of
