@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import os
+import pickle
 import subprocess
 import sys
 import textwrap
@@ -127,22 +128,25 @@ def test_numba_imports_with_metadata_deferred_until_used():
     assert p.stdout.split() == ["_LazyModule", "True", "module"]
 
 
-def test_elf_symbols_are_the_bitcode_definitions():
+def test_elf_symbols_are_the_bitcode_definitions(tmp_path):
     """The names numba reads from a library's bitcode (defined functions and globals) are
-    those of its machine code's ELF symbol table (numba's runtime library, compiled
-    here); anything but an ELF64 little-endian object gives None."""
+    those of its machine code's ELF symbol table (numba's runtime library as a lean
+    process keeps it, compiled in a fresh process: in this one it would define the
+    runtime's symbols twice); anything but an ELF64 little-endian object gives None."""
     import llvmlite.binding as ll
-    from numba.core.compiler_lock import global_compiler_lock
-    from numba.core.registry import cpu_target
-    from numba.core.runtime import nrtdynmod
 
     from ancf.common.process_start import _elf_defined
-    with global_compiler_lock:
-        ir_mod, library = nrtdynmod.create_nrt_module(cpu_target.target_context)
-        library.enable_object_caching()
-        library.add_ir_module(ir_mod)
-        library.finalize()
-        obj, bitcode = library.serialize_using_object_code()[2]
+    code = ("from ancf.common.process_start import lean_cache_loads\n"
+            "lean_cache_loads()\n"
+            "from numba.core.registry import cpu_target\n"
+            "from numba.core.runtime import rtsys\n"
+            "rtsys.initialize(cpu_target.target_context)\n")
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path))
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
+                       env=env, timeout=120)
+    assert p.returncode == 0, p.stderr
+    (path,) = (tmp_path / "ancf_nrt").glob("*.nbo")
+    obj, bitcode = pickle.loads(path.read_bytes())[2]
     mod = ll.parse_bitcode(bitcode)
     defined = {v.name for vs in (mod.functions, mod.global_variables) for v in vs
                if not v.is_declaration}
