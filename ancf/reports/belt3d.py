@@ -15,6 +15,7 @@ import pandas as pd  # noqa: E402
 
 from analytic import bechtel  # noqa: E402
 from ancf.checks import belt3d as bc  # noqa: E402
+from ancf.checks import thread_plate as tp  # noqa: E402
 from ancf.belts.post3d import contact_sample, line_sample  # noqa: E402
 from ancf.checks.belt2d import run, run_json  # noqa: E402
 from ancf.elements.basis import plate36_x  # noqa: E402
@@ -222,8 +223,10 @@ def _checks_table(checks: list) -> tuple[list, dict]:
                         "measure": c.measure, "status": "PASS" if c.passed else "FAIL"}
                        for c in checks])
     write_csv(df, "belt3d_checks")
-    return (["## Acceptance checks\n", "Computed by `ancf/checks/belt3d.py`, each tied to a test "
-             "of `tests/checks/test_belt3d_checks.py` (data: `data/belt3d_checks.csv`).\n",
+    return (["## Acceptance checks\n", "Computed by `ancf/checks/belt3d.py` and "
+             "`ancf/checks/thread_plate.py`, each tied to a test of "
+             "`tests/checks/test_belt3d_checks.py` or `tests/checks/test_thread_plate.py` "
+             "(data: `data/belt3d_checks.csv`).\n",
              markdown_table(df, 4), ""], dict(zip(df["check"], df["status"])))
 
 
@@ -246,9 +249,26 @@ def intro(length_m: float | None) -> str:
     return INTRO.format(L0="of the run" if length_m is None else f"{length_m:.5f} m", P=P)
 
 
+def _thread_plate(checks: list) -> list:
+    """THREAD's drive as a plate belt against the planar belt (:mod:`ancf.checks.thread_plate`)."""
+    progress("belt3d: THREAD as a plate belt (bristle) and as the planar belt, 2.45 s each")
+    got = tp.rows(*tp.runs())
+    checks.append(tp.check(got))
+    df = pd.DataFrame(got)
+    write_csv(df, "belt3d_thread_plate")
+    return ["## THREAD as a plate belt\n",
+            "`examples/thread_plate.toml`: THREAD's benchmark drive with its bristle law on "
+            "`plate36`, one plate across, a membrane, against the planar belt of "
+            "`examples/thread_benchmark.toml` in the plate's strain law (Green per "
+            "stress-free length). Span forces as the force that balances the pulleys "
+            "(the planar Green force N times its stretch), means over 2.0-2.45 s "
+            "(`ancf/checks/thread_plate.py`, data: `data/belt3d_thread_plate.csv`).\n",
+            markdown_table(df, 6), ""]
+
+
 def belt3d_chapter() -> tuple[str, dict]:
     if settings().quick:
-        status = {name: QUICK_SKIPPED for name in bc.CHECK_NAMES}
+        status = {name: QUICK_SKIPPED for name in (*bc.CHECK_NAMES, tp.NAME)}
         return ("# 3D belt drive (thesis 4.6)\n\n" + intro(None) + "\nReduced configuration: the "
                 "chapter's long runs are skipped.\n", status)
     progress("belt3d: Model 2 (default, 49 and 25 contact points, 30 and 40 plates), Model 1")
@@ -260,13 +280,14 @@ def belt3d_chapter() -> tuple[str, dict]:
     text += ["## Pulley speeds\n"] + _omega_figure()
     text += report_animation("belt3d")
     text += _convergence_table()
+    text += _thread_plate(checks)
     table, status = _checks_table(checks)
     return "\n".join(text + table), status
 
 
 CHAPTER = Chapter(
     file="belt3d.md", order=80, generate=belt3d_chapter,
-    checks=("ancf.checks.belt3d",),
+    checks=("ancf.checks.belt3d", "ancf.checks.thread_plate"),
     reads=("speed_accuracy.md",),
     contents="3D belt drive of thin plates (thesis 4.6): Model 2 vs Bechtel (full and "
              "capstan), torque balance per strain measure, tension / det F / speed / "

@@ -14,6 +14,7 @@ import pandas as pd
 import pytest
 
 from ancf.checks.belt3d import CHECK_NAMES as BELT3D_ROWS
+from ancf.checks.thread_plate import NAME as THREAD_PLATE
 from ancf.checks.belt2d import GAUSS_CHECK
 from ancf.checks.belt_drives import SERPENTINE_NAMES
 from ancf.reports.belt_drives import THREAD_NAMES
@@ -195,6 +196,8 @@ AGREES = {
        for name in BELT3D_ROWS[:7]},
     **{name: (("test_belt3d_checks", "test_settled_pretension_converges_with_the_element_count"),
               QUICK_SKIPPED) for name in BELT3D_ROWS[7:]},
+    THREAD_PLATE: (("test_thread_plate", "test_plate_within_two_percent_of_the_planar_belt"),
+                   QUICK_SKIPPED),
     **{name: (("test_thread", "test_perturbed_copy_fails"), QUICK_SKIPPED)
        for name in THREAD_NAMES},
     **{name: (("test_belt_npulley", "test_serpentine_settles_to_the_steady_reference"),
