@@ -5,7 +5,9 @@ Every case: the exit code, the expected substrings, no traceback, stdout JSON th
 strict parser accepts (no NaN / Infinity), and stderr made only of one-line
 ``error:`` / ``warning:`` messages (plus the sweep's own progress log), one
 ``error:`` line for bad input.  A case's optional ``files`` ({name: text}) are written
-into ``{tmp}`` first.
+into ``{tmp}`` first.  The cases marked ``"slow": true`` (a run of 2 s or more) are
+replayed by test_fuzz_cli_slow.py, so that pytest-xdist's ``--dist loadfile`` can give
+the two halves to two workers.
 """
 import json
 from pathlib import Path
@@ -44,9 +46,13 @@ def test_fuzz_covers_every_class_and_command():
     assert len(first) >= 100
 
 
-@pytest.mark.parametrize("case", [pytest.param(c, marks=pytest.mark.slow) if c.get("slow") else c
-                                  for c in CASES], ids=_id)
+@pytest.mark.parametrize("case", [c for c in CASES if not c.get("slow")], ids=_id)
 def test_fuzz_case(case, capsys, tmp_path):
+    check_case(case, capsys, tmp_path)
+
+
+def check_case(case, capsys, tmp_path):
+    """Runs ``case`` in-process and checks its exit code, streams and JSON."""
     for name, text in case.get("files", {}).items():  # files the case needs, in {tmp}
         (tmp_path / name).write_text(text)
     argv = [a.replace("{tmp}", str(tmp_path)) for a in case["argv"]]
