@@ -20,8 +20,8 @@ The plate belt (``plate36``, laws without a state: ``friction.PARAMS``) obeys th
 balances on the fields its run reports at t_end (``belt_s_m``, ``belt_x_m``/``belt_y_m``,
 ``axial_force_N``, ``speed_m_s``, ``normal_force_N_m``, ``friction_force_N_m``, the spans'
 ``tension_N``, the pulleys' ``torque_Nm``), on the thesis's Table 4.1 drive
-(``examples/thesis_table_4_1.toml``, 1.2 s: slow tier), the stretch from the reported
-positions (|dr/ds|).
+(``examples/thesis_table_4_1.toml``) with its ramps shortened to 0.05-0.4 s and 0.6 s run
+(``SHORT3D``; slow tier), the stretch from the reported positions (|dr/ds|).
 
 The tolerances are stated with each test: about twice today's worst law (the residuals
 are the sampling of the contact's edges, the bending at the wrap's ends and what remains
@@ -264,19 +264,24 @@ def test_a_swinging_tensioner_gets_friction_from_its_centres_velocity(workdir, l
 BELT3D = EXAMPLES / "thesis_table_4_1.toml"
 VALUES3D = {"mu": 0.6, "nu_s": 2e5, "v_reg": 0.01}
 LAWS3D = list(friction.PARAMS)
-#: the plate belt's tolerances where they differ from the 2D belt's: about twice today's
-#: worst, the regularised Coulomb run's, whose state at t_end still moves (its driven
-#: pulley carries 1.969 N m of its 2.0 N m load): the wrap's 3.8 %, the spans' 4.6 %
+#: the plate belt's tolerances where they differ from the 2D belt's: about twice the
+#: worst of the full 1.2 s run (the wrap's 3.8 %, the spans' 4.6 %, regularised Coulomb)
 TOL_WRAP3D = 0.08
 TOL_SPANS3D = 0.10
+#: Table 4.1's ramps (driver to 500 rad/s, load to 2 N m) over 0.05-0.4 s instead of
+#: 0.05-1.0 s, then 0.2 s steady as in the file: half the simulated time; the balances
+#: hold as on the full run (worst law: wrap 2.2 %, normal 1.2 %, moment 1.3 %, spans
+#: 3.6 %; full run 3.8, 0.95, 1.6, 4.6 %)
+SHORT3D = "pulleys.driver.t1=0.4; pulleys.driven.t1=0.4; run.t_end=0.6"
 
 
 def _plate_run(workdir, law: str) -> dict:
-    """The reported results of the Table 4.1 plate-belt drive with ``law`` (once per module)."""
+    """The reported results of the shortened (SHORT3D) Table 4.1 plate-belt drive with
+    ``law`` (once per module)."""
     if ("plate36", law) not in _RUNS:
         scene = SCENES["belt-drive"]
         res = scene.run(scene.resolve({"file": _with_law(BELT3D, law, VALUES3D, workdir),
-                                       "set": ""}))
+                                       "set": SHORT3D}))
         assert res.converged, res.message
         drive = res.extra["drive"]
         t = float(res.extra["result"].t[-1])
@@ -311,13 +316,14 @@ def test_plate_belt_reported_fields_obey_their_balances(workdir, law):
     running counter-clockwise round both pulleys):
 
     - int_wrap f ds = T(span p - 1) - T(span p), within TOL_WRAP3D (today: creep-rate
-      <= 2.0 %, Coulomb <= 3.8 %);
+      <= 1.8 %, Coulomb <= 2.2 %);
     - the mean normal force over the wrap's middle half = mean (lambda N - rho A v^2) / R
-      there, within TOL_NORMAL (today <= 0.95 %);
+      there, within TOL_NORMAL (today <= 1.2 %);
     - the reported torque = -int_wrap f |r - o| ds, within TOL_MOMENT of the largest
-      (today <= 1.6 %);
+      (today <= 1.3 %);
     - (T(span p) - T(span p - 1)) R = the torque, within TOL_SPANS3D of the largest
-      (today: creep-rate <= 3.5 %, Coulomb <= 4.6 %)."""
+      (today: creep-rate <= 3.6 %, Coulomb <= 2.9 %).
+    Friction reported along the clockwise tangent turns the wrap's balance to -200 %."""
     results, a, wraps = _plate_wraps(workdir, law)
     T = [q["tension_N"] for q in results["spans"]]
     torques = np.array([q["torque_Nm"][-1] for q in results["pulleys"]])
