@@ -97,8 +97,9 @@ class ChronoElement:
         return g, K
 
     def mass(self) -> np.ndarray:
-        """Consistent mass matrices (nel, ndof, ndof), kg (eq. (2))."""
-        return np.array([self._mass(*s) for s in self.sizes])
+        """Consistent mass matrices (nel, ndof, ndof), kg (eq. (2)), symmetric to the bit."""
+        M = np.array([self._mass(*s) for s in self.sizes])
+        return 0.5 * (M + np.swapaxes(M, 1, 2))
 
     def _mass(self, *sizes):
         raise NotImplementedError

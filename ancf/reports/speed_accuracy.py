@@ -45,7 +45,7 @@ def pareto(df: pd.DataFrame, cost: str = "work", err: str = "error") -> pd.DataF
 
 
 def _model(row, dynamic: bool) -> str:
-    if isinstance(row.get("element"), str):
+    if isinstance(row.get("element"), str) and isinstance(row.get("integration"), str):
         s = f"{row['element']} / {row['integration']}"
     elif "gauss_points" in row:
         s = f"{int(row['gauss_points'])} contact points"
@@ -53,8 +53,10 @@ def _model(row, dynamic: bool) -> str:
         s = f"{int(row['contact_points'])} contact points per plate"
     elif "elastic_points" in row:
         s = f"{int(row['elastic_points'])} elastic points"
-    else:  # the plates
+    else:  # the plates (plate36's Gauss rule; Chrono's shells take their own)
         s = f"{int(row['ng'])} × {int(row['ng'])} Gauss points"
+        if isinstance(row.get("element"), str) and row["element"] != "plate36":
+            s = f"{row['element']} / {s}"
     if dynamic:
         integ = row.get("integrator")
         s += f" / {integ}"
