@@ -48,6 +48,8 @@ def nonfinite(results: dict) -> list[str]:
     """Names of the results holding NaN or infinity (a number or inside a list)."""
     def bad(v):
         if isinstance(v, (list, tuple)):
+            if all(type(x) is float for x in v):
+                return not all(map(math.isfinite, v))  # a plain list of floats, in C
             return any(bad(x) for x in v)
         return isinstance(v, float) and not math.isfinite(v)
     return [k for k, v in (results or {}).items() if bad(v)]
