@@ -122,38 +122,55 @@ def _llvm_lock_unannounced():
         callbacks[:0] = saved
 
 
+#: numba's own CPUCodeLibrary._unserialize (function) and _get_module_for_linking, kept
+#: once :func:`_bitcode_when_linked` replaces them
+_NUMBA_LIBRARY: list = []
+
+
+def unserialize_library(cls, cg, state):
+    """numba's ``CPUCodeLibrary._unserialize`` with the defined names read from the machine
+    code and the bitcode kept unparsed (:func:`_bitcode_when_linked`).  At module level so
+    that a library saved after :func:`lean_cache_loads` pickles it by reference."""
+    name, kind, data = state
+    names = _elf_defined(data[0]) if kind == "object" else None
+    if names is None or not _NUMBA_LIBRARY:
+        from numba.core import codegen
+        original = _NUMBA_LIBRARY[0] if _NUMBA_LIBRARY else \
+            codegen.CPUCodeLibrary._unserialize.__func__
+        return original(cls, cg, state)
+    self = cg.create_library(name)
+    self.enable_object_caching()
+    self._set_compiled_object(data[0])
+    self._bitcode = data[1]
+    self._finalize_final_module()
+    cg._engine._defined_symbols |= names
+    return self
+
+
+def module_for_linking(self):
+    """numba's ``_get_module_for_linking``, parsing a cached library's bitcode first."""
+    import llvmlite.binding as ll
+    bitcode = self.__dict__.pop("_bitcode", None)
+    if bitcode is not None:
+        self._shared_module = ll.parse_bitcode(bitcode)
+    return _NUMBA_LIBRARY[1](self)
+
+
 def _bitcode_when_linked() -> None:
     """A cached library holds its machine code and its LLVM bitcode, which numba parses at
     load (20-25 ms CPU a run) for two uses: the names it defines, and linking it into code
     compiled later.  The names are read from the machine code's ELF symbol table instead
     (the same set, checked on every cached library of the suite); the bitcode is parsed
-    when a compilation first links the library.  Machine code that is not a 64-bit
-    little-endian ELF object loads as numba does it."""
-    import llvmlite.binding as ll
+    when a compilation first links the library (:func:`unserialize_library`,
+    :func:`module_for_linking`).  Machine code that is not a 64-bit little-endian ELF
+    object loads as numba does it."""
     from numba.core import codegen
     library = codegen.CPUCodeLibrary
-    unserialize, linking = library._unserialize.__func__, library._get_module_for_linking
-
-    def _unserialize(cls, cg, state):
-        name, kind, data = state
-        names = _elf_defined(data[0]) if kind == "object" else None
-        if names is None:
-            return unserialize(cls, cg, state)
-        self = cg.create_library(name)
-        self.enable_object_caching()
-        self._set_compiled_object(data[0])
-        self._bitcode = data[1]
-        self._finalize_final_module()
-        cg._engine._defined_symbols |= names
-        return self
-
-    def _get_module_for_linking(self):
-        bitcode = self.__dict__.pop("_bitcode", None)
-        if bitcode is not None:
-            self._shared_module = ll.parse_bitcode(bitcode)
-        return linking(self)
-    library._unserialize = classmethod(_unserialize)
-    library._get_module_for_linking = _get_module_for_linking
+    if _NUMBA_LIBRARY:
+        return
+    _NUMBA_LIBRARY[:] = [library._unserialize.__func__, library._get_module_for_linking]
+    library._unserialize = classmethod(unserialize_library)
+    library._get_module_for_linking = module_for_linking
 
 
 def _elf_defined(obj: bytes):
@@ -176,24 +193,38 @@ def _elf_defined(obj: bytes):
     return names
 
 
+#: numba's own environment rebuild, kept once :func:`_environments_unimported` replaces it
+_NUMBA_REBUILD: list = []
+
+
+def rebuild_environment(modname, consts, env_name):
+    """numba's ``environment._rebuild_env`` for a kernel's environment, without importing a
+    module not imported yet (its globals ``{"__name__": modname}``).  At module level so
+    that a kernel compiled after :func:`lean_cache_loads` pickles its environment by
+    reference when numba saves it to the cache (a nested function pickled by value
+    recursed without end, PicklingError)."""
+    from numba.core import environment
+    rebuild = _NUMBA_REBUILD[0] if _NUMBA_REBUILD else environment._rebuild_env
+    if modname in sys.modules:
+        return rebuild(modname, consts, env_name)
+    env = environment.lookup_environment(env_name)
+    if env is None:
+        env = environment.Environment({"__name__": modname})
+        env.consts[:] = consts
+        env.env_name = env_name
+        environment.Environment._memo[env_name] = env
+    return env
+
+
 def _environments_unimported() -> None:
     """An unpickled kernel's environment of a module not imported yet gets the globals
-    ``{"__name__": module}`` instead of importing it: nopython code never reads them, and
-    pickling such an environment again gives the same state (module name, consts, name)."""
+    ``{"__name__": module}`` instead of importing it (:func:`rebuild_environment`):
+    nopython code never reads them, and pickling such an environment again gives the same
+    state (module name, consts, name)."""
     from numba.core import environment
-
-    def rebuild_env(modname, consts, env_name):
-        if modname in sys.modules:
-            return rebuild(modname, consts, env_name)
-        env = environment.lookup_environment(env_name)
-        if env is None:
-            env = environment.Environment({"__name__": modname})
-            env.consts[:] = consts
-            env.env_name = env_name
-            environment.Environment._memo[env_name] = env
-        return env
-    rebuild = environment._rebuild_env
-    environment._rebuild_env = rebuild_env
+    if environment._rebuild_env is not rebuild_environment:
+        _NUMBA_REBUILD[:] = [environment._rebuild_env]
+        environment._rebuild_env = rebuild_environment
 
 
 def _extensions_at_compile() -> None:

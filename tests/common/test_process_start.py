@@ -152,3 +152,30 @@ def test_elf_symbols_are_the_bitcode_definitions(tmp_path):
                if not v.is_declaration}
     assert "NRT_incref" in defined and _elf_defined(obj) == defined
     assert _elf_defined(obj[:4] + b"\x01" + obj[5:]) is None  # a 32-bit ELF header
+
+
+def test_compile_after_lean_loads_saves_to_the_cache(tmp_path):
+    """Lean loads turned on 300 times (as the fuzz tests' ``ancf.cli.main`` calls in one
+    pytest worker do),
+    then a cache miss: the kernel compiles and numba saves it (its environment pickles by
+    reference: a nested rebuild function once recursed without end, PicklingError), and a
+    fresh process loads it from the cache."""
+    (tmp_path / "kmod.py").write_text(KERNEL)
+    code = textwrap.dedent(f"""
+        import sys
+        import numpy as np
+        sys.path.insert(0, {str(tmp_path)!r})
+        from ancf.common.process_start import lean_cache_loads
+        for _ in range(300):
+            lean_cache_loads()
+        from kmod import kernel
+        print(kernel(np.array([5.0, -2.0, 7.0, 4.0, 1.0])),
+              sum(kernel.stats.cache_misses.values()))
+    """)
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"))
+    runs = [subprocess.run([sys.executable, "-W", "error::numba.NumbaWarning", "-c", code],
+                           capture_output=True, text=True, cwd=ROOT, env=env, timeout=120)
+            for _ in range(2)]
+    assert all(p.returncode == 0 for p in runs), runs[0].stderr[-2000:]
+    want = _expected([5.0, -2.0, 7.0, 4.0, 1.0])
+    assert [p.stdout.split() for p in runs] == [[str(want), "1"], [str(want), "0"]]
