@@ -41,8 +41,9 @@ def energy_history(assembly, forces, t, Q, V, masses=None) -> EnergyHistory:
     masses = masses if masses is not None else element_masses(assembly)
     kin = np.concatenate([0.5 * np.einsum("tei,eij,tej->te", V[:, g.dofmap], m, V[:, g.dofmap])
                           for g, m in zip(assembly.groups, masses)], axis=1)
-    strain = np.array([np.concatenate(assembly.energies(q)) for q in Q])
+    strain = assembly.energy_samples(Q)
     pot = np.zeros_like(kin)
-    if forces is not None and forces.element_potential(Q[0]) is not None:
-        pot = np.array([np.concatenate(forces.element_potential(q)) for q in Q])
+    parts = forces.element_potential(Q) if forces is not None else None
+    if parts is not None:
+        pot = np.concatenate(parts, axis=1)
     return EnergyHistory(np.asarray(t), kin, pot, strain.reshape(kin.shape))

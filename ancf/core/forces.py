@@ -28,6 +28,14 @@ def shape_integrals(element, nx: int = 4, ny: int = 2) -> np.ndarray:
     return np.einsum("exy,exyk->ek", w, S)
 
 
+def _dot_rows(qe, Q):
+    """-qe[e] . Q[..., e, :] for each element e, (nel,) or (ns, nel): the states stacked as
+    rows of one product, so each row sums as the single-state product does."""
+    rows = Q.reshape(-1, qe.shape[1])
+    out = -np.einsum("ek,ek->e", np.tile(qe, (rows.shape[0] // qe.shape[0], 1)), rows)
+    return out.reshape(Q.shape[:-1])
+
+
 class Gravity:
     """Q_g = int rho S^T g dV (constant), potential V = -Q_g . q per element."""
 
@@ -50,8 +58,9 @@ class Gravity:
         return None, None
 
     def element_potential(self, q) -> list:
-        """V_i = -int rho g . r dV of each element, J (zero in the reference at y = 0)."""
-        return [-np.einsum("ek,ek->e", qe, q[grp.dofmap])
+        """V_i = -int rho g . r dV of each element, J (zero in the reference at y = 0);
+        ``q`` (n_dofs,) or states side by side (ns, n_dofs), giving (nel,) or (ns, nel)."""
+        return [_dot_rows(qe, q[..., grp.dofmap])
                 for grp, qe in zip(self.groups, self.element_vectors)]
 
 
@@ -178,7 +187,8 @@ class Forces:
         return [np.asarray(t.dofmap) for t in self.terms if getattr(t, "dofmap", None) is not None]
 
     def element_potential(self, q) -> list | None:
-        """Summed potential of the conservative terms per group, or None if none."""
+        """Summed potential of the conservative terms per group, or None if none (``q``
+        one state or states side by side, as the terms take it)."""
         parts = [t.element_potential(q) for t in self.terms if hasattr(t, "element_potential")]
         if not parts:
             return None

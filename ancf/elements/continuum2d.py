@@ -65,6 +65,15 @@ class ContinuumElement:
         """Strain energy U of each element, J (e: (nel, ndof))."""
         return self.strain.energy(*self._args(e))
 
+    def energy_samples(self, es) -> np.ndarray:
+        """Strain energy U of each element at each of the states ``es`` (ns, nel, ndof),
+        (ns, nel) J: one compiled call, each state's arithmetic that of :meth:`energy`."""
+        es = np.ascontiguousarray(es, dtype=float)
+        p = self.points
+        E = es.reshape(es.shape[0] * self.nel, self.nshape, self.dim)
+        U = self.strain.energy(E, p.E0, *p.arrays(), self.C, p.cidx)
+        return U.reshape(es.shape[0], self.nel)
+
     def gradient(self, e, tangent: bool = False):
         """dU/de per element (nel, ndof) (Qe = -dU/de, Eq. 2.20) and optionally the
         exact tangent d2U/de2 (nel, ndof, ndof)."""

@@ -35,11 +35,13 @@ from ancf.core.pattern import assemble_group, scatter
 
 
 @leaf
-def _point_strain(E, E0, BX, BY, dX0, dY0, e, q, n):
+def _point_strain(E, E0, BX, BY, dX0, dY0, r, e, q, n):
+    """Green strains (exx, eyy, gxy) and the current gradients at point q of state row r
+    of element e (r = e but for stacked states, :func:`energy`)."""
     ux0 = ux1 = uy0 = uy1 = 0.0
     for k in range(n):
-        u0 = E[e, k, 0] - E0[e, k, 0]
-        u1 = E[e, k, 1] - E0[e, k, 1]
+        u0 = E[r, k, 0] - E0[e, k, 0]
+        u1 = E[r, k, 1] - E0[e, k, 1]
         ux0 += BX[e, q, k] * u0
         ux1 += BX[e, q, k] * u1
         uy0 += BY[e, q, k] * u0
@@ -53,17 +55,19 @@ def _point_strain(E, E0, BX, BY, dX0, dY0, e, q, n):
 
 @njit(cache=True)
 def energy(E, E0, BX, BY, dX0, dY0, w, C, cidx):
-    """Strain energy per element (nel,), J."""
+    """Strain energy per row of ``E`` (rows,), J.  ``E`` may stack several states of the
+    nel elements (rows = k nel, row r is element r mod nel), each as by itself."""
     nel, nq, n = BX.shape
-    out = np.zeros(nel)
-    for e in range(nel):
+    out = np.zeros(E.shape[0])
+    for r in range(E.shape[0]):
+        e = r % nel
         for q in range(nq):
-            ex, ey, gm, _, _, _, _ = _point_strain(E, E0, BX, BY, dX0, dY0, e, q, n)
+            ex, ey, gm, _, _, _, _ = _point_strain(E, E0, BX, BY, dX0, dY0, r, e, q, n)
             c = C[cidx[q]]
             s0 = c[0, 0] * ex + c[0, 1] * ey + c[0, 2] * gm
             s1 = c[1, 0] * ex + c[1, 1] * ey + c[1, 2] * gm
             s2 = c[2, 0] * ex + c[2, 1] * ey + c[2, 2] * gm
-            out[e] += 0.5 * w[e, q] * (s0 * ex + s1 * ey + s2 * gm)
+            out[r] += 0.5 * w[e, q] * (s0 * ex + s1 * ey + s2 * gm)
     return out
 
 
@@ -76,7 +80,7 @@ def gradient_tangent(E, E0, BX, BY, dX0, dY0, w, C, cidx, want_K, g, K):
     CG = np.empty((3, nd))
     for e in range(nel):
         for q in range(nq):
-            ex, ey, gm, dx0, dx1, dy0, dy1 = _point_strain(E, E0, BX, BY, dX0, dY0, e, q, n)
+            ex, ey, gm, dx0, dx1, dy0, dy1 = _point_strain(E, E0, BX, BY, dX0, dY0, e, e, q, n)
             c = C[cidx[q]]
             ww = w[e, q]
             s0 = c[0, 0] * ex + c[0, 1] * ey + c[0, 2] * gm

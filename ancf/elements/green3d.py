@@ -26,9 +26,10 @@ _VB = np.array([0, 1, 2, 2, 2, 1])
 
 
 @njit(cache=True)
-def _point(E, E0, BX, BY, BZ, dX0, dY0, dZ0, e, q, B, F, eps):
-    """Fill B (3, n) with the point's shape-function derivatives, F (3, 3) with the
-    gradients r_a (row a) and eps (6,) with the Voigt strains."""
+def _point(E, E0, BX, BY, BZ, dX0, dY0, dZ0, r, e, q, B, F, eps):
+    """Fill B (3, n) with the shape-function derivatives at point q of element e, F (3, 3)
+    with the gradients r_a (row a) and eps (6,) with the Voigt strains of state row r
+    (r = e but for stacked states, :func:`energy`)."""
     n = B.shape[1]
     for k in range(n):
         B[0, k], B[1, k], B[2, k] = BX[e, q, k], BY[e, q, k], BZ[e, q, k]
@@ -37,7 +38,7 @@ def _point(E, E0, BX, BY, BZ, dX0, dY0, dZ0, e, q, B, F, eps):
     U = np.zeros((3, 3))
     for k in range(n):
         for d in range(3):
-            u = E[e, k, d] - E0[e, k, d]
+            u = E[r, k, d] - E0[e, k, d]
             for a in range(3):
                 U[a, d] += B[a, k] * u
     for v in range(6):
@@ -61,15 +62,17 @@ def _stress(c, eps, s):
 
 @njit(cache=True)
 def energy(E, E0, BX, BY, BZ, dX0, dY0, dZ0, w, C, cidx):
-    """Strain energy per element (nel,), J."""
+    """Strain energy per row of ``E`` (rows,), J.  ``E`` may stack several states of the
+    nel elements (rows = k nel, row r is element r mod nel), each as by itself."""
     nel, nq, n = BX.shape
-    out = np.zeros(nel)
+    out = np.zeros(E.shape[0])
     B, F, eps, s = np.empty((3, n)), np.empty((3, 3)), np.empty(6), np.empty(6)
-    for e in range(nel):
+    for r in range(E.shape[0]):
+        e = r % nel
         for q in range(nq):
-            _point(E, E0, BX, BY, BZ, dX0, dY0, dZ0, e, q, B, F, eps)
+            _point(E, E0, BX, BY, BZ, dX0, dY0, dZ0, r, e, q, B, F, eps)
             _stress(C[cidx[q]], eps, s)
-            out[e] += 0.5 * w[e, q] * np.dot(s, eps)
+            out[r] += 0.5 * w[e, q] * np.dot(s, eps)
     return out
 
 
@@ -97,7 +100,7 @@ def gradient_tangent(E, E0, BX, BY, BZ, dX0, dY0, dZ0, w, C, cidx, want_K, g, K)
     G, CG = np.empty((6, nd)), np.empty((6, nd))
     for e in range(nel):
         for q in range(nq):
-            _point(E, E0, BX, BY, BZ, dX0, dY0, dZ0, e, q, B, F, eps)
+            _point(E, E0, BX, BY, BZ, dX0, dY0, dZ0, e, e, q, B, F, eps)
             c = C[cidx[q]]
             _stress(c, eps, s)
             ww = w[e, q]

@@ -272,3 +272,29 @@ def test_malformed_integration_spec_raises(spec):
 def test_non_string_integration_raises_value_error(value):
     with pytest.raises(ValueError, match="integration"):
         _build(LinearBeam2D, value)
+
+
+@pytest.mark.parametrize("cls,kw", CASES, ids=IDS)
+def test_energy_of_stacked_states_is_each_states_energy(cls, kw):
+    """The energy history's one call over all samples (``Assembly.energy_samples``, and
+    an element's own ``energy_samples`` where it has one) gives each state's energies
+    bit for bit."""
+    m, q0, el = _build(cls, kw)
+    Q = np.array([_perturbed(m, q0, seed=s, size=0.02 * s) for s in range(4)])
+    asm = Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)])
+    each = np.array([np.concatenate(asm.energies(q)) for q in Q])
+    np.testing.assert_array_equal(asm.energy_samples(Q), each)
+    assert np.ptp(each, axis=0).min() > 0  # the states differ: a row mix-up would show
+
+
+@pytest.mark.parametrize("cls", [LinearBeam2D, OmarShabana2D])
+def test_gravity_potential_of_stacked_states_is_each_states(cls):
+    """Gravity's potential of states side by side (the energy history's one call) is each
+    state's, bit for bit."""
+    from ancf.core.forces import Gravity
+    m, q0, el = _build(cls, "thesis" if cls is LinearBeam2D else {})
+    Q = np.array([_perturbed(m, q0, seed=s, size=0.1 * s) for s in range(5)])
+    grav = Gravity(Assembly(m.n_dofs, [ElementGroup(el, m.dofmap)]), (0.3, -9.81))
+    each = np.array([np.concatenate(grav.element_potential(q)) for q in Q])
+    np.testing.assert_array_equal(np.concatenate(grav.element_potential(Q), axis=1), each)
+    assert np.ptp(each, axis=0).min() > 0
