@@ -5,10 +5,11 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 PEERS  := $(VENV)/.peers
+DOCS   := $(VENV)/.docs
 # test processes (pytest-xdist; a test file stays in one process, so its module fixtures run once)
 JOBS   ?= 2
 
-.PHONY: setup reports test test-fast bench clean
+.PHONY: setup reports test test-fast bench clean docs
 
 setup: $(STAMP)
 
@@ -41,6 +42,15 @@ bench: $(PEERS)
 	$(PY) -m benchmarks.peers_thread
 	$(PY) -m benchmarks.peers_ale
 	$(PY) -m benchmarks.peers_3d --repeats 5
+
+# the documentation site (mkdocs.yml) into site/; --strict: a warning (a broken link, a missing
+# page or anchor, a docstring that does not render) fails the build
+$(DOCS): $(STAMP)
+	$(PY) -m pip install --quiet -e ".[docs]"
+	touch $(DOCS)
+
+docs: $(DOCS)
+	NO_MKDOCS_2_WARNING=1 $(PY) -m mkdocs build --strict --site-dir site
 
 clean:
 	rm -rf $(VENV) .pytest_cache .benchmarks "$${XDG_CACHE_HOME:-$$HOME/.cache}/ancf-bench"
