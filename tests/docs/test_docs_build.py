@@ -22,16 +22,29 @@ from ancf.common.paths import REPO
 
 pytestmark = pytest.mark.slow
 
-MISSING = [m for m in ("mkdocs", "material", "mkdocstrings", "mkdocstrings_handlers.python")
-           if importlib.util.find_spec(m.split(".")[0]) is None]
+MISSING = [m for m in ("mkdocs", "material", "mkdocstrings", "mkdocstrings_handlers")
+           if importlib.util.find_spec(m) is None]
 if MISSING:
     pytest.skip(f"the docs packages are not installed ({', '.join(MISSING)}); "
                 "`pip install -e '.[docs]'` or `make docs` installs them",
                 allow_module_level=True)
 
-sys.path.insert(0, str(REPO / "docs" / "hooks"))
-import gen_reference  # noqa: E402
-import pages  # noqa: E402
+
+def _hook(name: str):
+    """The module docs/hooks/NAME.py (its folder on the path only while it loads, as
+    MkDocs loads it)."""
+    folder = str(REPO / "docs" / "hooks")
+    spec = importlib.util.spec_from_file_location(f"docs_hooks_{name}", f"{folder}/{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    sys.path.insert(0, folder)
+    try:
+        spec.loader.exec_module(module)
+    finally:
+        sys.path.remove(folder)
+    return module
+
+
+gen_reference, pages = _hook("gen_reference"), _hook("pages")
 
 
 class _Links(HTMLParser):
