@@ -5,5 +5,6 @@ test pins: the belt element on its own (``belt_element``), the 2D belt drive
 (``beam3d_benchmarks``); Chrono's ANCF elements: its stored element matrices
 (``chrono_matrices``), its textbook static cases and the shells' square plate
 (``chrono_elements``), the Princeton beam on its 3243/3333 beams against ANSYS
-(``chrono_princeton``).
+(``chrono_princeton``), why the beams' u_z and the 3443's f4-f6 miss at the acceptance
+mesh (``chrono_locking``).
 """

@@ -169,10 +169,12 @@ def static_rows() -> list[dict]:
 
 
 @lru_cache(maxsize=None)
-def princeton_row(element: str, load: str, beta: float, n: int = cp.N_ELEMENTS) -> dict:
-    """:func:`ancf.checks.chrono_princeton.row` with n and whether |u_y|, |u_z| are within
-    1 %, 0.5 % of ANSYS (None where ANSYS is 0 by symmetry)."""
-    r = dict(cp.row(element, load, beta, n), n=n)
+def princeton_row(element: str, load: str, beta: float, n: int = cp.N_ELEMENTS,
+                  naxis: int | None = None) -> dict:
+    """:func:`ancf.checks.chrono_princeton.row` (``naxis`` Gauss points along the axis,
+    None: exact) with n and whether |u_y|, |u_z| are within 1 %, 0.5 % of ANSYS (None
+    where ANSYS is 0 by symmetry)."""
+    r = dict(cp.row(element, load, beta, n, naxis=naxis), n=n)
     for c, tol in PRINCETON_TOL.items():
         err = r[f"{c} error"]
         r[f"{c} within"] = None if err is None else bool(abs(err) <= tol)

@@ -35,13 +35,14 @@ STEP_RTOL, FINAL_RTOL = 1e-6, 1e-8  # Newton |R_f| / |F_f| of the intermediate, 
 # (1e-10 stalls at ~2e-9 at the large deflections: round-off of Q)
 
 
-def beam(element: str, n: int = N_ELEMENTS) -> cb.Beam:
-    """The clamped Princeton strip of n ``element`` ("3243" or "3333") elements; rho is
-    NaN: statics without gravity need no density."""
+def beam(element: str, n: int = N_ELEMENTS, naxis: int | None = None) -> cb.Beam:
+    """The clamped Princeton strip of n ``element`` ("3243" or "3333") elements, ``naxis``
+    Gauss points along the axis (None: exact, ``chrono_beam.Beam``); rho is NaN: statics
+    without gravity need no density."""
     p = pub.PRINCETON
     ks = torsion_factor(p["h"], p["b"])
     return cb.Beam(element=element, n=n, L=p["L"], H=p["h"], W=p["b"], rho=math.nan, E=p["E"],
-                   nu=p["nu"], k1=ks, k2=ks)
+                   nu=p["nu"], k1=ks, k2=ks, naxis=naxis)
 
 
 @dataclass(frozen=True)
@@ -57,10 +58,11 @@ class Result:
 
 
 def solve(element: str, load: str, beta_deg: float, n: int = N_ELEMENTS,
-          steps: int = LOAD_STEPS) -> Result:
-    """The Princeton beam under ``pub.PRINCETON_LOADS[load]`` at beta_deg (deg)."""
+          steps: int = LOAD_STEPS, naxis: int | None = None) -> Result:
+    """The Princeton beam under ``pub.PRINCETON_LOADS[load]`` at beta_deg (deg), ``naxis``
+    Gauss points along the axis (None: exact)."""
     t0 = time.process_time()
-    b = beam(element, n)
+    b = beam(element, n, naxis)
     F, beta = pub.PRINCETON_LOADS[load], math.radians(beta_deg)
     f = cb.tip_load(b, force=(0.0, -F * math.cos(beta), -F * math.sin(beta)))
     e, its, ok = None, 0, True
@@ -84,9 +86,11 @@ def relative(ours: float, published: float):
     return None if published == 0.0 else ours / published - 1.0
 
 
-def row(element: str, load: str, beta_deg: float, n: int = N_ELEMENTS) -> dict:
-    """One table row: ours, ANSYS and the relative errors of u_y, u_z, iterations, CPU s."""
-    r, (ay, az) = solve(element, load, beta_deg, n), ansys(load, beta_deg)
+def row(element: str, load: str, beta_deg: float, n: int = N_ELEMENTS,
+        naxis: int | None = None) -> dict:
+    """One table row: ours, ANSYS and the relative errors of u_y, u_z, iterations, CPU s
+    (``naxis`` Gauss points along the axis, None: exact)."""
+    r, (ay, az) = solve(element, load, beta_deg, n, naxis=naxis), ansys(load, beta_deg)
     return {"element": element, "load": load, "beta": beta_deg, "uy": r.uy, "ansys uy": ay,
             "uy error": relative(r.uy, ay), "uz": r.uz, "ansys uz": az,
             "uz error": relative(r.uz, az), "iterations": r.iterations, "cpu s": r.cpu_s,

@@ -53,7 +53,9 @@ ELEMENTS = {"3243": (ancf3243, (0, 1), 1), "3333": (ancf3333, (0, 2, 1), 2)}
 class Beam:
     """The clamped beam: element name ("3243" or "3333"), n elements, length L (m), section
     H (m, along y) x W (m, along z), density rho (kg/m^3), Young's modulus E (Pa), Poisson's
-    ratio nu and the shear corrections k1, k2 (dimensionless)."""
+    ratio nu and the shear corrections k1, k2 (dimensionless); naxis the Gauss points along
+    the axis (None: the module's exact ``NAXIS``; Chrono's elements take ``NP`` = 3, at
+    least 2)."""
 
     element: str
     n: int
@@ -65,6 +67,7 @@ class Beam:
     nu: float
     k1: float
     k2: float
+    naxis: int | None = None
     module: object = field(init=False, repr=False)
 
     def __post_init__(self):
@@ -107,10 +110,11 @@ class Beam:
 
 
 @lru_cache(maxsize=16)
-def _kernel(module, args: tuple):
+def _kernel(module, args: tuple, naxis: int | None = None):
     """(e0 (m,) in m, parts): the element's reference and ``continuum3d`` parts, computed
-    once per element and dimensions ``args`` (``Beam.element_args``)."""
-    basis, rules = module.continuum(*args)
+    once per element, dimensions ``args`` (``Beam.element_args``) and axial rule ``naxis``
+    (None: the module's exact rule)."""
+    basis, rules = module.continuum(*args, naxis=module.NAXIS if naxis is None else naxis)
     return basis.e0, c3.parts(basis, rules)
 
 
@@ -118,7 +122,7 @@ def assemble(beam: Beam, e: np.ndarray):
     """(Q, K) of eq. (1) at the global state e (m): Q in N, K in N/m (all elements in one
     ``continuum3d.static_batch``, the same sums as the element's ``internal_force`` and
     ``internal_force_jacobians``)."""
-    e0, parts = _kernel(beam.module, beam.element_args())
+    e0, parts = _kernel(beam.module, beam.element_args(), beam.naxis)
     d = np.array([beam.dofs(k) for k in range(beam.n)])
     Qk, Kk = c3.static_batch(e[d] - e0, parts)
     Q, K = np.zeros(e.size), np.zeros((e.size, e.size))
