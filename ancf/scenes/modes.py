@@ -186,7 +186,7 @@ def _run(static: Scene, count, about, p: dict, mm: ModalModel | None = None) -> 
     n = mm.pattern.n
     count = _check_count(count, n)
     q, newton, checked = mm.q0, 0, []
-    extra = {"mesh": mm.mesh, "q0": mm.q0, "model": mm}
+    extra = {"q0": mm.q0, "model": mm} | ({} if mm.mesh is None else {"mesh": mm.mesh})
     if about == "equilibrium":
         eq = equilibrium(static, p)
         q, newton = eq.extra.get("q", mm.q0), eq.results.get("newton_iterations") or 0

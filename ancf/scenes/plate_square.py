@@ -4,7 +4,7 @@ plate of thesis 4.3 against Navier's series).
 ``n_elements`` x ``n_elements`` ``plate36`` elements (bending on, ``ng`` x ``ng`` Gauss
 points) over a x a; simply supported: w = 0 and the slope along the edge vanish on the
 boundary, the in-plane coordinates are fixed.  ``element`` = ``ancf3443`` or ``ancf3833``
-(Chrono's shells, ``ancf run`` only): the registry's class on
+(Chrono's shells): the registry's class on
 :func:`ancf.models.chrono_shell.simply_supported_square`'s mesh, w = 0 on the edges
 (:meth:`~ancf.models.chrono_shell.Plate.simply_supported`), in-plane rigid motion removed.
 Linear (small-deflection) static solve at the flat reference with a sparse direct solver
@@ -22,11 +22,15 @@ warned as the run (:func:`equilibrium`: round-off, the thin-plate range).  Its
 ``supports`` (``ancf modes`` only) are ``simple`` (the static run's) or ``free``: no
 coordinate fixed, the free-free plate of Exudyn's ``TestModels/ANCFThinPlateTests.py``,
 whose six rigid motions are its zero-frequency modes; it has no equilibrium under a
-pressure, so ``--about equilibrium`` finds none (exit 3, saying so).
+pressure, so ``--about equilibrium`` finds none (exit 3, saying so).  With a shell the
+modes are those of its registry class on the same mesh as its run (its mass at ``rho``),
+sampled at the shell's nodes (their positions r); the result carries no plate36 mesh.
 """
 from __future__ import annotations
 
 import math
+
+import numpy as np
 
 from analytic import navier_plate
 from ancf.core.constraints import Elimination
@@ -51,7 +55,7 @@ CHOICES = tuple(n for n, t in ELEMENTS.items() if t.kind == "plate") + tuple(
 def params() -> tuple:
     return (
         Param("element", "plate36", str, doc="plate element: plate36, or Chrono's shells "
-              "ancf3443, ancf3833 (exact rules, ng ignored; ancf run only)", choices=CHOICES),
+              "ancf3443, ancf3833 (exact rules, ng ignored)", choices=CHOICES),
         Param("a", 1.0, float, "m", "side of the square", lo=0, lo_open=True),
         Param("h", 0.01, float, "m", "thickness", lo=0, lo_open=True),
         Param("E", 2.1e11, float, "Pa", "Young's modulus", lo=0, lo_open=True),
@@ -134,19 +138,63 @@ def warn(p: dict, res: SceneResult) -> list:
 
 def _model(p: dict):
     """(mesh, q0, assembly, elimination, load) of the nonlinear plate of ``ancf modes``
-    (refused before it is built when it would not fit in memory); plate36 only."""
+    (refused before it is built when it would not fit in memory); a shell's mesh is
+    None (:func:`_shell_model`)."""
     if p["element"] != "plate36":
-        raise InputError(f"element = {p['element']!r} is out of range; allowed: one of "
-                         "plate36 (ancf modes)")
+        return _shell_model(p)
     check_cost(p["n_elements"], p["n_elements"])
     m, q0, asm, elim, load = simply_supported_model(p["n_elements"], p["a"], p["a"], p["h"],
                                                     p["E"], p["nu"], p["p"], p["ng"], p["rho"])
     return m, q0, asm, (elim if p["supports"] == "simple" else Elimination(m.n_dofs)), load
 
 
+def _shell_model(p: dict):
+    """(None, q0, assembly, elimination, load) of a Chrono shell's plate: the registry's
+    class on :class:`ancf.models.chrono_shell.Plate`'s n x n mesh (q0 its reference, m),
+    density ``rho``; ``simple``: w = 0 on the four edges and the in-plane rigid motions
+    fixed, as the run's; the pressure p (Pa) along +z as a dead load (N)."""
+    from ancf.core.assembly import Assembly, ElementGroup  # not needed by ancf run
+    n, a, cls = p["n_elements"], p["a"], ELEMENTS[p["element"]].cls
+    plate = _shell_plate(p)
+    q0 = plate.reference()
+    el = cls(np.full(n * n, a / n), np.full(n * n, a / n), p["h"], p["E"], p["nu"],
+             rho=p["rho"], e0=q0[plate.dofs])
+    elim = Elimination(plate.ndof)
+    if p["supports"] == "simple":
+        fixed = [plate.simply_supported(e) for e in chrono_shell.EDGES] + [plate.in_plane_rigid()]
+        for d in np.unique(np.concatenate([np.ravel(f) for f in fixed])):
+            elim.fix(int(d), q0[d])
+    return (None, q0, Assembly(plate.ndof, [ElementGroup(el, plate.dofs)]), elim,
+            chrono_shell.pressure(plate, p["p"]))
+
+
+def _shell_plate(p: dict) -> chrono_shell.Plate:
+    """The n x n plate of the shell ``element`` (m, Pa, kg/m^3 as p)."""
+    n, a = p["n_elements"], p["a"]
+    return chrono_shell.Plate(ELEMENTS[p["element"]].cls.module.__name__[-4:], n, n, a, a,
+                              p["h"], p["E"], p["nu"], rho=p["rho"])
+
+
+def _centre_dof(p: dict, m) -> int:
+    """The index of the centre node's z-position: plate36's (mesh m) or a shell's."""
+    if m is not None:
+        return m.dof(m.node(p["n_elements"] // 2, p["n_elements"] // 2), "r", 2)
+    plate = _shell_plate(p)
+    return int(plate.coordinate(chrono_shell.centre_node(plate), 0, 2))
+
+
+def _node_positions(ncoord: int):
+    """q -> (nodes, 3): the r slot of every node of a shell plate (``ancf modes``'s sample
+    points, m; its coordinates ``ncoord`` per node, r first)."""
+    return lambda q: np.asarray(q).reshape(-1, ncoord)[:, :3]
+
+
 def modal(p: dict):
     from ancf.scenes import beam_static as bs  # its modal model; not needed by ancf run
     m, q0, asm, elim, load = _model(p)
+    if m is None:
+        ncoord = asm.groups[0].element.ndof // asm.groups[0].element.module.NNODE
+        return bs.modal(p, m, q0, asm, elim, load, _node_positions(ncoord), "shell nodes")
     return bs.modal(p, m, q0, asm, elim, load, grid_points(m), "mid-surface grid")
 
 
@@ -161,7 +209,7 @@ def equilibrium(p: dict) -> SceneResult:
         return failed or SceneResult(
             False, "a free plate has no static equilibrium under a pressure", _failed())
     m, q0, asm, elim, load = _model(p)
-    c = m.dof(m.node(p["n_elements"] // 2, p["n_elements"] // 2), "r", 2)
+    c = _centre_dof(p, m)
     return bs.solve(p, m, q0, asm, elim, load,
                     lambda q: {"center_deflection_m": float(q[c] - q0[c])})
 
