@@ -25,7 +25,8 @@ from ancf.solvers.alpha_march import (BLOW_UP, BUDGET, DONE, NEWTON_FAILED, NON_
 from ancf.solvers.generalized_alpha import AlphaOptions, step_times
 from ancf.solvers.result import DynamicResult
 
-CHUNKS = 20  # progress reports per run
+CHUNKS = 20  # progress reports per run, at least
+CHUNK_S = 2.0  # with progress: wall seconds per chunk, about
 MESSAGES = {DONE: "ok", BUDGET: "step budget exhausted (max_steps)",
             NON_FINITE: "non-finite coordinates", BLOW_UP: "coordinates blew up"}
 
@@ -100,6 +101,21 @@ def _halved(m: _March, st, ta, tb, depth, limit, s=-1, out=None) -> bool:
     return ok
 
 
+def _chunks(n_steps: int, timed: bool):
+    """Step indices at which the march returns to Python (a progress line may follow):
+    :data:`CHUNKS` equal parts, and with ``timed`` parts of at most about
+    :data:`CHUNK_S` s of wall time, sized from the pace of the steps so far.  The march
+    carries its state across calls, so the split leaves the arithmetic unchanged."""
+    size, k, t0 = max(n_steps // CHUNKS, 1), 0, time.monotonic()
+    while k < n_steps:
+        step = size
+        if timed and k > 0:
+            pace = (time.monotonic() - t0) / k  # s per step so far
+            step = min(size, max(int(CHUNK_S / max(pace, 1e-9)), 1))
+        k = min(k + step, n_steps)
+        yield k
+
+
 def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None,
              mean_from: float = np.inf) -> DynamicResult:
     """Integrate the belt drive over the sample times t_out (s) from x0, v0 (system
@@ -121,8 +137,7 @@ def simulate(drive, t_out, opt: BeltOptions, x0=None, v0=None, progress=None,
     X[0], V[0] = x, v
     limit = opt.q_limit * (1 + np.max(np.abs(x[: drive.n])))
     t0, k, status, rejected = time.process_time(), 0, DONE, 0
-    chunks = np.linspace(0, ts.size - 1, CHUNKS + 1).round().astype(int)[1:]
-    for k_stop in chunks:
+    for k_stop in _chunks(ts.size - 1, progress is not None):
         while k < k_stop and status in (DONE, NEWTON_FAILED):
             status, k = m.run(st, k, k_stop, slot, X, V, limit)
             if status == NEWTON_FAILED:

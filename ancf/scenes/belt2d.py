@@ -33,7 +33,6 @@ from ancf.scenes.base import (DYNAMIC_RESULTS, INT, Scene, SceneResult, field, n
 from ancf.belts.bdf import simulate_bdf
 
 INTEGRATORS = ("generalized-alpha", "bdf")
-PROGRESS_STEPS = 20_000  # runs of at least this many steps report progress on a terminal
 PENETRATION_WARN = 0.5  # x the pre-stretch per wrap (see warn)
 STEADY_WINDOW = 0.1  # s before t_end over which the steady speed ratio is averaged
 
@@ -114,7 +113,7 @@ def _midpoints(drive, res, p) -> dict:
 
 def _march(p: dict):
     """march(drive, x0) of the chosen integrator (x0 None: the laid belt)."""
-    alpha = bc.alpha_march(p, "belt2d", PROGRESS_STEPS)
+    alpha = bc.alpha_march(p, "belt2d")
 
     def march(drive, x0):
         if p["integrator"] != "bdf":

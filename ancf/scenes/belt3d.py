@@ -55,7 +55,6 @@ MODELS = {
 }
 T0 = 0.05            # s, Table 4.1 (both models)
 TA_T1 = 1.0          # s, Eq. 4.47 (see ancf.belts.pulleys)
-PROGRESS_STEPS = 5_000
 
 
 def _model(key: str):
@@ -100,7 +99,8 @@ def params() -> tuple:
         Param("Ta_max", m("Ta_max"), float, "N m", "final opposing torque (Eq. 4.47; reached at "
               f"{TA_T1:g} s)", lo=0, hi=1e4),
         Param("strain_measure", "green", str, doc="strain measure of the reported span tensions "
-              "(Eqs 4.9-4.11; all are in results.tensions)", choices=MEASURES),
+              "(Eqs 4.9-4.11; all are in results.tensions; the membrane's own axial force, "
+              "the one that balances the torque, is tensions.membrane)", choices=MEASURES),
         Param("start", m("start"), str, doc="'settled': static frictionless pre-tension first; "
               "'laid': on the wrapped path", choices=("settled", "laid")),
         Param("integrator", "generalized-alpha", str, doc="time integrator",
@@ -188,7 +188,7 @@ def _results(p: dict):
 
 def run(p: dict) -> SceneResult:
     drive = Belt3DDrive(spec(p))
-    out = bc.run(drive, p, bc.alpha_march(p, "belt3d", PROGRESS_STEPS), _results(p),
+    out = bc.run(drive, p, bc.alpha_march(p, "belt3d"), _results(p),
                  keep_unsettled=True)
     out.results.update(belt_length_m=drive.spec.belt_length, total_dofs=drive.n + 1)
     return out
@@ -246,7 +246,9 @@ RESULTS = {
     "slip_driven": nullable("1 - mean omega_driven / mean omega_driver over the last "
                             "steady_window (null before the driver turns)"),
     "T_tight_N": nullable("tight (upper) span: mean tension k eps of strain_measure over its "
-                          "middle third at t_end, along the edge y = 0, N"),
+                          "middle third at t_end, along the edge y = 0, N (default green: the "
+                          "thesis's Green-strain value; the force whose span difference "
+                          "balances the driven torque is the membrane's, tensions.membrane)"),
     "T_slack_N": nullable("slack (lower) span: the same, N"),
     "v_tight": nullable("tight span: mean belt speed along the tangent at t_end, m/s"),
     "v_slack": nullable("slack span: the same, m/s"),

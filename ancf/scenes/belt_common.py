@@ -4,8 +4,6 @@ drive (pre-tension, march, pulley speeds, statistics).
 """
 from __future__ import annotations
 
-import sys
-
 import numpy as np
 
 from ancf.belts import post2d, post3d
@@ -16,6 +14,7 @@ from ancf.belts.path import TwoPulleyPath
 from ancf.belts.pretension import settle
 from ancf.common.inputs import MAX_STEPS, check_sampling, following, intervals
 from ancf.common.params import InputError, Param
+from ancf.common.progress import Ticker
 from ancf.scenes import sense
 from ancf.scenes.base import SceneResult
 
@@ -100,11 +99,10 @@ def check_steps(p: dict) -> None:
                          f"t_end/{MAX_STEPS} = {p['t_end'] / MAX_STEPS:g} s")
 
 
-def progress(scene: str, p: dict, min_steps: int):
-    """Progress lines on stderr for runs of at least ``min_steps`` steps from a terminal."""
-    if not sys.stderr.isatty() or p["t_end"] / p["dt"] < min_steps:
-        return None
-    return lambda t: print(f"{scene}: t = {t:.4g} / {p['t_end']:g} s", file=sys.stderr, flush=True)
+def progress(scene: str, t_end: float) -> Ticker:
+    """Progress lines on stderr of a run to ``t_end`` (s): on a terminal and when piped,
+    none in a run shorter than the ticker's interval (:class:`ancf.common.progress.Ticker`)."""
+    return Ticker(scene, t_end)
 
 
 def belt_length(p: dict) -> float:
@@ -147,13 +145,13 @@ def times(p: dict) -> np.ndarray:
     return np.minimum(np.arange(n + 1) * p["output_dt"], p["t_end"])
 
 
-def alpha_march(p: dict, scene: str, min_steps: int):
+def alpha_march(p: dict, scene: str):
     """march(drive, x0): the generalised-alpha march of ``p``'s parameters from x0 (None:
-    the laid belt), with progress lines for runs of at least ``min_steps`` steps."""
+    the laid belt), with progress lines (:func:`progress`)."""
     opt = BeltOptions(dt=p["dt"], rho_inf=p["rho_inf"], newton_tol=p["newton_tol"],
                       max_steps=p["max_steps"])
     return lambda drive, x0: simulate(drive, times(p), opt, x0=x0,
-                                      progress=progress(scene, p, min_steps))
+                                      progress=progress(scene, p["t_end"]))
 
 
 def run(drive, p: dict, march, results_of, keep_unsettled: bool) -> SceneResult:

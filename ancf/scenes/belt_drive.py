@@ -48,7 +48,6 @@ from ancf.scenes import sense
 from ancf.scenes.base import (DYNAMIC_RESULTS, INT, NUM, STR, ReferenceFailed, Scene, SceneResult,
                               field, nullable, series)
 
-PROGRESS_STEPS = 20_000  # runs of at least this many steps report progress on a terminal
 DEFAULT_FILE = str(REPO / "examples" / "thesis_table_3_1.toml")
 SEP = "; "  # between the overrides in params["set"]
 
@@ -212,7 +211,7 @@ def run(p: dict) -> SceneResult:
                       max_steps=r["max_steps"])
     march = simulate if desc.belt["formulation"] == "lagrangian" else _ale
     res = march(drive, bc.times(r), opt, x0=x0 if pre is None or pre.converged else None,
-                progress=bc.progress("belt-drive", r, PROGRESS_STEPS),
+                progress=bc.progress("belt-drive", r["t_end"]),
                 mean_from=r["t_end"] - r["steady_window"])
     if pre is not None and not pre.converged:
         res.converged, res.message = False, f"pre-tension: {pre.message}"
