@@ -62,7 +62,20 @@ def _list(registry, title):
             print(f"      {p.name:14s} default {d:>22s} {p.unit:4s} {p.allowed()}  {p.doc}")
 
 
-def _scenes() -> int:
+def _one_entry(text: str, name: str) -> str:
+    """The lines of ``name`` (its line and its parameters') in the listing ``text``
+    (InputError naming the allowed names if it lists none)."""
+    from itertools import takewhile
+    lines = text.splitlines(keepends=True)
+    heads = {ln.split()[0]: i for i, ln in enumerate(lines)
+             if ln.startswith("  ") and not ln.startswith("   ")}
+    if name not in heads:
+        raise InputError(f"scenes: unknown name {name!r}; allowed: {', '.join(heads)}")
+    rest = takewhile(lambda ln: ln.startswith("      "), lines[heads[name] + 1:])
+    return "".join([lines[heads[name]], *rest])
+
+
+def _scenes(name: str | None = None) -> int:
     """``ancf scenes``: the listing is a function of the sources alone, so it is kept beside
     numba's cache in a file named by the hash of every source (:func:`ancf.source_hash`):
     the first listing of a source tree imports every scene and reference (a second),
@@ -88,7 +101,7 @@ def _scenes() -> int:
             os.replace(tmp, path)
         except OSError:
             pass  # a read-only cache: list without keeping
-    sys.stdout.write(text)
+    sys.stdout.write(text if name is None else _one_entry(text, name))
     return 0
 
 
@@ -284,6 +297,24 @@ def _quantity(p) -> None:
                    "cantilever, simply-supported, plate-square)")
 
 
+class _NamesHelp(str):
+    """The help of ``ancf run NAME`` / ``ancf analytic NAME``: the names allowed, listed
+    only when the help is printed (argparse formats it with ``%``), so a run reads no
+    other scene's file."""
+
+    def __new__(cls, cmd: str):
+        obj = super().__new__(cls, "one of the names `ancf scenes` lists")
+        obj.cmd = cmd
+        return obj
+
+    def __mod__(self, params):
+        if self.cmd == "run":
+            from ancf.scenes import MODULES as names
+        else:
+            from ancf.scenes.analytic import REFERENCES as names
+        return f"one of: {', '.join(names)} (parameters: ancf scenes NAME)"
+
+
 class _Parser(argparse.ArgumentParser):
     """argparse with its errors as one line instead of a usage block (still exit 2;
     ``--help`` unchanged)."""
@@ -297,10 +328,11 @@ def main(argv=None) -> int:
         one_blas_thread()
     ap = _Parser(prog="ancf", description="ANCF benchmark suite")
     sub = ap.add_subparsers(dest="cmd", required=True)
-    sub.add_parser("scenes", help="list the scenes and their parameters")
+    p = sub.add_parser("scenes", help="list the scenes and their parameters")
+    p.add_argument("name", nargs="?", help="list this scene or reference only")
     for cmd, what in (("run", "a scene"), ("analytic", "an analytic reference")):
         p = sub.add_parser(cmd, help=f"run {what}")
-        p.add_argument("name")
+        p.add_argument("name", help=_NamesHelp(cmd))
         p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter")
         p.add_argument("--json", action="store_true", help="print one JSON object")
     p = sub.add_parser("steady", help="the steady running state of a belt drive (Newton in "
@@ -425,7 +457,7 @@ def _dispatch(args) -> int:
         if args.cmd == "modes":  # the scene's modules and the eigensolver only
             return _modes(args)
         if args.cmd == "scenes":
-            return _scenes()
+            return _scenes(args.name)
         if args.cmd == "element":  # numpy and the element modules only
             return _element(args)
         if args.cmd == "sweep":

@@ -23,6 +23,28 @@ def test_scenes_lists_every_scene_and_reference(cli):
         assert name in out
 
 
+def test_scenes_name_lists_that_entry_only(cli):
+    _, full, _ = cli("scenes")
+    for name in ("pendulum", "rigid-pendulum", "belt-drive"):
+        rc, out, _ = cli("scenes", name)
+        assert rc == 0 and out.split()[0] == name and out in full
+        assert all(ln.startswith("      ") for ln in out.splitlines()[1:])  # its parameters
+        assert len(out.splitlines()) > 2
+    rc, out, err = cli("scenes", "pendulums")
+    assert rc == 2 and out == "" and len(err.splitlines()) == 1
+    assert "'pendulums'" in err and "pendulum," in err and "rigid-pendulum" in err
+
+
+@pytest.mark.parametrize("cmd,names", [("run", ("cantilever", "belt-drive", "belt3d")),
+                                       ("analytic", ("timoshenko", "rigid-pendulum"))])
+def test_run_help_names_the_scenes(capsys, cmd, names):
+    with pytest.raises(SystemExit) as exc:
+        main([cmd, "--help"])
+    assert exc.value.code == 0
+    text = " ".join(capsys.readouterr().out.split())
+    assert "ancf scenes NAME" in text and all(f" {n}," in text or f" {n} " in text for n in names)
+
+
 @pytest.mark.parametrize("argv,key", [
     (("run", "simply-supported"), "mid_deflection_m"),
     (("run", "cantilever", "--set", "n_elements=4"), "tip_y"),
