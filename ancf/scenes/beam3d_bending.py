@@ -65,7 +65,7 @@ def study():
     return SceneSpec("beam3d-bending", STATIC_KNOBS, frozenset({"bending", "large-rotation",
                                                                  "3D"}),
                      refs, "published", report_grids=b3.PUBLISHED_GRIDS,
-                     recommend_grids=b3.PUBLISHED_GRIDS,
+                     recommend_grids=b3.RECOMMEND_GRIDS,
                      notes="3D general bending (Mx = 0.5e6, My = 2e6 N m) against ANSYS.")
 
 

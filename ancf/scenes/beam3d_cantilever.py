@@ -36,6 +36,8 @@ QUADRATIC = tuple(n for n, t in ELEMENTS.items() if t.kind == "beam" and t.dim =
                   and t.nodes == 3)
 #: the scene's elements
 CHOICES = tuple(beam3d.BUILDERS) + QUADRATIC
+#: those of them that are Chrono's (ancf3243, ancf3333)
+CHRONO = tuple(n for n in CHOICES if ELEMENTS[n].path.startswith("ancf.elements.chrono_element"))
 
 
 def params(presets: dict | None = None) -> tuple:
@@ -155,6 +157,14 @@ PUBLISHED_GRIDS = (
     {"element": ["linear3d"], "integration": ["thesis", "exact", "report-fix"],
      "n_elements": [2, 4, 8, 16, 32, 64], "rtol": [1e-8]},
     {"element": ["belt3d"], "n_elements": [2, 4, 8, 16, 32], "rtol": [1e-8]})
+def chrono_grid(ns) -> dict:
+    """Chrono's beams (:data:`CHRONO`; exact rules, no integration knob) on the meshes
+    ``ns``: what the recommender's grids add to the thesis elements."""
+    return {"element": list(CHRONO), "n_elements": list(ns), "rtol": [1e-8]}
+
+
+#: the recommender's grids of the 3D beam benchmarks: the report's and Chrono's beams
+RECOMMEND_GRIDS = PUBLISHED_GRIDS + (chrono_grid([2, 4, 8, 16, 32]),)
 
 
 def self_study(scene: str, quantities: tuple, error, what: str, measure: str):
@@ -185,7 +195,8 @@ def study():
             {"element": ["belt3d"], "n_elements": [1, 2, 4, 8, 16], "rtol": [1e-8]})
     return SceneSpec("beam3d-cantilever", STATIC_KNOBS,
                      frozenset({"axial", "bending", "shear", "large-rotation", "3D"}), refs,
-                     "reissner", report_grids=grid, recommend_grids=grid,
+                     "reissner", report_grids=grid,
+                     recommend_grids=grid + (chrono_grid([1, 2, 4, 8, 16]),),
                      notes="Model 1 cantilever with the 3D linear element and the 3D belt "
                            "element (alpha1 = alpha2 = 1) against the Reissner rod.")
 

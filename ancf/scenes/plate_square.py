@@ -214,7 +214,11 @@ def equilibrium(p: dict) -> SceneResult:
                     lambda q: {"center_deflection_m": float(q[c] - q0[c])})
 
 
-PLATE_KNOBS = ("n_elements", "ng")
+PLATE_KNOBS = ("element", "n_elements", "ng")
+#: the recommender's shells: Chrono's (ancf3443, ancf3833) on meshes up to 16 x 16 (the
+#: 3833 at 16 x 16: about 7400 coordinates)
+SHELL_GRID = {"element": [n for n in CHOICES if ELEMENTS[n].kind == "shell"],
+              "n_elements": [2, 4, 8, 16]}
 
 
 def _navier(p):
@@ -248,7 +252,8 @@ def study():
         measure="relative centre-deflection error")}
     grid = ({"n_elements": [2, 4, 8, 16, 32], "ng": [4]},)
     return SceneSpec("plate-square", PLATE_KNOBS, frozenset({"bending", "3D"}), refs, "navier",
-                     report_grids=grid, recommend_grids=grid, provides=frozenset({"bending", "3D"}),
+                     report_grids=grid, recommend_grids=grid + (SHELL_GRID,),
+                     provides=frozenset({"bending", "3D"}),
                      notes="Simply supported square plate (linear) against Navier's series.")
 
 
@@ -261,7 +266,7 @@ def frequency_study():
         f"(`analytic/plate_modes.py`); {FREQUENCY_ERROR}", _navier_modes, frequency_error)}
     grid = ({"n_elements": [2, 4, 6, 8, 12, 16, 24], "ng": [3, 4]},)
     return SceneSpec("plate-square", PLATE_KNOBS, frozenset({"bending", "3D"}), refs, name,
-                     report_grids=grid, recommend_grids=grid,
+                     report_grids=grid, recommend_grids=grid + (SHELL_GRID,),
                      provides=frozenset({"bending", "3D"}), quantity="frequency",
                      notes="The simply supported square plate's lowest frequencies against "
                            "Navier.")

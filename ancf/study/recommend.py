@@ -63,6 +63,18 @@ def _belt_parts(p: dict) -> list:
     return parts
 
 
+def _element_parts(p: dict) -> list:
+    """The element, its quadrature (where the element takes one), the mesh and the plate's
+    Gauss points (where given) of a configuration with an element choice."""
+    parts = [f"{p['element']} element"]
+    if _given(p.get("integration")):
+        parts.append(f"{p['integration']} quadrature")
+    parts.append(f"n = {p.get('n_elements')}")
+    if _given(p.get("ng")):
+        parts.append("{0} x {0} Gauss points".format(p["ng"]))
+    return parts
+
+
 def _given(v) -> bool:
     """A knob value that is set (not None, NaN or the text 'None' of a table cell)."""
     return v is not None and str(v) not in ("None", "nan")
@@ -70,8 +82,7 @@ def _given(v) -> bool:
 
 def describe(p: dict, dynamic: bool, quantity: str = "results") -> str:
     """Short text of a model configuration."""
-    parts = ([f"{p.get('element')} element", f"{p.get('integration')} quadrature",
-              f"n = {p.get('n_elements')}"] if p.get("element") is not None else _belt_parts(p))
+    parts = _element_parts(p) if p.get("element") is not None else _belt_parts(p)
     if quantity == "frequency":
         parts.append("eigen solve about the reference")
     elif dynamic:
@@ -90,8 +101,12 @@ def describe(p: dict, dynamic: bool, quantity: str = "results") -> str:
 
 
 def _restrict(grids, fixed_knobs: dict):
+    """The grids with every fixed knob set to its value: of the grids that list each fixed
+    knob they name with that value among theirs (a fixed element keeps its own family's
+    grids, not another family's knobs), or of all when none does."""
+    keep = [g for g in grids if all(v in g[k] for k, v in fixed_knobs.items() if k in g)]
     out = []
-    for g in grids:
+    for g in keep or grids:
         g = dict(g)
         for k, v in fixed_knobs.items():
             g[k] = [v]

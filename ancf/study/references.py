@@ -31,13 +31,12 @@ __all__ = ["DYNAMIC_KNOBS", "ELEMENT_PHYSICS", "FREQUENCY_SPECS", "PHYSICS", "QU
 
 
 def _element_physics() -> dict:
-    """What each element of a beam mesh provides (the elements' ``physics``, registry
-    order): the planar beams of ``catalogue.CATALOGUE`` and the 3D ones of
-    ``models.beam3d.BUILDERS``, the choices of the swept beam scenes."""
-    from ancf.elements.catalogue import CATALOGUE
+    """What each element provides (the elements' ``physics``, registry order): every
+    element of the registry, the thesis's and Chrono's (a scene's ``element`` choices are
+    its own; the 3-node ancf3333 is no ``models.beam3d.BUILDERS`` entry but the 3D beam
+    scenes take it)."""
     from ancf.elements.registry import ELEMENTS
-    from ancf.models.beam3d import BUILDERS
-    return {n: e.physics for n, e in ELEMENTS.items() if n in CATALOGUE or n in BUILDERS}
+    return {n: e.physics for n, e in ELEMENTS.items()}
 
 
 #: What each element family provides (derived from the element registry).
