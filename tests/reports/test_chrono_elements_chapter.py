@@ -69,8 +69,8 @@ def test_plate_rows_and_checks():
 @pytest.mark.slow   # about 10 s (Newton and the eigenproblem at 16 x 16)
 def test_plate_3443_plane_stress_w_passes_f4_to_f6_miss():
     """The 3443 with ``poisson="plane_stress"``: w within 1 % of Navier (its check passes);
-    f1-f3 within 1 %, f4-f6 miss the 1 % bound by less than 2 % (mesh resolution at
-    16 x 16, see the chapter)."""
+    f1-f3 within 1 %, f4-f6 miss the 1 % bound by less than 2 % (transverse shear locking
+    at 16 x 16, see the chapter and ``tests/checks/test_chrono_locking.py``)."""
     r = ce.plate_row("3443", poisson="plane_stress")
     assert abs(r["w error"]) < ce.PLATE_TOL
     error = [f / g - 1 for f, g in zip(r["f"], r["f ref"])]
