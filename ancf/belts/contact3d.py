@@ -421,7 +421,7 @@ def _add_force(S0, e, q, ww, Fn, n, ft, sk, Qt):
 
 @njit(cache=True)
 def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocities, prm,
-                     want_J, Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
+                     want_J, Q, Kq, Cv, Qw, T, dTq, dTv, dTw, cull=True):
     """Add the contact forces of every plate element on every pulley.
 
     E, V (nel, 12, 3) element coordinates (m, slopes -) and velocities; S0, w from
@@ -432,7 +432,10 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
     T (np,) N m and, if ``want_J``, their exact derivatives on the active branch:
     Kq, Cv (nel, 36, 36) dQ/de, dQ/dedot; Qw (nel, np, 36) dQ/domega_p; dTq, dTv
     (np, nel, 36) dT_p/de, dT_p/dedot; dTw (np,) dT_p/domega_p.  Returns the number
-    of (element, pulley) pairs whose points were evaluated.
+    of (element, pulley) pairs whose points were evaluated.  ``cull``: skip the pairs
+    whose bounds keep them apart (``_may_touch``) and the points outside the cylinder
+    (``_penetrates``), neither of which has a force; False evaluates every point of
+    every pair (the reference the culling is tested against).
     """
     nel, nq = w.shape
     D, G, P, X = np.zeros((4, 7)), np.zeros((3, 7)), np.zeros((16, 3)), np.zeros((16, 3))
@@ -450,7 +453,7 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
         for p in range(radii.shape[0]):
             _unit_axis(axes, p, pax)
             R, om = radii[p], omegas[p]
-            if not _may_touch(P, centres[p], pax, R, X):
+            if cull and not _may_touch(P, centres[p], pax, R, X):
                 continue
             pairs += 1
             if not placed:
@@ -460,7 +463,7 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
             touched = False
             _swap_forces(Q, e, Qt, False)
             for q in range(nq):
-                if not _penetrates(rq, q, centres, p, pax, R):
+                if cull and not _penetrates(rq, q, centres, p, pax, R):
                     continue
                 _mid_velocity(V, S0, e, q, v)
                 for c in range(3):
