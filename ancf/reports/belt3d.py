@@ -15,6 +15,7 @@ import pandas as pd  # noqa: E402
 
 from analytic import bechtel  # noqa: E402
 from ancf.checks import belt3d as bc  # noqa: E402
+from ancf.checks import serpentine_3d as s3  # noqa: E402
 from ancf.checks import thread_plate as tp  # noqa: E402
 from ancf.belts.post3d import contact_sample, line_sample  # noqa: E402
 from ancf.checks.belt2d import run, run_json  # noqa: E402
@@ -23,7 +24,7 @@ from ancf.study.extremes import QUICK_SKIPPED  # noqa: E402
 from ancf.core.quadrature import gauss01  # noqa: E402
 from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure, settings,  # noqa: E402
-                                 write_csv)
+                                 timing_note, write_csv)
 from ancf.reports.animations import report_animation  # noqa: E402
 from ancf.scenes import SCENES  # noqa: E402
 
@@ -223,9 +224,11 @@ def _checks_table(checks: list) -> tuple[list, dict]:
                         "measure": c.measure, "status": "PASS" if c.passed else "FAIL"}
                        for c in checks])
     write_csv(df, "belt3d_checks")
-    return (["## Acceptance checks\n", "Computed by `ancf/checks/belt3d.py` and "
-             "`ancf/checks/thread_plate.py`, each tied to a test of "
-             "`tests/checks/test_belt3d_checks.py` or `tests/checks/test_thread_plate.py` "
+    return (["## Acceptance checks\n", "Computed by `ancf/checks/belt3d.py`, "
+             "`ancf/checks/thread_plate.py` and `ancf/checks/serpentine_3d.py`, each tied to "
+             "a test of `tests/checks/test_belt3d_checks.py`, "
+             "`tests/checks/test_thread_plate.py` or "
+             "`tests/checks/test_serpentine_3d_checks.py` "
              "(data: `data/belt3d_checks.csv`).\n",
              markdown_table(df, 4), ""], dict(zip(df["check"], df["status"])))
 
@@ -266,9 +269,31 @@ def _thread_plate(checks: list) -> list:
             markdown_table(df, 6), ""]
 
 
+def _serpentine_3d(checks: list) -> list:
+    """The serpentine drive as a plate belt against its steady reference and the planar
+    belt (:mod:`ancf.checks.serpentine_3d`)."""
+    progress("belt3d: the serpentine as a plate belt and as the planar belt")
+    got, cpu = s3.compare()
+    checks.extend(s3.checks(got))
+    df = pd.DataFrame([{k: v for k, v in r.items() if k != "kind"} for r in got])
+    write_csv(df, "belt3d_serpentine")
+    timing_note("The serpentine as a plate belt", f"CPU of the runs (`cpu_time_s`): plate "
+                f"{cpu['plate']:.1f} s, planar {cpu['planar']:.1f} s.\n")
+    return ["## The serpentine as a plate belt\n",
+            "`examples/serpentine_3d.toml`: the serpentine drive of `examples/serpentine.toml` "
+            "(crank, tensioner arm and idler on the belt's back, alternator and water pump) on "
+            "`plate36`, one plate across, a membrane, against the steady string of the same "
+            "data (`ancf/belts/drive_steady.py`) and the planar belt of "
+            "`examples/serpentine.toml` with the plate file's time laws and run times. "
+            "Window means; speed differences in %, the arm's in degrees "
+            "(`ancf/checks/serpentine_3d.py`, data: `data/belt3d_serpentine.csv`; the runs' "
+            "CPU times are on the timing page).\n",
+            markdown_table(df, 6), ""]
+
+
 def belt3d_chapter() -> tuple[str, dict]:
     if settings().quick:
-        status = {name: QUICK_SKIPPED for name in (*bc.CHECK_NAMES, tp.NAME)}
+        status = {name: QUICK_SKIPPED for name in (*bc.CHECK_NAMES, tp.NAME, *s3.NAMES)}
         return ("# 3D belt drive (thesis 4.6)\n\n" + intro(None) + "\nReduced configuration: the "
                 "chapter's long runs are skipped.\n", status)
     progress("belt3d: Model 2 (default, 49 and 25 contact points, 30 and 40 plates), Model 1")
@@ -281,16 +306,18 @@ def belt3d_chapter() -> tuple[str, dict]:
     text += report_animation("belt3d")
     text += _convergence_table()
     text += _thread_plate(checks)
+    text += _serpentine_3d(checks)
     table, status = _checks_table(checks)
     return "\n".join(text + table), status
 
 
 CHAPTER = Chapter(
     file="belt3d.md", order=80, generate=belt3d_chapter,
-    checks=("ancf.checks.belt3d", "ancf.checks.thread_plate"),
+    checks=("ancf.checks.belt3d", "ancf.checks.thread_plate", "ancf.checks.serpentine_3d"),
     reads=("speed_accuracy.md",),
     contents="3D belt drive of thin plates (thesis 4.6): Model 2 vs Bechtel (full and "
              "capstan), torque balance per strain measure, tension / det F / speed / "
              "contact forces along the belt (Figs 4.11-4.18), pulley speeds of "
              "Models 1 and 2 (Figs 4.10, 4.16), contact points and element count; "
-             "acceptance checks")
+             "the serpentine as a plate belt against its steady reference and the planar "
+             "belt; acceptance checks")

@@ -15,6 +15,7 @@ import pytest
 
 from ancf.checks.belt3d import CHECK_NAMES as BELT3D_ROWS
 from ancf.checks.thread_plate import NAME as THREAD_PLATE
+from ancf.checks.serpentine_3d import NAMES as SERPENTINE_3D
 from ancf.checks.belt2d import GAUSS_CHECK
 from ancf.checks.belt_drives import SERPENTINE_NAMES
 from ancf.reports.belt_drives import THREAD_NAMES
@@ -206,6 +207,8 @@ AGREES = {
               QUICK_SKIPPED) for name in BELT3D_ROWS[7:]},
     THREAD_PLATE: (("test_thread_plate", "test_plate_within_two_percent_of_the_planar_belt"),
                    QUICK_SKIPPED),
+    **{name: (("test_serpentine_3d_checks", "test_plate_serpentine_within_the_issue_tolerances"),
+              QUICK_SKIPPED) for name in SERPENTINE_3D},
     **{name: (("test_thread", "test_perturbed_copy_fails"), QUICK_SKIPPED)
        for name in THREAD_NAMES},
     **{name: (("test_belt_npulley", "test_serpentine_settles_to_the_steady_reference"),
