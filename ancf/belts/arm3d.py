@@ -30,6 +30,7 @@ from numba import njit
 from ancf.belts.arm2d import COORD, arm_geometry
 from ancf.belts.contact3d import (_control_points, _may_touch, _mid_surface, _point_jacobian,
                                   _point_law, _sides, _unit_axis, contact_forces3d)
+from ancf.belts.flange3d import add_flanges
 from ancf.belts.forces import Drive3D, _carry, drive_forces, moved_centres
 from ancf.common.dispatch import implements
 from ancf.common.leaf import leaf
@@ -124,5 +125,6 @@ def _forces3d_arms(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
         _carry(drive, laws, p, o, odot)
         arm_terms3d(E, V, drive.S0, drive.w, o, odot, drive.axes, drive.radii, omegas,
                     drive.prm, a, p, u, v[j], want_J, arm)
+    add_flanges(E, V, drive.flanges, o, odot, drive.axes, drive.radii, want_J, c)
     return contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas, odot,
                             drive.prm, want_J, *c)

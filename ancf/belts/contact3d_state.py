@@ -36,6 +36,7 @@ from ancf.belts.contact3d import (BATCH, _add_batch, _add_force, _add_jacobians,
                                   _mid_velocity,
                                   _normal_rates, _penetrates, _point_geometry, _positions,
                                   _sides, _swap_forces, _unit_axis)
+from ancf.belts.flange3d import add_flanges
 from ancf.belts.forces import Drive3D, drive_forces, moved_centres
 from ancf.common.dispatch import implements
 from ancf.common.leaf import leaf
@@ -165,6 +166,7 @@ def _forces3d_state(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
     contact with the friction state (:func:`contact_forces3d_state`)."""
     plate36.gradient_tangent(E, drive.element, want_J, g, K)
     o, odot = moved_centres(drive, laws)
+    add_flanges(E, V, drive.flanges, o, odot, drive.axes, drive.radii, want_J, c)
     return contact_forces3d_state(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas,
                                   odot, drive.prm, drive.z, drive.h[0], want_J, *c)
 

@@ -41,6 +41,7 @@ from ancf.belts.drive2d import DriveSpec, PulleyDrive, Rig, thesis_rig
 from ancf.belts.path import laid_belt
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
 from ancf.belts.contact3d_state import Drive3DState
+from ancf.belts.flange3d import NO_FLANGES
 from ancf.belts.forces import Drive3D
 from ancf.elements.plate36 import Plate36
 from ancf.core.pattern import ReducedPattern, scatter
@@ -131,6 +132,7 @@ class Belt3DDrive(PulleyDrive):
                           motions=(CentreMotion(pulley=0, direction=SHIFT, law=self.shift),))
         self.rig = rig
         self.axes = np.tile(AXIS, (rig.radii.size, 1))
+        self.flanges = NO_FLANGES  # flanged pulleys (ancf.belts.flange3d.flanges_of)
         self.z = self._friction_state()
         self.h = np.zeros(1)
 
@@ -213,4 +215,4 @@ class Belt3DDrive(PulleyDrive):
                        free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,
                        arms=r.arms, z=self.z, h=self.h,
                        last=np.zeros((2, r.radii.size)), axes=self.axes, moving=moving,
-                       shift=shift)
+                       shift=shift, flanges=self.flanges)

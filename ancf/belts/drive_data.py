@@ -54,7 +54,12 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   within +-:data:`MAX_ALIGN_DEG`; refused for the 2D belt): ``axis_tilt_deg`` turns it
   toward the running direction of the span entering it (the belt walks along the axis),
   ``axis_roll_deg`` toward the radius to that span's tangent point, both about the mid-face
-  (:mod:`ancf.belts.tracking3d` defines them with a sketch).
+  (:mod:`ancf.belts.tracking3d` defines them with a sketch); a tilt the belt cannot wrap
+  is refused (:func:`ancf.belts.drive_file.wrap_walk`: it would leave the face within its
+  wrap).  A plate belt's pulley other than a tensioner may have flanges (:data:`FLANGES`:
+  ``flanges`` true or false, default false; ``face_width_m``, the face between them, at
+  least the belt's width, default 0: 1.1 b; ``flange_height_m``, default 0.005 m), side
+  walls holding a walking belt (:mod:`ancf.belts.flange3d`).
   Angular velocities are counter-clockwise positive; a load torque T_a resists the
   pulley's running direction (Eq. 3.26 with -T_a; counter-clockwise on the belt's inner
   side, clockwise on its back); a table is ``[[t, value], ...]``, t increasing,
@@ -144,6 +149,24 @@ class Table:
                 or t[0] < 0):
             raise InputError(f"{self.name} = {value!r} is out of range; allowed: {self.allowed()}")
         return rows
+
+
+@dataclass(frozen=True)
+class Switch:
+    """A key whose value is TOML's true or false."""
+
+    name: str
+    default: object = REQUIRED
+    doc: str = ""
+    unit: str = ""
+
+    def allowed(self) -> str:
+        return "true or false"
+
+    def parse(self, value) -> bool:
+        if not isinstance(value, bool):
+            raise InputError(f"{self.name} = {value!r} is not valid; allowed: {self.allowed()}")
+        return value
 
 
 def _keys(*keys) -> dict:
@@ -325,6 +348,16 @@ ALIGNMENT = _keys(
     Param("axis_roll_deg", 0.0, float, "deg", "the axis turned toward the radius to the "
           "entering span's tangent point (about that span's direction; after the tilt)",
           lo=-MAX_ALIGN_DEG, hi=MAX_ALIGN_DEG),
+)
+#: a plate belt pulley's flanges (ancf.belts.flange3d), any pulley's but a tensioner's
+FLANGES = _keys(
+    Switch("flanges", False, "a side wall at each end of the pulley's face, penalty contact "
+           "on the belt's edges (k_p h and c_p h per unit edge length; ancf.belts.flange3d)"),
+    Param("face_width_m", 0.0, float, "m", "the face's width between the flanges (0: the "
+          "belt's width b times 1.1, ancf.belts.flange3d.FACE_CLEARANCE; else at least b)",
+          lo=0, hi=1.0),
+    Param("flange_height_m", 0.005, float, "m", "the flanges' height above the rim (their "
+          "stiffness tapers to 0 over its outer half)", lo=0, lo_open=True, hi=0.1),
 )
 #: every key a pulley law or its time law may take (beyond PULLEY's)
 LAW_PARAMS = {**{k.name: k for role in ROLES.values() for k in role.keys}, **TIME_KEYS}

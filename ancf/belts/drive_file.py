@@ -15,11 +15,14 @@ shorter than half its path or longer than the path; the same at every pulley cen
 ``centre_shift``), a friction law the belt's element does not carry (``plate36`` with a
 tensioner arm: no law with a state), a ``belt.formulation = 'ale'`` the ALE march does
 not carry (the plate belt, a friction law with a state), and a misaligned pulley axis
-(``axis_tilt_deg``, ``axis_roll_deg``) on the 2D belt.
+(``axis_tilt_deg``, ``axis_roll_deg``) on the 2D belt, a tilt the belt cannot wrap
+(:func:`wrap_walk`), and flanges (``flanges``, ``face_width_m``, ``flange_height_m``) on the
+2D belt, on a tensioner or inside the belt (a face narrower than the belt's width).
 """
 from __future__ import annotations
 
 import copy
+import math
 import tomllib
 from dataclasses import replace
 from pathlib import Path
@@ -131,7 +134,10 @@ def _values(table: dict, prefix: str, keys: dict, optional=(), why: str = "") ->
 
 def _no_boolean(name: str, value, key) -> None:
     """TOML's true / false, as a key's value or an entry of a vector or table, is not a
-    number (Python would read it as 1 or 0: ``E = true`` as 1 Pa)."""
+    number (Python would read it as 1 or 0: ``E = true`` as 1 Pa); a
+    :class:`ancf.belts.drive_data.Switch` takes them."""
+    if isinstance(key, dd.Switch):
+        return
     rows = value if isinstance(value, (list, tuple)) else [value]
     entries = [x for row in rows for x in (row if isinstance(row, (list, tuple)) else [row])]
     if any(is_boolean(x) for x in entries):
@@ -186,7 +192,7 @@ def _law_keys(table: dict, prefix: str) -> tuple:
         names += [k for k in dd.ROLES[name].laws[choice].keys if k not in names]
     keys = {k: dd.PULLEY.get(k) or dd.LAW_PARAMS[k] for k in names}
     why = f" (law {name!r}: {', '.join(names[len(dd.PULLEY):])})"
-    return name, {**keys, **dd.MOTION, **dd.ALIGNMENT}, why
+    return name, {**keys, **dd.MOTION, **dd.ALIGNMENT, **dd.FLANGES}, why
 
 
 def _pulley_spec(i: int, table) -> dd.PulleySpec:
@@ -308,6 +314,8 @@ def describe(data: dict) -> dd.DriveDescription:
     friction = _friction(data, element, pulleys)
     _formulation(belt, element, friction)
     _alignment(pulleys, element)
+    _flanges(pulleys, belt, element)
+    _wraps(pulleys, belt, element, path)
     return dd.DriveDescription(belt, pulleys, friction, contact, _run(data), tuple(gravity),
                                path)
 
@@ -338,3 +346,59 @@ def _formulation(belt: dict, element: str, friction: dict) -> None:
                          "a friction state per material point is not carried by the ALE "
                          f"march; allowed: friction.law one of {', '.join(FRICTION_PARAMS)}, "
                          "or belt.formulation = 'lagrangian'")
+
+
+def _flanges(pulleys: tuple, belt: dict, element: str) -> None:
+    """Flanges (:data:`ancf.belts.drive_data.FLANGES`) on the plate belt only, not on a
+    tensioner (its pulley moves with its arm), their face at least the belt's width."""
+    for i, p in enumerate(pulleys):
+        prefix = f"pulleys.{i}."
+        if element != "plate36":
+            for key in dd.FLANGES.values():
+                if p.params[key.name] != key.default:
+                    raise InputError(f"{prefix}{key.name} = {p.params[key.name]!r} is out of "
+                                     f"range for belt.element = {element!r}; allowed: "
+                                     f"{key.default!r} (flanges need belt.element = 'plate36')")
+            continue
+        if p.params["flanges"] and dd.ROLES[p.law].arm:
+            raise InputError(f"{prefix}flanges = true is out of range for law = {p.law!r}; "
+                             "allowed: false (a tensioner's flanges would move with its arm)")
+        face = p.params["face_width_m"]
+        if 0 < face < belt["b"]:
+            raise InputError(f"{prefix}face_width_m = {face!r} is out of range: the flanges "
+                             f"would be inside the belt (belt.b = {belt['b']:g} m); allowed: "
+                             f"0 (1.1 b) or a number in [{belt['b']:g}, 1] m")
+
+
+def wrap_walk(radius: float, wrap: float, tilt_deg: float, roll_deg: float) -> float:
+    """How far (m) a belt entering a tilted pulley walks along its axis over its wrap: the
+    belt keeps its direction of travel where it meets the surface (tracking3d, Eq. 2), so on
+    the cylinder, developed flat, it runs straight at the angle a_e to the circumference,
+    sin a_e = d . p = cos(roll) sin(tilt), and over the wrap angle ``wrap`` (rad) of the
+    radius ``radius`` (m) it moves R wrap tan a_e along the axis.  The belt cannot wrap the
+    pulley when that exceeds its width w: entering at mid-face, it would leave a face of its
+    own width before its wrap ends, and flanges would have to push every point of it a full
+    width back."""
+    s = abs(math.cos(math.radians(roll_deg)) * math.sin(math.radians(tilt_deg)))
+    return radius * wrap * s / math.sqrt(1.0 - s * s)
+
+
+def _wraps(pulleys: tuple, belt: dict, element: str, path) -> None:
+    """Every tilted plate-belt pulley one the belt can wrap: :func:`wrap_walk` <= belt.b;
+    the message gives the tilts allowed at the pulley's roll (within MAX_ALIGN_DEG)."""
+    if element != "plate36":
+        return
+    w = belt["b"]
+    for i, (p, wrap) in enumerate(zip(pulleys, path.wraps)):
+        tilt, roll = p.params["axis_tilt_deg"], p.params["axis_roll_deg"]
+        R = p.radius + belt["contact_offset"]
+        walk = wrap_walk(R, wrap, tilt, roll)
+        if walk <= w:
+            continue
+        s = math.sin(math.atan(w / (R * wrap))) / math.cos(math.radians(roll))
+        limit = min(math.degrees(math.asin(min(1.0, s))), dd.MAX_ALIGN_DEG)
+        raise InputError(f"pulleys.{i}.axis_tilt_deg = {tilt!r} is out of range: the belt "
+                         f"cannot wrap the tilted pulley (it would walk {walk:.3g} m along the "
+                         f"axis over its {math.degrees(wrap):.4g} deg wrap, more than its "
+                         f"width belt.b = {w:g} m); allowed: a number in [-{limit:.4g}, "
+                         f"{limit:.4g}] deg")

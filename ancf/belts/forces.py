@@ -40,6 +40,7 @@ from numba import njit
 from ancf.belts.arm2d import COORD, PULLEY, PRELOAD, STIFFNESS, arm_geometry, arm_terms
 from ancf.belts.contact2d import contact_forces_moving
 from ancf.belts.contact3d import contact_forces3d
+from ancf.belts.flange3d import NO_FLANGES, Flanges, add_flanges
 from ancf.common.dispatch import implements
 from ancf.core.pattern import scatter
 from ancf.elements import dufva2d, plate36
@@ -100,6 +101,7 @@ class Drive3D(NamedTuple):
     axes: np.ndarray     # pulley axes (np, 3)
     moving: np.ndarray   # (m,) int: the pulleys whose centres move (the thesis's driver)
     shift: np.ndarray    # (m, 3) their unit directions (Eq. 4.46: the driver's -e_x)
+    flanges: Flanges = NO_FLANGES  # flanged pulleys' walls (ancf.belts.flange3d)
 
 
 def drive_forces(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
@@ -169,9 +171,11 @@ def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
 
 @implements(drive_forces, Drive3D)
 def _forces3d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
-    """The centres moved by their laws (:func:`moved_centres`)."""
+    """The centres moved by their laws (:func:`moved_centres`); the flanges'
+    walls (:mod:`ancf.belts.flange3d`) where a pulley has them."""
     plate36.gradient_tangent(E, drive.element, want_J, g, K)
     o, odot = moved_centres(drive, laws)
+    add_flanges(E, V, drive.flanges, o, odot, drive.axes, drive.radii, want_J, c)
     return contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas, odot,
                             drive.prm, want_J, *c)
 

@@ -43,14 +43,16 @@ Eq. 3; the plate belt's entry point within 8 % over 0.27 to 2.1 L of travel).
 
 Per pulley, at every output sample (:func:`histories`): ``lateral_position_m``, the mean
 over the belt's contact points on it (penetration > 0, weighted by their areas) of
-(r - f) . p, m; ``axial_force_N``, the pulleys' contact force on the belt along p summed
-over the points, N (the friction's: the normal n is normal to p).
+(r - f) . p, m; ``axial_force_N``, the pulley's contact force on the belt along p summed
+over the points, N (the friction's: the normal n is normal to p), with its flanges' force
+on the belt's edges (:mod:`ancf.belts.flange3d`); ``flange_force_N``, the flanges' part
+alone, N (0 on a pulley without flanges).
 """
 from __future__ import annotations
 
 import numpy as np
 
-from ancf.belts import post3d
+from ancf.belts import flange3d, post3d
 
 
 def pulley_axes(desc) -> np.ndarray:
@@ -77,33 +79,39 @@ def misaligned(desc) -> bool:
 
 def align(drive, desc):
     """The plate belt's ``drive`` with the axes of :func:`pulley_axes` when a pulley is
-    misaligned (an aligned drive is left as built), returned."""
+    misaligned (an aligned drive is left as built) and the flanges of its flanged pulleys
+    (:func:`ancf.belts.flange3d.flanges_of`), returned."""
     if misaligned(desc):
         drive.align(pulley_axes(desc))
+    drive.flanges = flange3d.flanges_of(drive, desc)
     return drive
 
 
 def tracking(drive, x, v, t: float, state=None) -> tuple:
-    """(lateral (np,) m, axial (np,) N) at state (x, v), time t (s): the module docstring's
-    per-pulley quantities (NaN lateral position off contact); ``state`` a friction law's
-    (:func:`ancf.belts.post3d.contact_sample`)."""
+    """(lateral (np,) m, axial (np,) N, flange (np,) N) at state (x, v), time t (s): the
+    module docstring's per-pulley quantities (NaN lateral position off contact); ``state``
+    a friction law's (:func:`ancf.belts.post3d.contact_sample`)."""
     r, d, _, ft = post3d.contact_sample(drive, x, v, t, state)[:4]
-    f = drive.moved(x, v, t)[0].copy()
+    o, odot = drive.moved(x, v, t)
+    f = o.copy()
     f[:, 2] = 0.5 * drive.spec.width
     y = np.einsum("eqpc,pc->eqp", r[:, :, None, :] - f, drive.axes)
     W = drive.w[:, :, None] * (d > 0)
     area = W.sum(axis=(0, 1))
     lateral = np.divide((W * y).sum(axis=(0, 1)), area, out=np.full(area.size, np.nan),
                         where=area > 0)
-    return lateral, np.einsum("eqp,eqpc,pc->p", W, ft, drive.axes)
+    E, V = drive.element_coords(drive.belt(x)), drive.element_coords(drive.belt(v))
+    flange = flange3d.axial_forces(drive, E, V, o, odot)
+    return lateral, np.einsum("eqp,eqpc,pc->p", W, ft, drive.axes) + flange, flange
 
 
 def histories(drive, res) -> list:
-    """Per pulley {"lateral_position_m", "axial_force_N"}: :func:`tracking` at every sample
-    of the march's result ``res`` (its friction state where the law has one)."""
+    """Per pulley {"lateral_position_m", "axial_force_N", "flange_force_N"}: :func:`tracking`
+    at every sample of the march's result ``res`` (its friction state where the law has
+    one)."""
     states = res.extra.get("friction_state", [None] * res.t.size)
     got = [tracking(drive, x, v, float(t), z) for x, v, t, z in zip(res.q, res.v, res.t,
                                                                       states)]
-    lateral, axial = (np.array([g[i] for g in got]) for i in (0, 1))
-    return [{"lateral_position_m": lateral[:, k].tolist(), "axial_force_N": axial[:, k].tolist()}
-            for k in range(lateral.shape[1])]
+    lateral, axial, flange = (np.array([g[i] for g in got]) for i in (0, 1, 2))
+    return [{"lateral_position_m": lateral[:, k].tolist(), "axial_force_N": axial[:, k].tolist(),
+             "flange_force_N": flange[:, k].tolist()} for k in range(lateral.shape[1])]

@@ -406,8 +406,11 @@ RESULTS = {
                                     "contact points, ancf.belts.tracking3d; null off "
                                     "contact), m", required=False, items=NUM),
         "axial_force_N": field("array", "the plate belt's contact force from it along its "
-                               "axis at every sample (summed over the contact points), N",
-                               required=False, items=NUM)}),
+                               "axis at every sample (summed over the contact points, with "
+                               "its flanges'), N", required=False, items=NUM),
+        "flange_force_N": field("array", "its flanges' force on the plate belt's edges along "
+                                "its axis at every sample (ancf.belts.flange3d; 0 without "
+                                "flanges), N", required=False, items=NUM)}),
     "arms": field("array", "per tensioner, in belt order (null when the run stopped)",
                   items="object", nullable=True, keys={
         "name": field(STR, "the tensioner pulley's name"),
