@@ -159,6 +159,8 @@ def _default(key) -> str:
         return "required"
     if callable(d):
         return "computed"
+    if isinstance(d, bool):
+        return f"`{str(d).lower()}`"
     if isinstance(d, tuple):
         return f"`[{', '.join(repr(x) for x in d)}]`"
     if isinstance(d, str):
@@ -222,6 +224,8 @@ def drive_file_page() -> str:
             "Their keys:\n", *_key_table(dd.TIME_KEYS.values()),
             "### Centre motion (any pulley)\n", *_key_table(dd.MOTION.values()),
             "### Axis misalignment (plate belt only)\n", *_key_table(dd.ALIGNMENT.values()),
+            "### Flanges (plate belt only, not on a tensioner)\n",
+            *_key_table(dd.FLANGES.values()),
             "## `[friction]`\n",
             f"`law`: one of {', '.join(f'`{n}`' for n in dd.FRICTION_KEYS)}; every parameter "
             "of the chosen law is required. Units of the planar belt; the plate belt's "

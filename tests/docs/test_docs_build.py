@@ -162,7 +162,8 @@ def test_drive_file_page_lists_every_declared_key():
     from ancf.belts import drive_data as dd
     page = gen_reference.drive_file_page()
     tables = [dd.TOP, dd.BELT, dd.PLATE_BELT, dd.PULLEY, dd.TIME_KEYS, dd.MOTION,
-              dd.ALIGNMENT, dd.RUN, *dd.CONTACT_KEYS.values(), *dd.FRICTION_KEYS.values()]
+              dd.ALIGNMENT, dd.FLANGES, dd.RUN, *dd.CONTACT_KEYS.values(),
+              *dd.FRICTION_KEYS.values()]
     keys = [k for t in tables for k in t.values()]
     keys += [k for role in dd.ROLES.values() for k in role.keys]
     for k in keys:
