@@ -356,9 +356,10 @@ def _flanges(pulleys: tuple, belt: dict, element: str) -> None:
         if element != "plate36":
             for key in dd.FLANGES.values():
                 if p.params[key.name] != key.default:
-                    raise InputError(f"{prefix}{key.name} = {p.params[key.name]!r} is out of "
-                                     f"range for belt.element = {element!r}; allowed: "
-                                     f"{key.default!r} (flanges need belt.element = 'plate36')")
+                    raise InputError(f"{prefix}{key.name} = {_toml(p.params[key.name])} is out "
+                                     f"of range for belt.element = {element!r}; allowed: "
+                                     f"{_toml(key.default)} (flanges need belt.element = "
+                                     "'plate36')")
             continue
         if p.params["flanges"] and dd.ROLES[p.law].arm:
             raise InputError(f"{prefix}flanges = true is out of range for law = {p.law!r}; "
@@ -368,6 +369,11 @@ def _flanges(pulleys: tuple, belt: dict, element: str) -> None:
             raise InputError(f"{prefix}face_width_m = {face!r} is out of range: the flanges "
                              f"would be inside the belt (belt.b = {belt['b']:g} m); allowed: "
                              f"0 (1.1 b) or a number in [{belt['b']:g}, 1] m")
+
+
+def _toml(value) -> str:
+    """A key's value as a drive file writes it (true / false for a boolean)."""
+    return str(value).lower() if isinstance(value, bool) else repr(value)
 
 
 def wrap_walk(radius: float, wrap: float, tilt_deg: float, roll_deg: float) -> float:

@@ -10,6 +10,8 @@ from ancf.cli import main
 from ancf.common.paths import REPO
 
 THREE3D = REPO / "examples" / "three_pulleys_3d.toml"
+THREE2D, SERPENTINE3D = REPO / "examples" / "three_pulleys.toml", REPO / "examples" / \
+    "serpentine_3d.toml"
 A, W, R, H = 0.02, 0.04, 0.05, 0.004  # element length, belt width, radius, flange height, m
 KF, CF = 2.4e5, 6.0                    # N/m^2, N s/m^2 (k_p h, c_p h of three_pulleys_3d)
 
@@ -85,6 +87,20 @@ def test_wrap_walk_is_the_helix_advance():
     assert wrap_walk(R, np.pi, 3.0, 0.0) == pytest.approx(R * np.pi * np.tan(np.radians(3.0)))
     s = np.cos(np.radians(4.0)) * np.sin(np.radians(3.0))
     assert wrap_walk(R, 2.0, 3.0, 4.0) == pytest.approx(R * 2.0 * np.tan(np.arcsin(s)))
+
+
+@pytest.mark.parametrize("path, item, words", [
+    (SERPENTINE3D, "pulleys.tensioner.flanges=true", "pulleys.1.flanges = true is out of "
+     "range for law = 'tensioner'; allowed: false"),
+    (THREE2D, "pulleys.0.flanges=true", "pulleys.0.flanges = true is out of range for "
+     "belt.element = 'dufva2d'; allowed: false"),
+])
+def test_flanges_only_where_they_can_act(path, item, words, capsys):
+    """Flanges on a tensioner (its pulley moves with its arm) or on the 2D belt: one
+    ``error:`` line, exit 2."""
+    assert main(["run", "belt-drive", "--file", str(path), "--set", item]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: ") and words in err[0], err
 
 
 @pytest.mark.parametrize("item, words", [
