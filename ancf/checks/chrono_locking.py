@@ -18,9 +18,10 @@ Square plate (:mod:`ancf.checks.chrono_elements`): the 3443 with its plane-stres
 and the transverse shear moduli G_13, G_23 of its law scaled by ``SHEAR_SCALE``.  The
 Kirchhoff plate (Navier's frequencies) is the limit of a plate whose transverse shear
 stiffness grows without bound: frequencies of a locking-free element approach it from
-below as G_13, G_23 grow (up to its discretisation error).  An element whose frequencies rise far above it carries shear
-strain that the plate does not have: its bilinear fibre r_z cannot follow the cubic
-slopes r_x, r_y of its mid-surface (transverse shear locking).
+below as G_13, G_23 grow (up to its discretisation error).  An element whose frequencies
+rise far above it carries shear strain that the plate does not have: its bilinear fibre
+r_z cannot follow the cubic slopes r_x, r_y of its mid-surface (transverse shear
+locking).
 """
 from __future__ import annotations
 

@@ -45,9 +45,10 @@ def test_recommend_grids_hold_chronos_elements_and_the_thesis_ones(scene, quanti
 @pytest.mark.slow   # about 10 s: six static runs
 def test_recommend_ranks_chrono_runs_with_the_thesis_ones():
     """At 4 elements the Princeton beam's grid is the thesis's four configurations and
-    Chrono's two beams, all converged and none excluded for physics; with the tolerance just above the most accurate
-    Chrono run's error, the pick meets it (a Chrono beam or a cheaper thesis run that is
-    as accurate), and with the element fixed to it, the pick is that run."""
+    Chrono's two beams, all converged and none excluded for physics; with the tolerance
+    just above the most accurate Chrono run's error, the pick meets it (a Chrono beam, or
+    a thesis run as accurate and cheaper), and with the element fixed to it, the pick is
+    that run."""
     res = recommend("princeton-beam", 1.0, fixed={"n_elements": 4}, workers=1, progress=False)
     df = pd.read_parquet(res["evidence"]["source"])
     assert CHRONO_BEAMS <= set(df["element"]) and set(df["status"]) == {"ok"}
