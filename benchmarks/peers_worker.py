@@ -7,8 +7,10 @@ JSON line on its original stdout (anything the codes print goes to stderr).  Cas
 
 * ours: ``cantilever``, ``pendulum-ga``, ``pendulum-dop853``, ``pendulum-ref`` (DOP853
   rtol 1e-10, untimed reference), ``belt`` (scene ``belt2d``; ``{"pending": ...}`` while
-  that scene is not registered), ``reissner`` (geometrically exact rod; with
-  ``"shear_rigid": true`` the extensible Euler-Bernoulli elastica), ``info``;
+  that scene is not registered), ``belt3d`` (scene ``belt3d``, Model 2),
+  ``three-pulleys-3d`` (scene ``belt-drive`` on ``examples/three_pulleys_3d.toml``),
+  ``reissner`` (geometrically exact rod; with ``"shear_rigid": true`` the extensible
+  Euler-Bernoulli elastica), ``info``;
 * exudyn: ``cantilever``, ``pendulum-ga`` (also answers ``pendulum-dop853``: Exudyn runs
   its generalised-alpha there), ``pendulum-ref`` (the same with h = 1e-4, untimed
   reference), ``belt`` (:func:`benchmarks.peers_belt_exudyn.exudyn_belt`; optional
@@ -36,6 +38,7 @@ OUR_CASES = {
     "pendulum-ref": ("pendulum", {"rtol": "1e-10"}),
     "belt": ("belt2d", {}),
     "belt3d": ("belt3d", {}),
+    "three-pulleys-3d": ("belt-drive", {"file": "examples/three_pulleys_3d.toml"}),
 }
 SHEAR_RIGID_KS = 1e9
 EXUDYN_REF_H = 1e-4

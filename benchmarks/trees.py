@@ -34,8 +34,10 @@ ROOT = Path(__file__).resolve().parents[1]
 CASES = (("cantilever", 8, {}, True), ("cantilever", 64, {}, True),
          ("pendulum-ga", 4, {}, True), ("pendulum-ga", 16, {}, True),
          ("pendulum-dop853", 4, {}, False), ("belt", 20, {}, True),
-         ("belt3d", 20, {}, False))
-WARMUP = {"belt": {"t_end": 0.01}, "belt3d": {"t_end": 0.002}}
+         ("belt3d", 20, {}, False), ("three-pulleys-3d", 30, {}, False))
+WARMUP = {"belt": {"t_end": 0.01}, "belt3d": {"t_end": 0.002},
+          "three-pulleys-3d": {"run.t_end": 0.002, "run.steady_window": 0.002,
+                               "run.output_dt": 0.002}}
 
 
 class TreeWorker(peers.Worker):
