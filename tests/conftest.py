@@ -7,8 +7,10 @@ returns its code or exits.  ``examples``: the repository's ``examples/`` folder.
 Tiers: ``make test-fast`` runs every test not marked ``slow`` (``pytest -m "not slow"``),
 ``make test`` all of them; a test that takes more than a few seconds on an idle machine is
 marked ``@pytest.mark.slow`` in its own file.  Under xdist the controller first compiles
-the kernels most files share (:data:`WARM_UP`), so the two workers do not both compile them.
+the kernels most files share (:data:`WARM_UP`), so the two workers do not both compile them,
+and hands the files of :data:`LONG` out first (:func:`pytest_collection_modifyitems`).
 """
+import collections
 import os
 import subprocess
 import sys
@@ -56,6 +58,48 @@ def pytest_sessionstart(session):
         failed = [f for f in ex.map(_warm, WARM_UP) if f]
     for f in failed:
         print(f"warm-up: {f}", file=sys.stderr)
+
+
+#: test files of few tests that run long: under ``--dist loadfile`` a file runs in one
+#: worker, and xdist hands the files out by test count, most first, so these came late
+#: (of 126 files: test_reports.py 76th, test_thread_plate.py 117th) and the last of them
+#: ran on while the other worker idled.  Under xdist without a marker selection (``make
+#: test``) they go out first, in this order (a full run's tails, issue 37: the quick
+#: report ~110 s wall and a second speed-accuracy chapter after it, the chapter's plate
+#: rows ~131 s; the plate belt's module fixture 132 CPU s with its kernels compiling, 13
+#: with them cached), the others after them in xdist's order
+LONG = ("tests/reports/test_reports.py", "tests/reports/test_chrono_elements_chapter.py",
+        "tests/checks/test_thread_plate.py")
+
+
+def _long_first(config) -> bool:
+    """Under xdist (its controller or a worker) without a marker selection."""
+    xdist = getattr(config.option, "numprocesses", None) or hasattr(config, "workerinput")
+    return bool(xdist) and not config.option.markexpr
+
+
+def pytest_configure(config):
+    """``make test``: the controller hands the files out in the order the workers collect
+    them (:func:`pytest_collection_modifyitems`), not in xdist's by test count."""
+    if _long_first(config):
+        config.option.loadscopereorder = False
+
+
+def file_order(items) -> list:
+    """``items`` by file: :data:`LONG`'s files first, in its order, then the others by
+    test count, most first (xdist's own order); a file's tests in their order."""
+    path = {id(i): i.nodeid.split("::", 1)[0] for i in items}
+    count = collections.Counter(path.values())
+    rank = {f: k - len(LONG) for k, f in enumerate(LONG)}   # negative: before the others
+    return sorted(items, key=lambda i: (rank.get(path[id(i)], 0), -count[path[id(i)]],
+                                        path[id(i)]))
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_collection_modifyitems(config, items):
+    """``make test``: each worker collects in :func:`file_order` (both alike)."""
+    if _long_first(config):
+        items[:] = file_order(items)
 
 
 @pytest.fixture(scope="module")
