@@ -266,54 +266,90 @@ def plate_label(row: dict) -> str:
     return row["element"] if row["poisson"] == "3d" else f"{row['element']} ({law})"
 
 
+def locked(row: dict) -> bool:
+    """Whether a plate row is the 3443 with Chrono's 3D law (Poisson locking)."""
+    return row["element"] == "3443" and row["poisson"] == "3d"
+
+
+def plate_w_name(row: dict) -> str:
+    """The name of a plate row's check on w (its element, law and n)."""
+    what = "w × (1 − ν)²/(1 − 2ν)" if locked(row) else "w"
+    return f"Square plate {row['n']} × {row['n']}, {plate_label(row)}: {what} within 1 % of Navier"
+
+
+PLATE_F_NAME = "Square plate, 3833: first six frequencies within 1 % of the analytic plate"
+
+
 def plate_checks(plates: list) -> list:
     """The square plate's checks: every row's w (the locked 3443's times the locking
     factor) within 1 % of Navier, the 3833's six frequencies within 1 %."""
     from ancf.checks.belt2d import Check
     out = []
     for r in plates:
-        locked = r["element"] == "3443" and r["poisson"] == "3d"
-        scale = r["locking"] if locked else 1.0
+        scale = r["locking"] if locked(r) else 1.0
         w = abs(r["w"] * scale / r["Navier w"] - 1)
-        what = "w × (1 − ν)²/(1 − 2ν)" if locked else "w"
-        out.append(Check(f"Square plate {r['n']} × {r['n']}, {plate_label(r)}: {what} within "
-                         "1 % of Navier", r["w"] * scale, r["Navier w"], w, PLATE_TOL, "m",
+        out.append(Check(plate_w_name(r), r["w"] * scale, r["Navier w"], w, PLATE_TOL, "m",
                          "relative"))
-    return out + [Check("Square plate, 3833: first six frequencies within 1 % of the "
-                        "analytic plate", r["f error"], 0.0, r["f error"], PLATE_TOL, "-",
+    return out + [Check(PLATE_F_NAME, r["f error"], 0.0, r["f error"], PLATE_TOL, "-",
                         "largest relative") for r in plates if r["element"] == "3833"]
+
+
+#: the element groups of the static cases' checks
+STATIC_GROUPS = (("3243", "3333"), ("3843",), ("3443", "3833"))
+PRINCETON_UY_NAME = (f"Princeton beam, {cp.N_ELEMENTS} elements: every u_y within "
+                     f"{100 * PRINCETON_TOL['uy']:g} % of ANSYS")
+PRINCETON_FINE_NAME = (f"Princeton beam: the {cp.N_ELEMENTS}-element u_z misses at "
+                       f"{PRINCETON_FINE_BETA:g}° within {100 * PRINCETON_TOL['uz']:g} % at "
+                       f"{PRINCETON_FINE} elements")
+
+
+def static_name(elements: tuple) -> str:
+    return f"Chrono's static cases, {' and '.join(elements)}: within Chrono's tolerances"
+
+
+def solved_names() -> list[str]:
+    """The names of the checks on solved rows (static cases, Princeton beam, square plate),
+    in the order of :func:`checks`: what the reduced configuration skips."""
+    plates = [{"element": el, "poisson": law, "n": PLATE_N} for el, law in PLATE_CASES]
+    return ([static_name(els) for els in STATIC_GROUPS]
+            + [PRINCETON_UY_NAME, PRINCETON_FINE_NAME]
+            + [plate_w_name(r) for r in plates]
+            + [PLATE_F_NAME for r in plates if r["element"] == "3833"])
+
+
+def matrix_checks() -> list:
+    """The stored matrices' checks: per kind the largest difference within its bound."""
+    from ancf.checks import chrono_matrices as cm
+    from ancf.checks.belt2d import Check
+    matrices = cm.table()
+    return [Check(f"Chrono's stored {k} files: every element within {b:g}", worst, 0.0, worst,
+                  b, "-", "largest max abs(ours − Chrono) / max abs(Chrono)")
+            for k, b in (("mass", cm.RTOL_MASS), ("gravity", cm.RTOL_MASS),
+                         ("force", cm.RTOL_FORCE), ("Jacobian", cm.RTOL_JAC))
+            for worst in [max(r["difference"] for r in matrices if r["kind"] == k)]]
 
 
 def checks(static=None, princeton=None, plates=None) -> tuple:
     """The acceptance checks (rows computed here unless given)."""
-    from ancf.checks import chrono_matrices as cm
     from ancf.checks.belt2d import Check
     static = static_rows() if static is None else static
     princeton = princeton_rows() if princeton is None else princeton
     plates = plate_rows() if plates is None else plates
-    matrices = cm.table()
-    out = [Check(f"Chrono's stored {k} files: every element within {b:g}", worst, 0.0, worst,
-                 b, "-", "largest max abs(ours − Chrono) / max abs(Chrono)")
-           for k, b in (("mass", cm.RTOL_MASS), ("gravity", cm.RTOL_MASS),
-                        ("force", cm.RTOL_FORCE), ("Jacobian", cm.RTOL_JAC))
-           for worst in [max(r["difference"] for r in matrices if r["kind"] == k)]]
-    for els in (("3243", "3333"), ("3843",), ("3443", "3833")):
+    out = matrix_checks()
+    for els in STATIC_GROUPS:
         rows = [r for r in static if r["element"] in els]
         worst = max(abs(r["error"]) / r["tolerance"] for r in rows)
         angles = all(r["off-axis [deg]"] < r["angle bound [deg]"] for r in rows)
-        out.append(Check(f"Chrono's static cases, {' and '.join(els)}: within Chrono's "
-                         "tolerances", worst, 0.0, worst if angles else math.inf, 1.0, "-",
+        out.append(Check(static_name(els), worst, 0.0, worst if angles else math.inf, 1.0, "-",
                          "largest abs(error) / Chrono's tolerance (angles: all within)"
                          if angles else "off-axis angles outside Chrono's bounds"))
     coarse = [r for r in princeton if r["n"] == cp.N_ELEMENTS]
     uy = max(abs(r["uy error"]) for r in coarse if r["uy error"] is not None)
-    out.append(Check("Princeton beam, 16 elements: every u_y within 1 % of ANSYS", uy, 0.0,
-                     uy, PRINCETON_TOL["uy"], "-", "largest relative"))
+    out.append(Check(PRINCETON_UY_NAME, uy, 0.0, uy, PRINCETON_TOL["uy"], "-",
+                     "largest relative"))
     fine = [r for r in princeton if r["n"] == PRINCETON_FINE]
     uz = max((abs(r["uz error"]) for r in fine), default=0.0)
-    out.append(Check(f"Princeton beam: the 16-element u_z misses at {PRINCETON_FINE_BETA:g}° "
-                     f"within 0.5 % at {PRINCETON_FINE} elements", uz, 0.0, uz,
-                     PRINCETON_TOL["uz"], "-",
+    out.append(Check(PRINCETON_FINE_NAME, uz, 0.0, uz, PRINCETON_TOL["uz"], "-",
                      "largest relative"))
     out += plate_checks(plates)
     return tuple(out)

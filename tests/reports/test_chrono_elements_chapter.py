@@ -7,7 +7,9 @@ from __future__ import annotations
 import pytest
 
 from ancf.checks import chrono_elements as ce
+from ancf.checks import chrono_locking as cl
 from ancf.checks import chrono_matrices as cm
+from ancf.checks import chrono_princeton as cp
 
 STORED = sorted(p.stem for p in cm.DATA.glob("UT_*.txt"))
 
@@ -79,3 +81,50 @@ def test_plate_3443_plane_stress_w_passes_f4_to_f6_miss():
     (check,) = ce.plate_checks([r])
     assert check.name == "Square plate 16 × 16, 3443 (plane stress): w within 1 % of Navier"
     assert check.passed, check
+
+
+@pytest.mark.slow   # about 10 s after the tests above (their rows are cached)
+def test_the_chapter_renders_its_rows_and_quick_names_its_checks(tmp_path):
+    """The full chapter from the rows solved above (every static case, the Princeton rows
+    of the tests above, the three plates) and a few of the locking diagnosis's (the
+    reduced axial rule on the same Princeton cases, the shear-scaled plates): every check
+    passes, under the names the reduced configuration (``--quick``, which skips the solved
+    rows) lists as skipped, and no CPU time stands on the page (it goes to the timing
+    page)."""
+    import re
+
+    from ancf.reports import chrono_elements as chapter
+    from ancf.reports import output
+    from ancf.study.extremes import QUICK_SKIPPED
+    cases = [("3243", "F2", 0.0), ("3333", "F2", 0.0), ("3243", "F3", 90.0),
+             ("3333", "F3", 90.0)]
+    princeton = [ce.princeton_row(*c) for c in cases] + [
+        ce.princeton_row(el, "F3", 90.0, ce.PRINCETON_FINE) for el in ("3243", "3333")]
+    reduced = [{**ce.princeton_row(*c, cp.N_ELEMENTS, cl.REDUCED_AXIS),
+                "naxis": cl.REDUCED_AXIS} for c in cases]
+    before = output.settings()
+    try:
+        output.configure(tmp_path)
+        output.take_timing()
+        text, status = chapter.chapter_from(ce.static_rows(), princeton, ce.plate_rows(),
+                                            reduced, cl.plate_rows())
+        timing = "\n".join(output.take_timing())
+        output.configure(tmp_path / "quick", quick=True)
+        quick_text, quick = chapter.chrono_elements_chapter()
+        output.take_timing()
+    finally:
+        output.configure(before.root, before.quick)
+    assert set(status.values()) == {"PASS"}
+    assert list(quick) == list(status)
+    solved = dict.fromkeys((*ce.solved_names(), *cl.NAMES), QUICK_SKIPPED)
+    assert {k: v for k, v in quick.items() if v == QUICK_SKIPPED} == solved
+    assert {k: v for k, v in quick.items() if k not in solved} == {
+        k: v for k, v in status.items() if k not in solved}
+    heads = ("## Chrono's textbook static cases", "## The Princeton beam against ANSYS",
+             "### Why u_z misses", "## The simply supported square plate",
+             "### Why the 3443's f4–f6 miss", "## Acceptance checks")
+    assert all(h in text for h in heads), [h for h in heads if h not in text]
+    assert "Reduced configuration" in quick_text and not any(h in quick_text for h in heads[:5])
+    assert not [line for line in text.splitlines()
+                if line.startswith("| ") and re.search(r"\bCPU\b", line)]
+    assert "timing: CPU s" in timing
