@@ -64,12 +64,14 @@ def pytest_sessionstart(session):
 #: worker, and xdist hands the files out by test count, most first, so these came late
 #: (of 126 files: test_reports.py 76th, test_thread_plate.py 117th) and the last of them
 #: ran on while the other worker idled.  Under xdist without a marker selection (``make
-#: test``) they go out first, in this order (a full run's tails, issue 37: the quick
-#: report ~110 s wall and a second speed-accuracy chapter after it, the chapter's plate
-#: rows ~131 s; the plate belt's module fixture 132 CPU s with its kernels compiling, 13
-#: with them cached), the others after them in xdist's order
+#: test``) they go out first, in this order, the others after them in xdist's order.
+#: Each alone, CPU s with --durations (kernels loaded or compiled in it): test_reports
+#: 267 (its quick-report fixture 302 s wall), the chrono_elements chapter 80, the plate
+#: belt's module fixture 132 compiling (13 with its kernels cached), belt3d_checks 72
+#: (a Model 2 run), serpentine_modes 31 (its module fixture)
 LONG = ("tests/reports/test_reports.py", "tests/reports/test_chrono_elements_chapter.py",
-        "tests/checks/test_thread_plate.py")
+        "tests/checks/test_thread_plate.py", "tests/checks/test_belt3d_checks.py",
+        "tests/checks/test_serpentine_modes.py")
 
 
 def _long_first(config) -> bool:
