@@ -16,6 +16,7 @@ import pytest
 from ancf.checks.belt3d import CHECK_NAMES as BELT3D_ROWS
 from ancf.checks.thread_plate import NAME as THREAD_PLATE
 from ancf.checks.serpentine_3d import NAMES as SERPENTINE_3D
+from ancf.checks.belt_tracking3d import ALIGNED as TRACK_ALIGNED, NAMES as TRACK_NAMES
 from ancf.checks.belt2d import GAUSS_CHECK
 from ancf.checks.belt_drives import SERPENTINE_NAMES
 from ancf.reports.belt_drives import THREAD_NAMES
@@ -211,6 +212,9 @@ AGREES = {
                    QUICK_SKIPPED),
     **{name: (("test_serpentine_3d_checks", "test_plate_serpentine_within_the_issue_tolerances"),
               QUICK_SKIPPED) for name in SERPENTINE_3D},
+    TRACK_ALIGNED: (("test_belt3d_tracking", "test_aligned_drive_does_not_walk"), QUICK_SKIPPED),
+    **{name: (("test_belt3d_tracking", "test_entry_walk_follows_the_held_span_reference"),
+              QUICK_SKIPPED) for name in TRACK_NAMES[1:]},
     **{name: (("test_thread", "test_perturbed_copy_fails"), QUICK_SKIPPED)
        for name in THREAD_NAMES},
     **{name: (("test_belt_npulley", "test_serpentine_settles_to_the_steady_reference"),
