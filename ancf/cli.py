@@ -323,9 +323,8 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"error: {message} (see '{self.prog} --help')\n")
 
 
-def main(argv=None) -> int:
-    if "numpy" not in sys.modules:  # the console script: pin BLAS before it loads (free)
-        one_blas_thread()
+def build_parser() -> argparse.ArgumentParser:
+    """The command line's parser (the docs' CLI reference reads it too)."""
     ap = _Parser(prog="ancf", description="ANCF benchmark suite")
     sub = ap.add_subparsers(dest="cmd", required=True)
     p = sub.add_parser("scenes", help="list the scenes and their parameters")
@@ -400,7 +399,13 @@ def main(argv=None) -> int:
     p.add_argument("--time-limit", type=_positive(float), default=300.0, metavar="SECONDS")
     p.add_argument("--no-progress", action="store_true")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    args = ap.parse_args(argv)
+    return ap
+
+
+def main(argv=None) -> int:
+    if "numpy" not in sys.modules:  # the console script: pin BLAS before it loads (free)
+        one_blas_thread()
+    args = build_parser().parse_args(argv)
     # A process running one scene: the collector is held while the modules load, and the
     # loaded objects frozen out of its passes (they live as long as the process); its
     # full passes over numba's objects would otherwise cost 0.07 s CPU (see _dispatch).
