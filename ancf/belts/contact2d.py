@@ -81,11 +81,11 @@ def contact_points(lengths, gauss_points):
 
 
 @njit(cache=True)
-def _control_disc(E, e, l):
-    """A disc (centre cx, cy, radius rb; m) enclosing the element's centreline: the cubic
-    Hermite centreline lies in the convex hull of its Bezier control points r^I,
-    r^I + l r_x^I / 3, r^J - l r_x^J / 3, r^J (cubic2d: S2 = l (xi - 2 xi^2 + xi^3), so
-    r_x is per metre), hence in the disc about their mean through the farthest."""
+def _may_touch(E, e, l, o0, o1, R):
+    """False only if the element's centreline provably stays outside the pulley disc:
+    the cubic Hermite centreline lies in the convex hull of its Bezier control points
+    r^I, r^I + l r_x^I / 3, r^J - l r_x^J / 3, r^J (cubic2d: S2 = l (xi - 2 xi^2 + xi^3),
+    so r_x is per metre), hence in any disc enclosing them."""
     p0x, p0y = E[e, 0, 0], E[e, 0, 1]
     p3x, p3y = E[e, 3, 0], E[e, 3, 1]
     p1x, p1y = p0x + l * E[e, 1, 0] / 3.0, p0y + l * E[e, 1, 1] / 3.0
@@ -93,23 +93,8 @@ def _control_disc(E, e, l):
     cx, cy = 0.25 * (p0x + p1x + p2x + p3x), 0.25 * (p0y + p1y + p2y + p3y)
     rb = max(np.hypot(p0x - cx, p0y - cy), np.hypot(p1x - cx, p1y - cy),
              np.hypot(p2x - cx, p2y - cy), np.hypot(p3x - cx, p3y - cy))
-    return cx, cy, rb
-
-
-@njit(cache=True)
-def _disc_may_touch(cx, cy, rb, o0, o1, R):
-    """False only if the disc (cx, cy, rb) (:func:`_control_disc`) lies outside the pulley
-    disc (o0, o1, R), with the margin BOUND_MARGIN."""
     dist = np.hypot(cx - o0, cy - o1)
     return dist - rb <= R + BOUND_MARGIN * (dist + rb + R)
-
-
-@njit(cache=True)
-def _may_touch(E, e, l, o0, o1, R):
-    """False only if the element's centreline provably stays outside the pulley disc
-    (:func:`_control_disc`, :func:`_disc_may_touch`)."""
-    cx, cy, rb = _control_disc(E, e, l)
-    return _disc_may_touch(cx, cy, rb, o0, o1, R)
 
 
 def _trial_storage(z):
@@ -263,10 +248,9 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
         l = 0.0
         for g in range(ng):
             l += w[e, g]
-        cx, cy, rb = _control_disc(E, e, l)  # once for every pulley
         for p in range(radii.shape[0]):
             o0, o1, R = centres[p, 0], centres[p, 1], radii[p]
-            if not _disc_may_touch(cx, cy, rb, o0, o1, R):
+            if not _may_touch(E, e, l, o0, o1, R):
                 _clear_trials(z, e, p)
                 continue
             pairs += 1

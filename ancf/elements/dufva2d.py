@@ -171,7 +171,7 @@ def gradient_tangent(E, data, want_K, g, K):
     nd = 2 * E.shape[1]
     gI, gJ, gw = np.empty(4), np.empty(4), np.empty(7)
     hI, hJ, H = np.empty((4, 4)), np.empty((4, 4)), np.empty((7, 7))
-    R, HJ = np.empty((3, nd)), np.empty((7, nd))
+    Jv, HJ = np.empty((7, nd)), np.empty((7, nd))
     Ke = np.empty((nd, nd))
     ge, He = np.empty(7), np.zeros((7, 7))
     for e in range(nel):
@@ -194,14 +194,18 @@ def gradient_tangent(E, data, want_K, g, K):
                 _add_engineering(k[6], a0, a1, c0, c1, s, sx, want_K, gw, H, ge, He)
             _add_point_gradient(g, e, q, ww, z, inv_l, BX, BXX, gI, gJ, E, gw)
             if want_K:
-                _slope_rows(e, z, inv_l, gI, gJ, E, R)
-                _add_point_tangent(Ke, ww, BX[e, q], BXX[e, q], R, H, HJ)
+                _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
+                _add_point_tangent(Ke, ww, Jv, H, HJ)
                 bI += ww * ((1.0 - z) * gw[4] - inv_l * gw[5])
                 bJ += ww * (z * gw[4] + inv_l * gw[5])
                 wI += ww * (1.0 - z) * gw[6]
                 wJ += ww * z * gw[6]
         if want_K:
-            _add_symmetric(K, e, Ke, bI, bJ, hI, hJ, wI, wJ)
+            for a in range(nd):
+                for b in range(a + 1, nd):
+                    Ke[b, a] = Ke[a, b]
+            _add_nodal_curvature(Ke, bI, bJ, hI, hJ, wI, wJ)
+            K[e] += Ke
 
 
 @njit(cache=True)
@@ -230,83 +234,37 @@ def _add_point_gradient(g, e, q, ww, z, inv_l, BX, BXX, gI, gJ, E, gw):
 
 
 @njit(cache=True)
-def _slope_rows(e, z, inv_l, gI, gJ, E, R):
-    """R (3, 12): the rows s, s_x and eps_yy (4, 5, 6) of the point Jacobian
-    (:func:`_point_jacobian`) in the columns where they may be nonzero, formed as there:
-    s and s_x in the nodal slopes' columns 2 m + d (m % 3 = 1, 2), eps_yy in r_y's
-    (m % 3 = 2); the other entries are not written."""
-    for d in range(2):
-        for slot in range(1, 3):
-            i = 2 * (slot - 1) + d
-            bI, bJ = 2 * slot + d, _NODE + 2 * slot + d
-            R[0, bI] = (1.0 - z) * gI[i]
-            R[1, bI] = -gI[i] * inv_l
-            R[0, bJ] = z * gJ[i]
-            R[1, bJ] = gJ[i] * inv_l
-        R[2, 4 + d] = (1.0 - z) * E[e, 2, d]
-        R[2, _NODE + 4 + d] = z * E[e, 5, d]
-
-
-@njit(cache=True)
-def _add_point_tangent(Ke, ww, bx, bxx, R, H, HJ):
-    """Ke += ww Jv^T H Jv (upper triangle) for the point Jacobian Jv (:func:`_point_jacobian`)
-    with rows a = bx (row d), c = bxx (row 2 + d) in every column 2 m + d (bx, bxx (6,):
-    BX, BXX at the point) and the rows s, s_x, eps_yy of :func:`_slope_rows` (R): the sums
-    of :func:`ancf.elements.compiled_element.add_point_tangent` bit for bit, over the rows of
-    Jv that may be nonzero in each column, in increasing order from 0.0 (the terms left
-    out are products with an exact zero; half the products, loops of known length, and
-    Jv never formed)."""
-    for b in range(2 * _SHAPES):
-        m, d = b // 2, b % 2
-        slot = m % 3
-        jx, jxx = bx[m], bxx[m]
-        for i in range(7):
-            acc = 0.0 + H[i, d] * jx
-            acc += H[i, 2 + d] * jxx
-            if slot != 0:
-                acc += H[i, 4] * R[0, b]
-                acc += H[i, 5] * R[1, b]
-                if slot == 2:
-                    acc += H[i, 6] * R[2, b]
-            HJ[i, b] = ww * acc
-    for a in range(2 * _SHAPES):
-        m, d = a // 2, a % 2
-        slot = m % 3
-        jx, jxx = bx[m], bxx[m]
-        for b in range(a, 2 * _SHAPES):
-            acc = 0.0 + jx * HJ[d, b]
-            acc += jxx * HJ[2 + d, b]
-            if slot != 0:
-                acc += R[0, a] * HJ[4, b]
-                acc += R[1, a] * HJ[5, b]
-                if slot == 2:
-                    acc += R[2, a] * HJ[6, b]
-            Ke[a, b] += acc
-
-
-@njit(cache=True)
-def _add_symmetric(K, e, Ke, bI, bJ, hI, hJ, wI, wJ):
-    """K[e] += Ke with Ke's lower triangle its upper's and the nodal quantities' second
-    derivatives added (:func:`_add_nodal_curvature`, in its order: bK d2s^K, then yK on
-    r_y's diagonal), each entry formed once for both triangles (hI, hJ are symmetric bit
-    for bit: the generated Hessians assign both halves one value)."""
-    for a in range(2 * _SHAPES):
-        for b in range(a, 2 * _SHAPES):
-            v = Ke[a, b]
-            ma, mb = a // 2, b // 2
-            if ma // 3 == mb // 3 and ma % 3 != 0 and mb % 3 != 0:  # one node's slopes
-                i, j = a % _NODE - 2, b % _NODE - 2
-                if ma // 3 == 0:
-                    v += bI * hI[i, j]
-                    if a == b and ma % 3 == 2:
-                        v += wI
-                else:
-                    v += bJ * hJ[i, j]
-                    if a == b and ma % 3 == 2:
-                        v += wJ
-            K[e, a, b] += v
-            if b != a:
-                K[e, b, a] += v
+def _add_point_tangent(Ke, ww, Jv, H, HJ):
+    """Ke += ww Jv^T H Jv (upper triangle): the sums of
+    :func:`ancf.elements.compiled_element.add_point_tangent` bit for bit, over the rows of
+    Jv (:func:`_point_jacobian`) that may be nonzero in column 2 m + d, in increasing order
+    from 0.0: a (row d) and c (row 2 + d) of every shape function m, s and s_x (rows 4, 5)
+    of the nodal slopes r_x, r_y (m % 3 = 1, 2), eps_yy (row 6) of r_y (the terms left
+    out are products with an exact zero; half the products, loops of known length)."""
+    for i in range(7):
+        for m in range(_SHAPES):
+            for d in range(2):
+                b = 2 * m + d
+                acc = 0.0 + H[i, d] * Jv[d, b]
+                acc += H[i, 2 + d] * Jv[2 + d, b]
+                if m % 3 != 0:
+                    acc += H[i, 4] * Jv[4, b]
+                    acc += H[i, 5] * Jv[5, b]
+                    if m % 3 == 2:
+                        acc += H[i, 6] * Jv[6, b]
+                HJ[i, b] = ww * acc
+    for m in range(_SHAPES):
+        for d in range(2):
+            a = 2 * m + d
+            for b in range(a, 2 * _SHAPES):
+                acc = 0.0 + Jv[d, a] * HJ[d, b]
+                acc += Jv[2 + d, a] * HJ[2 + d, b]
+                if m % 3 != 0:
+                    acc += Jv[4, a] * HJ[4, b]
+                    acc += Jv[5, a] * HJ[5, b]
+                    if m % 3 == 2:
+                        acc += Jv[6, a] * HJ[6, b]
+                Ke[a, b] += acc
 
 
 @njit(cache=True)
