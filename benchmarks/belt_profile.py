@@ -5,7 +5,8 @@ timed on its own (median of repeated calls at the run's last state, warm) and
 multiplied by the number of calls the run's counters report:
 
 * elastic forces: the belt element kernel, with the tangent on Jacobian evaluations, and
-  the belt's strain-rate damping where it has any;
+  the belt's strain-rate damping where it has any, with the part of the iteration matrix
+  the drive's ``run.damping_jacobian`` asks for (``rate``: dQ_d/dz' only, as the march);
 * contact: the contact kernel (with the friction law's state where it has one), with its
   Jacobians on Jacobian evaluations;
 * linear algebra: per factorisation the band LU plus the solve for the border
@@ -26,7 +27,7 @@ import time
 import numpy as np
 
 from ancf.belts.contact2d import contact_forces_moving
-from ancf.elements.dufva2d import damping_forces, gradient_tangent
+from ancf.elements.dufva2d import damping_parts, gradient_tangent
 from ancf.solvers import banded
 from ancf.belts.forces import gather
 
@@ -57,6 +58,7 @@ def kernel_costs(drive, x, v, omegas) -> dict:
     h = 1e-4 if z is not None else 0.0
     o, odot = drive.moved(x, v)
     damping = drive.strain_damping
+    rate = drive.damping_jacobian == 1  # DAMPING_JACOBIANS: dQ_d/dz' alone
 
     def contact(J):
         return lambda: contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii,
@@ -67,7 +69,7 @@ def kernel_costs(drive, x, v, omegas) -> dict:
         def fn():
             gradient_tangent(E, eld, J, g, K)
             if damping.any():
-                damping_forces(E, V, eld, damping, J, g, K, Cv)
+                damping_parts(E, V, eld, damping, J and not rate, J, g, K, Cv)
         return fn
     return {"elastic": _per_call(elastic(False)), "elastic_tangent": _per_call(elastic(True)),
             "contact": _per_call(contact(False)), "contact_jacobian": _per_call(contact(True)),
