@@ -17,7 +17,8 @@ PIPED_EVERY_S = 15.0
 
 class Ticker:
     """``ticker(t)`` at simulated time t (s) of a run ending at ``t_end`` (s) prints
-    ``label: t = ... / t_end s (elapsed s)`` when ``every`` wall seconds have passed since
+    ``progress: label: t = ... / t_end s (elapsed s)`` (stderr's lines are ``error:``,
+    ``warning:`` or ``progress:``) when ``every`` wall seconds have passed since
     the last line (or the start)."""
 
     def __init__(self, label: str, t_end: float, every: float | None = None, stream=None):
@@ -30,6 +31,7 @@ class Ticker:
     def __call__(self, t: float) -> None:
         now = time.monotonic()
         if now - self.last >= self.every:
-            print(f"{self.label}: t = {t:.4g} / {self.t_end:g} s ({now - self.start:.0f} s)",
+            print(f"progress: {self.label}: t = {t:.4g} / {self.t_end:g} s "
+                  f"({now - self.start:.0f} s)",
                   file=self.stream, flush=True)
             self.last = now

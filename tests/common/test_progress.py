@@ -41,7 +41,7 @@ def test_ticker_prints_only_after_its_interval(monkeypatch):
         clock.now += dt_wall
         tick(t)
     lines = out.getvalue().splitlines()
-    assert lines == ["belt-drive: t = 0.3 / 2.45 s (16 s)"]  # 5 + 9 + 1.5 >= 15 s, once
+    assert lines == ["progress: belt-drive: t = 0.3 / 2.45 s (16 s)"]  # 5 + 9 + 1.5 >= 15 s, once
 
 
 def test_piped_interval_is_under_twenty_seconds_and_a_terminal_faster():
@@ -61,8 +61,9 @@ def test_a_piped_drive_run_prints_progress_lines(monkeypatch, capsys):
                "--set", "belt.n_elements=24", "--set", "run.t_end=0.004", "--set", "run.steady_window=0.002", "--json"])
     out, err = capsys.readouterr()
     assert rc == 0 and json.loads(out)["converged"]
-    lines = [ln for ln in err.splitlines() if ln.startswith("belt-drive: t = ")]
-    assert len(lines) >= dynamics.CHUNKS and lines[-1].startswith("belt-drive: t = 0.004 / 0.004 s")
+    lines = [ln for ln in err.splitlines() if ln.startswith("progress: belt-drive: t = ")]
+    assert len(lines) >= dynamics.CHUNKS
+    assert lines[-1].startswith("progress: belt-drive: t = 0.004 / 0.004 s")
 
 
 def test_chunks_equal_parts_or_timed(monkeypatch):

@@ -20,7 +20,7 @@ DATA = Path(__file__).parents[1] / "data"
 #: issue 15's fuzz; the later files add cases of their own, one area each
 FIRST = DATA / "fuzz_cli.json"
 CASES = [c for f in sorted(DATA.glob("fuzz_*.json")) for c in json.loads(f.read_text())["cases"]]
-STDERR_PREFIXES = ("error: ", "warning: ", "sweep ")
+STDERR_PREFIXES = ("error: ", "warning: ", "sweep ", "progress: ")
 
 
 def strict_loads(text):
