@@ -308,10 +308,11 @@ class _NamesHelp(str):
         return obj
 
     def __mod__(self, params):
-        if self.cmd == "run":
-            from ancf.scenes import MODULES as names
-        else:
-            from ancf.scenes.analytic import REFERENCES as names
+        from pathlib import Path
+
+        from ancf.common.paths import declared
+        folder = Path(__file__).parent / "scenes" / ("" if self.cmd == "run" else "analytic")
+        names = (m.replace("_", "-") for m in declared(folder))  # files read, none imported
         return f"one of: {', '.join(names)} (parameters: ancf scenes NAME)"
 
 

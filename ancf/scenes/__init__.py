@@ -86,7 +86,7 @@ def __getattr__(name):
         raise AttributeError(name)
     if name == "MODULES":
         #: scene name -> its module below ancf.scenes (the order of SCENES)
-        from ancf.scenes.base import declared
+        from ancf.common.paths import declared
         value = {module.replace("_", "-"): module for module in declared(FOLDER)}
     else:
         value = {n: scene(n) for n in __getattr__("MODULES")}

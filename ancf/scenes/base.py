@@ -29,9 +29,7 @@ from __future__ import annotations
 
 import time
 import dataclasses
-import re
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Callable, NamedTuple
 
 from ancf.common.compile_time import compile_cpu
@@ -45,18 +43,6 @@ from ancf.solvers.linear import Singular
 STEEL_DENSITY = Param("rho", 7850.0, float, "kg/m^3",
                       "density (ancf modes only: the static run needs no mass; default steel)",
                       lo=0, lo_open=True)
-
-
-def declared(folder: Path, constant: str = "ORDER") -> dict[str, int]:
-    """{module: place} of the modules in ``folder`` that declare their place in a list
-    (``ORDER = <int>``, or another ``constant``, at the start of a line), in that order;
-    read, not imported."""
-    found = {}
-    for path in folder.glob("*.py"):
-        m = re.search(rf"^{constant} = (\d+)", path.read_text(), flags=re.M)
-        if m:
-            found[path.stem] = int(m.group(1))
-    return dict(sorted(found.items(), key=lambda item: item[1]))
 
 
 NUM, INT, STR, BOOL = "number", "integer", "string", "boolean"

@@ -54,7 +54,7 @@ def __getattr__(name):
     if name not in ("SPECS", "FREQUENCY_SPECS"):
         raise AttributeError(name)
     from ancf.scenes import FOLDER, SCENES
-    from ancf.scenes.base import declared
+    from ancf.common.paths import declared
     if name == "SPECS":
         value = {n: s.study for n, s in SCENES.items() if s.study is not None}
     else:

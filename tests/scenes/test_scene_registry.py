@@ -7,7 +7,7 @@ import pytest
 
 import ancf.scenes as scenes
 from ancf.scenes.analytic import DYNAMIC_REFERENCES, REFERENCES
-from ancf.scenes.base import declared
+from ancf.common.paths import declared
 
 
 def test_declared_lists_the_files_that_declare_a_place_in_their_order(tmp_path):

@@ -11,7 +11,7 @@ from __future__ import annotations
 import importlib
 from pathlib import Path
 
-from ancf.scenes.base import declared
+from ancf.common.paths import declared
 
 _MODULES = [importlib.import_module(f"{__name__}.{m}") for m in declared(Path(__file__).parent)]
 
