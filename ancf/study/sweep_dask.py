@@ -57,6 +57,25 @@ def _identity(address) -> dict:
         return pool.submit(asyncio.run, asyncio.wait_for(ask(), SCHEDULER_TIMEOUT)).result()
 
 
+def _refused_at_once(address) -> None:
+    """Raise ``ConnectionRefusedError`` (or ``OverflowError`` for a port past 65535) at
+    once where a ``tcp://HOST:PORT`` (or ``HOST:PORT``) has nothing listening, instead of
+    the Dask client's retries until :data:`SCHEDULER_TIMEOUT`; any other address or outcome
+    is left to :func:`_identity`."""
+    import socket
+    host, sep, port = str(address).removeprefix("tcp://").rpartition(":")
+    if not sep or not host or not port.isdigit():
+        return
+    if int(port) > 65535:
+        raise OverflowError(f"port {port} past 65535")
+    try:
+        socket.create_connection((host.strip("[]"), int(port)), timeout=SCHEDULER_TIMEOUT).close()
+    except (ConnectionRefusedError, OverflowError):
+        raise
+    except OSError:  # unreachable, timed out, unresolvable: the Dask path reports it
+        return
+
+
 def _connect(address):
     """A Dask client, or one line naming the address when nothing answers as a Dask
     scheduler within SCHEDULER_TIMEOUT seconds (a closed port, another server, a
@@ -64,6 +83,7 @@ def _connect(address):
     from distributed import Client
     where = f"--scheduler {address}"
     try:
+        _refused_at_once(address)
         reply = _identity(address)
     except (ValueError, TypeError) as exc:
         raise InputError(f"{where}: not a scheduler address ({exc}); allowed: "

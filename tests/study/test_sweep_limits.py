@@ -187,6 +187,25 @@ def test_a_scheduler_address_where_no_scheduler_answers_fails_in_seconds(cli, tm
     assert not (tmp_path / "x.csv").exists()
 
 
+def test_a_closed_port_is_refused_at_once_and_a_listening_one_goes_on_to_dask():
+    """A refused TCP connection (nothing listens) or a port past 65535 ends the wait at
+    once, with the error the Dask path gives after its retries; a port where something
+    listens is left to the ``identity`` hand-shake (:func:`_identity`)."""
+    from ancf.study.sweep_dask import _refused_at_once
+    with pytest.raises(ConnectionRefusedError):
+        _refused_at_once(f"tcp://127.0.0.1:{_free_port()}")
+    with pytest.raises(ConnectionRefusedError):
+        _refused_at_once(f"127.0.0.1:{_free_port()}")
+    with pytest.raises(OverflowError):
+        _refused_at_once("tcp://127.0.0.1:99999")
+    httpd = http.server.HTTPServer(("127.0.0.1", 0), _Quiet)
+    try:
+        assert _refused_at_once(f"tcp://127.0.0.1:{httpd.server_address[1]}") is None
+    finally:
+        httpd.server_close()
+    assert _refused_at_once("inproc://x") is None  # not TCP: the Dask path judges it
+
+
 def test_lost_workers_and_retried_runs_are_counted_from_the_scheduler_events():
     ours = ["ancf-sweep-a-1", "ancf-sweep-b-1", "ancf-sweep-c-1"]
     events = [
