@@ -44,19 +44,29 @@ def pareto(df: pd.DataFrame, cost: str = "work", err: str = "error") -> pd.DataF
     return d.loc[keep]
 
 
+def _schemes(element: str) -> bool:
+    """Whether ``element`` takes the ``integration`` knob (the thesis's beams); the belt
+    elements and Chrono's elements integrate by their own rules."""
+    from ancf.elements.registry import ELEMENTS
+    return element in ELEMENTS and bool(getattr(ELEMENTS[element].cls, "schemes", None))
+
+
 def _model(row, dynamic: bool) -> str:
-    if isinstance(row.get("element"), str) and isinstance(row.get("integration"), str):
-        s = f"{row['element']} / {row['integration']}"
+    """A run's model as the tables and legends name it: the element, with its integration
+    scheme or Gauss rule where it takes one, and the integrator of a dynamic run."""
+    element = row.get("element")
+    if isinstance(element, str) and isinstance(row.get("integration"), str):
+        s = f"{element} / {row['integration']}" if _schemes(element) else element
+    elif isinstance(element, str) and element not in ("plate36",) and "ng" in row:
+        s = element  # Chrono's shells: their own rule, ng is not theirs
     elif "gauss_points" in row:
         s = f"{int(row['gauss_points'])} contact points"
     elif "contact_points" in row:
         s = f"{int(row['contact_points'])} contact points per plate"
     elif "elastic_points" in row:
         s = f"{int(row['elastic_points'])} elastic points"
-    else:  # the plates (plate36's Gauss rule; Chrono's shells take their own)
+    else:  # plate36's Gauss rule
         s = f"{int(row['ng'])} × {int(row['ng'])} Gauss points"
-        if isinstance(row.get("element"), str) and row["element"] != "plate36":
-            s = f"{row['element']} / {s}"
     if dynamic:
         integ = row.get("integrator")
         s += f" / {integ}"

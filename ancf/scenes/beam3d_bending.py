@@ -64,7 +64,7 @@ def study():
                          measure)}
     return SceneSpec("beam3d-bending", STATIC_KNOBS, frozenset({"bending", "large-rotation",
                                                                  "3D"}),
-                     refs, "published", report_grids=b3.PUBLISHED_GRIDS,
+                     refs, "published", report_grids=b3.RECOMMEND_GRIDS,
                      recommend_grids=b3.RECOMMEND_GRIDS,
                      notes="3D general bending (Mx = 0.5e6, My = 2e6 N m) against ANSYS.")
 

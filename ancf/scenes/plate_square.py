@@ -252,7 +252,7 @@ def study():
         measure="relative centre-deflection error")}
     grid = ({"n_elements": [2, 4, 8, 16, 32], "ng": [4]},)
     return SceneSpec("plate-square", PLATE_KNOBS, frozenset({"bending", "3D"}), refs, "navier",
-                     report_grids=grid, recommend_grids=grid + (SHELL_GRID,),
+                     report_grids=grid + (SHELL_GRID,), recommend_grids=grid + (SHELL_GRID,),
                      provides=frozenset({"bending", "3D"}),
                      notes="Simply supported square plate (linear) against Navier's series.")
 
@@ -266,7 +266,7 @@ def frequency_study():
         f"(`analytic/plate_modes.py`); {FREQUENCY_ERROR}", _navier_modes, frequency_error)}
     grid = ({"n_elements": [2, 4, 6, 8, 12, 16, 24], "ng": [3, 4]},)
     return SceneSpec("plate-square", PLATE_KNOBS, frozenset({"bending", "3D"}), refs, name,
-                     report_grids=grid, recommend_grids=grid + (SHELL_GRID,),
+                     report_grids=grid + (SHELL_GRID,), recommend_grids=grid + (SHELL_GRID,),
                      provides=frozenset({"bending", "3D"}), quantity="frequency",
                      notes="The simply supported square plate's lowest frequencies against "
                            "Navier.")

@@ -80,7 +80,7 @@ def study():
         "self": b3.self_study("princeton-beam", ("tip_x", "tip_y", "tip_z"), _yz_error, what, measure)}
     return SceneSpec("princeton-beam", STATIC_KNOBS,
                      frozenset({"bending", "large-rotation", "3D"}), refs, "published",
-                     report_grids=b3.PUBLISHED_GRIDS, recommend_grids=b3.RECOMMEND_GRIDS,
+                     report_grids=b3.RECOMMEND_GRIDS, recommend_grids=b3.RECOMMEND_GRIDS,
                      notes="The Princeton beam, F2 at 0° (defaults), against ANSYS beam "
                            "elements.")
 
