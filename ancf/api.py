@@ -203,6 +203,29 @@ class Result:
         check_directory(directory)
         return write_run(self.scene, self.extra, directory, per_element)[0]
 
+    def write_gif(self, path, *, title: str = "") -> Path:
+        """Write a belt drive's run (``belt2d``, ``belt3d``, ``belt-drive``) as an animated
+        GIF at ``path`` (what ``ancf run SCENE --gif PATH`` writes: the belt coloured by
+        its axial force in N, the pulleys named, one frame per output step from t = 0, at
+        most 80); returns the path.  Raises InputError for another scene or a bad path.
+
+        Parameters
+        ----------
+        path : str or Path
+            The file to write, ending in ``.gif``; its folder is created if missing.
+        title : str
+            The title over the animation (default ``ancf run SCENE``).
+
+        Returns
+        -------
+        Path
+            ``path``.
+        """
+        from ancf.reports.animations import animate
+        from ancf.scenes.vtk import check_gif
+        gif = check_gif(self.scene, path)
+        return animate(self.scene, gif, self.extra, title=title or f"ancf run {self.scene}").path
+
 
 def _result(command: str, scene: str, out: dict, res) -> Result:
     """The :class:`Result` of a run's public JSON ``out`` and its scene result ``res``."""

@@ -108,18 +108,35 @@ def _scenes(name: str | None = None) -> int:
 def _run(registry, kind, args) -> int:
     if args.name not in registry:
         raise InputError(f"{kind}: unknown name {args.name!r}; allowed: {', '.join(registry)}")
-    vtk = getattr(args, "vtk", None)
-    if vtk is not None:  # --vtk: the input, then the directory, checked before the run
-        from ancf.scenes.vtk import check_directory
+    vtk, gif = getattr(args, "vtk", None), getattr(args, "gif", None)
+    if vtk is not None or gif is not None:  # the input, then the paths, checked before the run
+        from ancf.scenes.vtk import check_directory, check_gif
         registry[args.name].resolve(_overrides(args))
-        check_directory(vtk)
+        if vtk is not None:
+            check_directory(vtk)
+        if gif is not None:
+            gif = check_gif(args.name, gif)
     out, res = registry[args.name].execute(_overrides(args))
     if vtk is not None:
         from ancf.scenes.vtk import write_run
         pvd, steps = write_run(args.name, res.extra, vtk)
         if not args.json:  # stdout stays one JSON object; stderr errors and warnings only
             print(f"vtk: wrote {pvd} ({steps} step{'s' if steps != 1 else ''})")
+    if gif is not None:
+        _write_gif(args, out, res, gif)
     return _print(out, args)
+
+
+def _write_gif(args, out: dict, res, gif: Path) -> None:
+    """The run's animation (``ancf.reports.animations.animate``) into ``gif``; a run that
+    did not converge writes none and says so on stderr."""
+    if not out["converged"]:
+        print(f"warning: --gif: not written ({args.name} did not converge)", file=sys.stderr)
+        return
+    from ancf.reports.animations import animate
+    a = animate(args.name, gif, res.extra, title=f"ancf run {args.name}")
+    if not args.json:
+        print(f"gif: wrote {a.path} ({a.frames} frames, t = {a.t0:.3f}-{a.t1:.3f} s)")
 
 
 def _overrides(args) -> dict:
@@ -345,6 +362,9 @@ def build_parser() -> argparse.ArgumentParser:
     sub.choices["run"].add_argument(
         "--vtk", metavar="DIR", help="write the deformed mesh as a ParaView time series: "
         "DIR/SCENE.pvd and one .vtu per output step")
+    sub.choices["run"].add_argument(
+        "--gif", metavar="PATH", help="a belt drive's run as an animated GIF: the belt "
+        "coloured by its axial force, the pulleys named (belt2d, belt3d, belt-drive)")
     sub.choices["run"].add_argument(
         "--file", metavar="PATH", help="the drive file of the belt-drive scene (TOML); --set "
         "section.key=value overrides its keys")

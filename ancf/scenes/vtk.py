@@ -15,25 +15,45 @@ from xml.sax.saxutils import quoteattr
 from ancf.common.params import InputError
 
 
-def check_directory(directory) -> Path:
-    """``directory`` as a Path, created if missing; InputError when it is a file, lies
-    under a file or cannot be written."""
+def check_directory(directory, option: str = "--vtk") -> Path:
+    """``directory`` as a Path, created if missing; InputError (naming ``option``, the
+    command-line option that gave it) when it is a file, lies under a file or cannot be
+    written."""
     path = Path(directory).expanduser()
     if str(directory).strip() == "":
-        raise InputError("--vtk '': expected a directory")
+        raise InputError(f"{option} '': expected a directory")
     for parent in [path, *path.parents]:
         if parent.exists() and not parent.is_dir():
             what = "is a file" if parent == path else f"lies under the file {str(parent)!r}"
-            raise InputError(f"--vtk {str(directory)!r}: {what}; allowed: a directory that "
+            raise InputError(f"{option} {str(directory)!r}: {what}; allowed: a directory that "
                              "exists or can be created")
     try:
         path.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise InputError(f"--vtk {str(directory)!r}: cannot create the directory "
+        raise InputError(f"{option} {str(directory)!r}: cannot create the directory "
                          f"({exc.strerror or exc})") from None
     if not os.access(path, os.W_OK | os.X_OK):
-        raise InputError(f"--vtk {str(directory)!r}: the directory is not writable")
+        raise InputError(f"{option} {str(directory)!r}: the directory is not writable")
     return path
+
+
+#: the scenes whose runs ``--gif`` animates (``ancf.reports.animations``)
+GIF_SCENES = ("belt2d", "belt3d", "belt-drive")
+
+
+def check_gif(scene: str, path) -> Path:
+    """``--gif PATH`` checked before the run: a belt drive's run (:data:`GIF_SCENES`), a
+    ``.gif`` file name, and a folder that exists or can be created and written."""
+    if scene not in GIF_SCENES:
+        raise InputError(f"--gif: {scene} has no animation; allowed: the belt drives "
+                         f"({', '.join(GIF_SCENES)})")
+    gif = Path(path).expanduser()
+    if gif.suffix.lower() != ".gif" or not gif.stem:
+        raise InputError(f"--gif {str(path)!r}: expected a file name ending in .gif")
+    if gif.is_dir():
+        raise InputError(f"--gif {str(path)!r}: is a directory; allowed: a .gif file name")
+    check_directory(gif.parent, f"--gif {str(path)!r}: its folder")
+    return gif
 
 
 def pvd_text(entries) -> str:
