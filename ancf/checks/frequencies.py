@@ -35,7 +35,7 @@ SCHEMES = {
     "linear, report-fix": {"element": "linear", "integration": "report-fix"},
     "omar-shabana": {"element": "omar-shabana"},
 }
-#: the coarsest meshes of the default element meeting 0.5 % at L/h = 20 (README, test_modes)
+#: the coarsest meshes of the default element meeting 0.5 % at L/h = 20 (docs/guide/modes.md, test_modes)
 ACCEPT_MESH = {"simply-supported": 48, "cantilever": 38}
 BEAM_TOL = 5e-3
 ORDER_TOL = 0.1

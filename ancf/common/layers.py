@@ -2,7 +2,7 @@
 
 A module imports only from its own layer and the layers below it, at module level
 and inside functions (``tests/common/test_layers.py``).  Each layer is a folder whose
-``__init__.py`` docstring says what it holds; the README's layout table is generated
+``__init__.py`` docstring says what it holds; the layout table of docs/architecture.md is generated
 from this list and those docstrings: ``python -m ancf.common.layers`` rewrites it.
 """
 from __future__ import annotations
@@ -25,6 +25,8 @@ LAYERS = (("ancf/common",), ("analytic",), ("ancf/core",), ("ancf/solvers",),
 #: (``ancf.run`` etc. load ``ancf.api`` on first use; see :func:`package_init_violations`)
 PACKAGE_FILES = ("ancf/__init__.py",)
 
+#: the page whose layout table is generated
+PAGE = ROOT / "docs" / "architecture.md"
 BEGIN, END = "<!-- layers: begin (python -m ancf.common.layers) -->", "<!-- layers: end -->"
 
 
@@ -132,7 +134,7 @@ def _modules(path: str, root: Path) -> str:
 
 
 def layout_table(root: Path = ROOT) -> str:
-    """The README's layout table, top layer first."""
+    """The layout table of docs/architecture.md, top layer first."""
     rows = ["| layer | path | what it holds | modules |", "|---|---|---|---|"]
     for rank in reversed(range(len(LAYERS))):
         for path in LAYERS[rank]:
@@ -141,20 +143,20 @@ def layout_table(root: Path = ROOT) -> str:
     return "\n".join(rows)
 
 
-def readme_with_table(text: str, root: Path = ROOT) -> str:
-    """The README text with the generated table between the markers."""
+def page_with_table(text: str, root: Path = ROOT) -> str:
+    """The page's text with the generated table between the markers."""
     head, _, rest = text.partition(BEGIN)
     _, _, tail = rest.partition(END)
     return f"{head}{BEGIN}\n{layout_table(root)}\n{END}{tail}"
 
 
 def main() -> int:
-    readme = ROOT / "README.md"
-    text = readme.read_text()
+    page = PAGE
+    text = page.read_text()
     if BEGIN not in text or END not in text:
-        print(f"error: README.md has no {BEGIN} ... {END} block", file=sys.stderr)
+        print(f"error: {PAGE.relative_to(ROOT)} has no {BEGIN} ... {END} block", file=sys.stderr)
         return 2
-    readme.write_text(readme_with_table(text))
+    page.write_text(page_with_table(text))
     return 0
 
 

@@ -3,7 +3,7 @@ these say when its answer is not what the scene stands for (a ``warnings`` line 
 
 Each check is a function of plain numbers returning a list of one-line warnings (empty:
 the check passes), so that the scenes' ``warn`` functions only gather the numbers.  The
-thresholds are named here and listed in the README's table "Physical-sense checks".
+thresholds are named here and listed in the table "Physical-sense checks" of docs/guide/scenes.md.
 
 Belt drives (``belt2d``, ``belt3d``, ``belt-drive``, 2D and plate belts alike) run one set,
 :func:`drive`, on the numbers of a :class:`Drive` (its pulleys, spans and tensioner arms);

@@ -126,7 +126,7 @@ class SchemaNameError(KeyError, ValueError):
 
 
 def names() -> list[str]:
-    """Every schema name in the README's form: ``run SCENE``, ``analytic NAME`` and
+    """Every schema name in the docs' form (docs/guide/scenes.md): ``run SCENE``, ``analytic NAME`` and
     ``modes SCENE``."""
     from ancf.scenes.modes import MODAL
     return [f"{command} {n}" for n, (command, _) in registries().items()] + [
@@ -216,7 +216,7 @@ def element_schema(name: str) -> dict:
 
 
 def schema(name: str) -> dict:
-    """The JSON schema of ``ancf run|analytic|modes NAME --json``; ``name`` as the README
+    """The JSON schema of ``ancf run|analytic|modes NAME --json``; ``name`` as the docs
     writes it (``"run cantilever"``, ``"analytic reissner"``, ``"modes cantilever"``) or
     bare (``"cantilever"``: its run).  An unknown name raises :class:`SchemaNameError` (a
     ``KeyError``) listing the allowed ones.  ``"element ancf3243"``: :func:`element_schema`."""

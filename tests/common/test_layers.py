@@ -1,6 +1,6 @@
 """The layer rule (``ancf.common.layers``): every module belongs to a layer and imports
 nothing from a layer above its own, at module level or inside a function; the
-README's layout table is the one generated from the tree."""
+layout table of docs/architecture.md is the one generated from the tree."""
 from __future__ import annotations
 
 import pytest
@@ -61,10 +61,10 @@ def test_the_rule_sees_upward_imports_at_any_depth(rel, source, bad):
     assert bool(layers.upward_imports(rel, source)) is bad
 
 
-def test_readme_layout_table_is_generated_from_the_tree():
-    text = (layers.ROOT / "README.md").read_text()
+def test_the_architecture_layout_table_is_generated_from_the_tree():
+    text = layers.PAGE.read_text()
     assert layers.BEGIN in text and layers.END in text
-    assert text == layers.readme_with_table(text), "run: python -m ancf.common.layers"
+    assert text == layers.page_with_table(text), "run: python -m ancf.common.layers"
 
 
 def test_the_checkout_folders_are_found_wherever_a_module_sits(monkeypatch):

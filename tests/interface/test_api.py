@@ -2,7 +2,7 @@
 prints (to_json equal to ``--json`` apart from the timing values), raise ``ancf.InputError``
 with the CLI's one-line message, give the mesh, the final coordinates and the time
 histories; ``ancf.sweep`` / ``ancf.recommend`` wrap the study layer; the docstring examples
-and the README's "Python API" examples run."""
+and each example of the Python API guide (docs/guide/python.md) runs by itself."""
 from __future__ import annotations
 
 import doctest
@@ -193,18 +193,24 @@ def test_the_docstring_examples_run():
     assert res.failed == 0 and res.attempted >= 20
 
 
-def _readme_python_blocks():
-    text = (ROOT / "README.md").read_text()
-    section = text.split("## Python API", 1)[1].split("\n## ", 1)[0]
-    return re.findall(r"```python\n(.*?)```", section, flags=re.S)
+GUIDE = ROOT / "docs" / "guide" / "python.md"
+
+
+def _guide_python_blocks():
+    """The ```python blocks of the Python API guide page, in order."""
+    return re.findall(r"```python\n(.*?)```", GUIDE.read_text(), flags=re.S)
+
+
+def test_the_guide_shows_the_api_in_several_blocks():
+    assert len(_guide_python_blocks()) >= 4
 
 
 @pytest.mark.slow
-def test_the_readme_python_examples_run(tmp_path, monkeypatch, capsys):
-    blocks = _readme_python_blocks()
-    assert len(blocks) >= 3
+@pytest.mark.parametrize("index", range(len(_guide_python_blocks())))
+def test_each_guide_python_example_runs_by_itself(index, tmp_path, monkeypatch, capsys):
+    """Each block of docs/guide/python.md runs alone, in a fresh namespace (a newcomer
+    pastes one block; a block that needs an earlier one's names fails here)."""
     monkeypatch.chdir(tmp_path)
-    scope: dict = {}
-    for block in blocks:
-        exec(compile(block, "README.md (Python API)", "exec"), scope)  # noqa: S102
+    block = _guide_python_blocks()[index]
+    exec(compile(block, f"{GUIDE.name} (block {index + 1})", "exec"), {})  # noqa: S102
     assert capsys.readouterr().out  # the examples print what they show
