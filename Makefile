@@ -9,7 +9,7 @@ DOCS   := $(VENV)/.docs
 # test processes (pytest-xdist; a test file stays in one process, so its module fixtures run once)
 JOBS   ?= 2
 
-.PHONY: setup reports test test-fast bench clean docs
+.PHONY: setup reports check-reports test test-fast bench clean docs
 
 setup: $(STAMP)
 
@@ -26,6 +26,11 @@ $(PEERS): $(STAMP)
 
 reports: $(PEERS)
 	$(PY) -m ancf.reports
+
+# regenerate into a temporary folder and compare every table with reports/ within each
+# column's tolerance (docs/reproduce.md); exit 1 and a line per difference beyond it
+check-reports: $(PEERS)
+	$(PY) -m ancf.reports.check
 
 test: $(STAMP)
 	$(PY) -m pytest -n $(JOBS) --dist loadfile
