@@ -30,7 +30,7 @@ import sys
 import tempfile
 import threading
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fnmatch import fnmatch
 from pathlib import Path
 
@@ -63,9 +63,11 @@ class Rule:
 
 
 #: the files of adaptive runs: time integrators with error control, load and time steps
-#: halved on a Newton failure (dynamics, the extremes, the speed-accuracy sweeps)
+#: halved on a Newton failure (dynamics, the extremes, the speed-accuracy sweeps), and the
+#: running drives' marches (their means over a window move with Newton's stopping point:
+#: 2e-6 relative in a march's torque, 3e-7 of the ALE-against-march differences, seen)
 ADAPTIVE = ("extremes*", "speed_accuracy*", "pendulum_*", "spinning_*", "constraint_forms*",
-            "dynamics.md")
+            "dynamics.md", "running_drives*")
 _DIFF = r"error|difference|diff\b|deviation|\bvs\b|gap|\||max abs\(e"
 
 #: the rules, first match wins (``files`` too); the last one matches every header
@@ -250,6 +252,13 @@ def _pairs(old: Table, new: Table, where) -> tuple:
     return [(label[k], a[k], b[k]) for k in a if k in b], lack
 
 
+def in_percent(rule: Rule, header: str, row: dict) -> Rule:
+    """``rule`` for a cell in per cent (a header with ``%`` or ``pct``, or a row whose
+    ``unit`` is ``%``): its absolute tolerance, stated in the result's own unit, times 100."""
+    percent = "%" in header or "pct" in header.lower() or row.get("unit", "").strip() == "%"
+    return replace(rule, atol=100 * rule.atol) if percent and rule.atol else rule
+
+
 def compare_tables(file: str, old: Table, new: Table, rounded: bool = False) -> list:
     """The differences beyond tolerance between a committed and a regenerated table;
     ``rounded``: its numbers are printed rounded (Markdown), not to full precision (CSV)."""
@@ -268,7 +277,7 @@ def compare_tables(file: str, old: Table, new: Table, rounded: bool = False) -> 
     for label, r, n in pairs:
         for col, i, j in cols:
             a, b = (r[i] if i < len(r) else ""), (n[j] if j < len(n) else "")
-            rule = rule_for(col, file)
+            rule = in_percent(rule_for(col, file), col, dict(zip(old.header, r)))
             if not cell_within(a, b, rule, rounded):
                 out.append(Difference(file, where(label), col, a, b + _relative(a, b),
                                       rule.tolerance(), f"{rule.kind}: {rule.why}"))

@@ -52,6 +52,21 @@ def test_the_docs_page_lists_every_rule():
     assert [r.kind for r in RULES] == [k for k in rows if k in {r.kind for r in RULES}]
 
 
+def test_a_percent_cell_gets_its_absolute_tolerance_in_per_cent():
+    from ancf.reports.check import in_percent
+    rule = rule_for("difference")
+    assert in_percent(rule, "difference %", {}).atol == 100 * rule.atol
+    assert in_percent(rule, "error_pct", {}).atol == 100 * rule.atol
+    assert in_percent(rule, "difference", {"unit": "%"}).atol == 100 * rule.atol
+    assert in_percent(rule, "difference", {"unit": "N"}).atol == rule.atol
+
+
+def test_the_running_drives_marches_are_adaptive():
+    assert rule_for("torque_march", "running_drives_thread_ale_march_pulleys.csv").kind == \
+        "adaptive result"
+    assert rule_for("torque_march", "belt_drives_checks.csv").kind == "result"
+
+
 def test_a_result_within_its_tolerance_passes(tmp_path, capsys):
     value = 0.75
     near = value * (1 + rule_for(RESULT).rtol / 2)
