@@ -1,14 +1,18 @@
 """Animations of the belt drives: GIFs (matplotlib's ``PillowWriter``) of a finished run
-of ``belt2d``, ``belt3d`` or ``belt-drive`` over one revolution of the driver.
+of ``belt2d``, ``belt3d`` or ``belt-drive`` from rest (frame 0 at t = 0) to its end.
 
 :func:`animate` takes a run (an ``ancf.run`` :class:`~ancf.api.Result`, or the scene's name
 and its ``SceneResult.extra``) and writes one GIF: the belt coloured by its axial force
 (N; the belt points of :func:`ancf.scenes.frames.frames`, the same as ``--vtk`` writes;
 one colour scale for the whole animation), every pulley with a spoke so that its rotation
-shows, a tensioner's arm, and the time stamp.  The frames are the output steps of the
-last revolution of the driver (its angle, the integral of its speed law, within 2 pi of
-the final one), thinned evenly to at most ``max_frames``; the colour scale spans the 1st to
-the 99th percentile of the axial force over them (the contact entries' spikes beyond).
+shows and its name from the drive (``rig.names``: the preset's or the drive file's) next
+to it, a tensioner's arm, and the time stamp (the frame's output time, s, and the
+driver's turn, rev).  The frames are the output steps from the first (t = 0, the run
+starts from rest) to the last, thinned evenly to at most ``max_frames``
+(:func:`from_rest`); the colour scale spans the 1st to the 99th percentile of the axial
+force over them (the contact entries' spikes beyond).  Every text (title, time stamp,
+axis and colour-bar labels, tick labels, pulley names) is at least :data:`FONT_PT` pt,
+saved at :data:`DPI` pixels per inch: at least ``FONT_PT * DPI / 72`` px high in the GIF.
 
 :func:`report_animations` runs the report's three cases (:data:`CASES`; the 3D belt as a
 short run of one driver revolution from rest) and writes ``reports/animations/*.gif``;
@@ -35,17 +39,25 @@ from ancf.reports.output import progress, settings  # noqa: E402
 from ancf.scenes.frames import frames as frames_of  # noqa: E402
 
 FPS = 15            # frames per second of the GIF
-DPI = 72            # pixels per inch (a 6 x 4.6 in figure: 432 x 331 px)
+DPI = 80            # pixels per inch (a 6.4 in wide figure: 512 px)
+FONT_PT = 11        # every text's size, pt (the floor; titles one larger): 12.2 px at DPI
+MIN_FONT_PX = 11    # the floor in the GIF's pixels: FONT_PT * dpi / 72 must reach it
 MAX_FRAMES = 80
 SUBSTEPS = 16       # trapezoid sub-intervals per output step of the driver's angle
 CMAP = "viridis"
 CLIP = (1, 99)      # percentiles of the axial force over the frames: the colour scale's ends
+#: matplotlib's sizes inside an animation (pt): none below FONT_PT
+FONTS = {"font.size": FONT_PT, "axes.titlesize": FONT_PT + 1, "axes.labelsize": FONT_PT,
+         "xtick.labelsize": FONT_PT, "ytick.labelsize": FONT_PT, "legend.fontsize": FONT_PT,
+         "figure.titlesize": FONT_PT + 1}
 
 
 @dataclass
 class Animation:
     """What :func:`animate` wrote: ``path``, the number of ``frames``, the time span
-    ``t0``-``t1`` (s), the driver's turn over it (rad) and the file size (bytes)."""
+    ``t0``-``t1`` (s), the driver's turn over it (rad), the file size (bytes), every
+    frame's time ``times`` (s, as its stamp says) and the figure's ``texts`` (pairs of a
+    visible text and its size in the GIF, px, read from the figure after the last frame)."""
 
     path: Path
     frames: int
@@ -53,6 +65,8 @@ class Animation:
     t1: float
     driver_turn: float
     size: int
+    times: tuple = ()
+    texts: tuple = ()
 
 
 def _drive(extra: dict):
@@ -95,15 +109,20 @@ def driver(drive) -> int:
     return int(np.flatnonzero(drive.rig.free < 0)[0])
 
 
-def last_revolution(turn: np.ndarray, max_frames: int) -> np.ndarray:
-    """Indices of the output steps over the driver's last revolution (its angle within
-    2 pi of the final one; all of them if it turned less), thinned evenly to at most
-    ``max_frames``."""
-    idx = np.flatnonzero(turn >= turn[-1] - 2 * np.pi)
-    idx = np.arange(idx[0] - 1 if idx[0] > 0 else 0, turn.size)
-    if idx.size > max_frames:
-        idx = idx[np.unique(np.round(np.linspace(0, idx.size - 1, max_frames)).astype(int))]
+def from_rest(n: int, max_frames: int) -> np.ndarray:
+    """Indices of the output steps shown: all ``n`` of them from the first (t = 0) to the
+    last, thinned evenly to at most ``max_frames`` (both ends kept)."""
+    idx = np.arange(n)
+    if n > max_frames:
+        idx = np.unique(np.round(np.linspace(0, n - 1, max_frames)).astype(int))
     return idx
+
+
+def figure_texts(fig, dpi: float) -> list:
+    """Every visible, non-empty text of ``fig``: (text, size in px at ``dpi``)."""
+    from matplotlib.text import Text
+    return [(t.get_text(), t.get_fontsize() * dpi / 72.0) for t in fig.findobj(Text)
+            if t.get_visible() and t.get_text().strip()]
 
 
 # --- drawing ---------------------------------------------------------------------------
@@ -119,10 +138,47 @@ def _segments(points):
     return np.stack([points, np.roll(points, -1, axis=0)], 1)
 
 
-class _Scene2D:
-    """Artists of a planar drive: the belt (LineCollection), pulley rims, spokes, arms."""
+def _outward(centres) -> np.ndarray:
+    """Unit vectors (np, 2) from the pulley centres' mean to each centre (+y for one there):
+    the side of each pulley its name goes on."""
+    u = centres[:, :2] - centres[:, :2].mean(axis=0)
+    n = np.linalg.norm(u, axis=1)
+    far = n > 1e-9 * max(n.max(), 1e-300)
+    u[far] /= n[far, None]
+    u[~far] = (0.0, 1.0)
+    return u
 
-    def __init__(self, ax, drive, norm, extent):
+
+def _names(ax, drive, centres, gap, three=False) -> tuple:
+    """Every pulley's name (``drive.rig.names``) as a text just outside its rim, ``gap`` m
+    beyond it on the side away from the other pulleys, aligned away from the rim:
+    (texts, the sides (np, 2), gap)."""
+    u = _outward(np.asarray(centres, float))
+    texts = []
+    for name, v in zip(drive.rig.names, u):
+        ha = "left" if v[0] > 0.38 else "right" if v[0] < -0.38 else "center"
+        va = "bottom" if v[1] > 0.38 else "top" if v[1] < -0.38 else "center"
+        kw = dict(ha=ha, va=va, fontsize=FONT_PT, color="0.1", zorder=6,
+                  bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.75))
+        texts.append(ax.text(0, 0, 0, str(name), **kw) if three else ax.text(0, 0, str(name), **kw))
+    return texts, u, gap
+
+
+def _place_names(names, centres, radii, z=None):
+    """Move the name texts to their pulleys' centres (np, 2 or 3), m."""
+    texts, u, gap = names
+    for k, (text, c, R) in enumerate(zip(texts, centres, radii)):
+        xy = np.asarray(c[:2], float) + (R + gap) * u[k]
+        if z is None:
+            text.set_position(xy)
+        else:
+            text.set_position_3d((xy[0], xy[1], c[2] + z))
+
+
+class _Scene2D:
+    """Artists of a planar drive: the belt (LineCollection), pulley rims, spokes, names, arms."""
+
+    def __init__(self, ax, drive, norm, extent, centres):
         self.ax, self.drive = ax, drive
         self.belt = LineCollection([], cmap=CMAP, norm=norm, lw=2.5, zorder=3)
         ax.add_collection(self.belt)
@@ -133,7 +189,25 @@ class _Scene2D:
         self.arms = [ax.plot([], [], color="0.2", lw=2.0, zorder=1)[0]
                      for _ in range(drive.rig.arms.shape[0])]
         (x0, x1), (y0, y1) = extent
+        self.names = _names(ax, drive, centres, 0.03 * max(x1 - x0, y1 - y0))
+        _place_names(self.names, centres, drive.radii)
         ax.set(xlim=(x0, x1), ylim=(y0, y1), aspect="equal", xlabel="x [m]", ylabel="y [m]")
+
+    def fit(self, fig):
+        """Widen the axes' limits until every name lies inside them (draws ``fig``)."""
+        ax = self.ax
+        for _ in range(3):
+            fig.canvas.draw()
+            inv = ax.transData.inverted()
+            pts = np.concatenate([inv.transform(t.get_window_extent().get_points())
+                                  for t in self.names[0]])
+            (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+            pad = 0.02 * max(x1 - x0, y1 - y0)
+            lo = np.minimum([x0, y0], pts.min(axis=0) - pad)
+            hi = np.maximum([x1, y1], pts.max(axis=0) + pad)
+            if np.allclose([lo, hi], [[x0, y0], [x1, y1]]):
+                return
+            ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]))
 
     def update(self, frame, centres, angles):
         self.belt.set_segments(_segments(frame.points[:, :2]))
@@ -141,15 +215,17 @@ class _Scene2D:
         for p, (c, R, th) in enumerate(zip(centres, self.drive.radii, angles)):
             self.rims[p].set_data(*_circle(c, R))
             self.spokes[p].set_data([c[0], c[0] + R * np.cos(th)], [c[1], c[1] + R * np.sin(th)])
+        _place_names(self.names, centres, self.drive.radii)
         for a, row in enumerate(self.drive.rig.arms):
             c = centres[int(row[PULLEY])]
             self.arms[a].set_data([row[PIVOT_X], c[0]], [row[PIVOT_Y], c[1]])
 
 
 class _Scene3D:
-    """Artists of the 3D belt: the mid-surface quads and both faces of every pulley."""
+    """Artists of the 3D belt: the mid-surface quads, both faces of every pulley, names."""
 
-    def __init__(self, ax, drive, norm, extent, width):
+    def __init__(self, ax, drive, norm, extent, width, centres):
+        from matplotlib.ticker import MaxNLocator
         from mpl_toolkits.mplot3d.art3d import Poly3DCollection
         self.ax, self.drive, self.norm, self.width = ax, drive, norm, width
         self.cmap = plt.get_cmap(CMAP)
@@ -160,11 +236,19 @@ class _Scene3D:
                      for _ in range(npul)]
         self.spokes = [ax.plot([], [], [], color="C3", lw=1.5)[0] for _ in range(npul)]
         (x0, x1), (y0, y1) = extent
+        self.names = _names(ax, drive, centres, 0.03 * max(x1 - x0, y1 - y0), three=True)
+        _place_names(self.names, centres, drive.radii, z=width)
         ax.set(xlim=(x0, x1), ylim=(y0, y1), zlim=(-0.5 * width, 1.5 * width),
-               xlabel="x [m]", ylabel="y [m]", zlabel="z [m]")
+               xlabel="x [m]", ylabel="y [m]", zticks=[0.0, width])
         ax.set_box_aspect((x1 - x0, y1 - y0, 2 * width))
         ax.view_init(elev=28, azim=-62)
-        ax.tick_params(labelsize=6)
+        ax.xaxis.set_major_locator(MaxNLocator(4))
+        ax.yaxis.set_major_locator(MaxNLocator(3))
+        ax.tick_params(labelsize=FONT_PT)
+        ax.xaxis.labelpad = ax.yaxis.labelpad = 12  # clear of the FONT_PT tick labels
+
+    def fit(self, fig):
+        """Nothing to widen: the 3D axes' margins hold the names."""
 
     def update(self, frame, centres, angles):
         quads = frame.cells[0][1]
@@ -177,6 +261,7 @@ class _Scene3D:
                 self.rims[p][k].set_data_3d(x, y, zz)
             tip = c[:2] + R * np.array([np.cos(th), np.sin(th)])
             self.spokes[p].set_data_3d([c[0], tip[0]], [c[1], tip[1]], [c[2] + self.width] * 2)
+        _place_names(self.names, centres, self.drive.radii, z=self.width)
 
 
 def _segment_values(values):
@@ -192,49 +277,83 @@ def _extent(points, centres, radii, margin=0.1):
     return (lo[0] - pad, hi[0] + pad), (lo[1] - pad, hi[1] + pad)
 
 
-def animate(run, path, extra: dict | None = None, *, title: str = "", max_frames: int = MAX_FRAMES,
-            fps: int = FPS, dpi: int = DPI, per_element: int = 8) -> Animation:
-    """Write the GIF of a belt drive's run to ``path``: ``run`` an ``ancf.run`` result (or
-    the scene's name, with its ``SceneResult.extra`` as ``extra``); see the module doc."""
-    scene, extra = (run, extra) if isinstance(run, str) else (run.scene, run.extra)
+@dataclass
+class _Plan:
+    """The frames :func:`animate` shows: output-step indices ``idx``, their belt frames
+    ``shown``, pulley centres (m) and angles (rad, every step), the output times ``t`` (s)."""
+
+    drive: object
+    idx: np.ndarray
+    shown: list
+    centres: list
+    angles: np.ndarray
+    t: np.ndarray
+
+
+def _plan(scene, extra, max_frames, per_element) -> _Plan:
     drive, res = _drive(extra)
-    angles = pulley_angles(drive, res)
-    idx = last_revolution(angles[:, driver(drive)], max_frames)
+    t = np.asarray(res.t, float)
+    idx = from_rest(t.size, max_frames)
     allframes = frames_of(scene, extra, per_element)
-    shown = [allframes[i] for i in idx]
-    x, v, t = np.asarray(res.q), np.asarray(res.v), np.asarray(res.t, float)
-    centres = [pulley_centres(drive, x[i], v[i], float(t[i])) for i in idx]
+    x, v = np.asarray(res.q), np.asarray(res.v)
+    return _Plan(drive, idx, [allframes[i] for i in idx],
+                 [pulley_centres(drive, x[i], v[i], float(t[i])) for i in idx],
+                 pulley_angles(drive, res), t)
+
+
+def _figure(plan: _Plan, title: str):
+    """The figure of an animation, laid out once: (fig, scene artists, time stamp)."""
+    drive, shown, centres = plan.drive, plan.shown, plan.centres
     forces = np.concatenate([f.point_data["axial_force_N"] for f in shown])
     norm = matplotlib.colors.Normalize(*np.percentile(forces, CLIP))
     extent = _extent(np.concatenate([f.points for f in shown]), np.concatenate(centres),
                      np.tile(drive.radii, len(centres)))
     three = hasattr(drive, "axes")
     (x0, x1), (y0, y1) = extent
-    height = 4.4 if three else float(np.clip(5.2 * (y1 - y0) / (x1 - x0) + 0.9, 2.6, 5.6))
+    height = 4.8 if three else float(np.clip(4.4 * (y1 - y0) / (x1 - x0) + 1.3, 2.6, 6.0))
     fig = plt.figure(figsize=(6.4, height), layout="constrained")
     ax = fig.add_subplot(projection="3d" if three else None)
-    art = _Scene3D(ax, drive, norm, extent, drive.spec.width) if three else \
-        _Scene2D(ax, drive, norm, extent)
-    fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=CMAP), ax=ax, shrink=0.9,
+    art = _Scene3D(ax, drive, norm, extent, drive.spec.width, centres[0]) if three else \
+        _Scene2D(ax, drive, norm, extent, centres[0])
+    fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=CMAP), ax=ax,
+                 shrink=0.75 if three else 0.9,
                  label="axial force [N]", extend="both")
-    ax.set_title(title or scene, fontsize=9, loc="left")
-    stamp = fig.text(0.005, 0.005, "t = 0.000 s, driver 0.00 rev", fontsize=8,
-                     family="monospace", va="bottom")
+    fig.suptitle(title, fontsize=FONT_PT + 1, x=0.02, ha="left")
+    stamp = ax.set_title(_stamp(0.0, 0.0), loc="left", family="monospace", fontsize=FONT_PT)
+    art.fit(fig)
     fig.canvas.draw()
     fig.set_layout_engine("none")  # laid out once: every frame the same axes
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    writer = PillowWriter(fps=fps)
-    with writer.saving(fig, str(path), dpi):
-        for f, i, c in zip(shown, idx, centres):
-            art.update(f, c, angles[i])
-            turns = angles[i, driver(drive)] / (2 * np.pi)
-            stamp.set_text(f"t = {t[i]:.3f} s, driver {turns:.2f} rev")
-            writer.grab_frame()
-    plt.close(fig)
-    turn = angles[idx[-1], driver(drive)] - angles[idx[0], driver(drive)]
+    return fig, art, stamp
+
+
+def _stamp(t: float, turn: float) -> str:
+    """The time stamp of a frame at ``t`` s, the driver turned ``turn`` rad."""
+    return f"t = {t:.3f} s, driver {turn / (2 * np.pi):.2f} rev"
+
+
+def animate(run, path, extra: dict | None = None, *, title: str = "", max_frames: int = MAX_FRAMES,
+            fps: int = FPS, dpi: int = DPI, per_element: int = 8) -> Animation:
+    """Write the GIF of a belt drive's run to ``path``: ``run`` an ``ancf.run`` result (or
+    the scene's name, with its ``SceneResult.extra`` as ``extra``); see the module doc."""
+    scene, extra = (run, extra) if isinstance(run, str) else (run.scene, run.extra)
+    with plt.rc_context(FONTS):
+        plan = _plan(scene, extra, max_frames, per_element)
+        fig, art, stamp = _figure(plan, title or scene)
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        writer = PillowWriter(fps=fps)
+        d, t = driver(plan.drive), plan.t
+        with writer.saving(fig, str(path), dpi):
+            for f, i, c in zip(plan.shown, plan.idx, plan.centres):
+                art.update(f, c, plan.angles[i])
+                stamp.set_text(_stamp(t[i], plan.angles[i, d]))
+                writer.grab_frame()
+        texts = figure_texts(fig, dpi)
+        plt.close(fig)
+    idx = plan.idx
+    turn = plan.angles[idx[-1], d] - plan.angles[idx[0], d]
     return Animation(path, len(idx), float(t[idx[0]]), float(t[idx[-1]]), float(turn),
-                     path.stat().st_size)
+                     path.stat().st_size, tuple(float(x) for x in t[idx]), tuple(texts))
 
 
 # --- the report's animations ---------------------------------------------------------------

@@ -33,14 +33,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.animation import PillowWriter  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 from ancf.belts import post3d  # noqa: E402
 from ancf.belts.flange3d import PULLEY, HALF  # noqa: E402
 from ancf.common.paths import REPO  # noqa: E402
+from ancf.reports.animations import FONT_PT, FONTS, figure_texts  # noqa: E402
 from ancf.reports.output import progress, settings  # noqa: E402
 
 EXAMPLE = REPO / "examples" / "misaligned.toml"
-FPS, DPI, MAX_FRAMES = 10, 90, 61
+FPS, DPI, MAX_FRAMES = 10, 80, 61  # frames/s, px per inch (a 12 in figure: 960 px)
 ZOOM = 4.5  # mm of the face shown inside each flange
 ON_RIM = 1e-3  # m: an edge point within the rim's radius + ON_RIM is drawn on the face
 PER_ELEMENT = 8  # edge points per plate
@@ -78,7 +80,14 @@ def walk_animation(out: dict, extra: dict, path, *, max_frames: int = MAX_FRAMES
                    fps: int = FPS, dpi: int = DPI) -> dict:
     """Write the GIF of a belt-drive run with a tilted, flanged pulley to ``path``:
     ``out`` the scene's output (its results), ``extra`` its ``SceneResult.extra``; returns
-    {"frames", "t1" s, "size" bytes, "lateral_mm" (first, last), "flange_N" last}."""
+    {"frames", "t1" s, "size" bytes, "lateral_mm" (first, last), "flange_N" last, "times"
+    (every frame's, s), "texts" (the figure's visible texts and their sizes in the GIF, px)}.
+    Every text is at least :data:`ancf.reports.animations.FONT_PT` pt."""
+    with plt.rc_context(FONTS):
+        return _walk_animation(out, extra, Path(path), max_frames, fps, dpi)
+
+
+def _walk_animation(out, extra, path, max_frames, fps, dpi) -> dict:
     drive, res, desc = extra["drive"], extra["result"], extra["description"]
     k = _tilted(drive)
     name = drive.rig.names[k]
@@ -89,9 +98,9 @@ def walk_animation(out: dict, extra: dict, path, *, max_frames: int = MAX_FRAMES
     idx = np.unique(np.round(np.linspace(0, t.size - 1, min(max_frames, t.size))).astype(int))
     rows = drive.flanges.table
     half = 1e3 * float(rows[rows[:, PULLEY] == k, HALF][0]) if rows.size else np.nan
-    fig = plt.figure(figsize=(11.0, 4.4))
-    grid = fig.add_gridspec(1, 3, width_ratios=(1.2, 1.1, 1.25), wspace=0.42, left=0.06,
-                            right=0.94, top=0.84, bottom=0.2)
+    fig = plt.figure(figsize=(12.0, 4.6))
+    grid = fig.add_gridspec(1, 3, width_ratios=(1.2, 1.1, 1.25), wspace=0.42, left=0.075,
+                            right=0.925, top=0.84, bottom=0.2)
     top, hist = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 2])
     faces = [fig.add_subplot(g) for g in grid[0, 1].subgridspec(1, 2, wspace=0.08)]
     _draw_layout(top, drive, desc, k)
@@ -101,30 +110,31 @@ def walk_animation(out: dict, extra: dict, path, *, max_frames: int = MAX_FRAMES
         wall = sign * half
         ax.axvspan(wall, wall + sign * 10, color="0.3")
         ax.text(wall + sign * 0.9, 185, "flange", rotation=90, ha="center", va="top",
-                color="w", fontsize=8)
+                color="w", fontsize=FONT_PT)
         ax.set_xlim(*sorted((wall - sign * ZOOM, wall + sign * 1.5)))
+        ax.set_xticks(sorted((wall, wall - sign * 2)))  # the flange and 2 mm inside it
         ax.set_ylim(-10, 200)
-        ax.tick_params(labelsize=8)
+        ax.tick_params(labelsize=FONT_PT)
     faces[1].tick_params(labelleft=False)
     faces[0].set_ylabel("round the pulley from entry [deg]")
     fig.text(0.5 * (faces[0].get_position().x0 + faces[1].get_position().x1), 0.09,
-             "along the axis from mid-face, s [mm]", ha="center", fontsize=10)
-    faces[0].set_title(f"belt's edges on '{name}' near its flanges", fontsize=10, loc="left")
+             "along the axis from mid-face, s [mm]", ha="center", fontsize=FONT_PT)
+    faces[0].set_title(f"belt's edges on '{name}' near its flanges", fontsize=FONT_PT, loc="left")
     bands = []
     lat_line, = hist.plot([], [], color="C0", label="lateral position [mm]")
     hist.set(xlim=(0, t[-1]), ylim=_limits(lat[1:]), xlabel="t [s]", ylabel="lateral position [mm]")
-    hist.set_title(f"'{name}': walk and flange force", fontsize=10)
+    hist.xaxis.set_major_locator(MaxNLocator(4))
+    hist.set_title(f"'{name}': walk and flange force", fontsize=FONT_PT)
     right = hist.twinx()
     force_line, = right.plot([], [], color="C3", label="flange force [N]")
     right.set(ylim=_limits(flange[1:]), ylabel="flange force on the belt [N]")
-    hist.legend(handles=[lat_line, force_line], fontsize=8, loc="upper right")
+    hist.legend(handles=[lat_line, force_line], fontsize=FONT_PT, loc="upper right")
     for ax in (top, hist, right):
-        ax.tick_params(labelsize=8)
+        ax.tick_params(labelsize=FONT_PT)
     tilt = desc.pulleys[k].params["axis_tilt_deg"]
     fig.suptitle(f"Plate belt walking on the tilted pulley '{name}' (axis tilted {tilt:g} deg), "
-                 f"held by its flanges {2 * half:.0f} mm apart", fontsize=11)
-    stamp = fig.text(0.06, 0.015, "", fontsize=10, family="monospace")
-    path = Path(path)
+                 f"held by its flanges {2 * half:.0f} mm apart", fontsize=FONT_PT + 1)
+    stamp = fig.text(0.06, 0.015, "", fontsize=FONT_PT, family="monospace")
     path.parent.mkdir(parents=True, exist_ok=True)
     writer = PillowWriter(fps=fps)
     x, v = np.asarray(res.q), np.asarray(res.v)
@@ -146,9 +156,11 @@ def walk_animation(out: dict, extra: dict, path, *, max_frames: int = MAX_FRAMES
             stamp.set_text(f"t = {t[i]:.3f} s   lateral position {lat[i]:+.2f} mm   "
                            f"flange force {flange[i]:+.2f} N")
             writer.grab_frame()
+    texts = figure_texts(fig, dpi)
     plt.close(fig)
     return {"frames": int(idx.size), "t1": float(t[idx[-1]]), "size": path.stat().st_size,
-            "lateral_mm": (float(lat[1]), float(lat[-1])), "flange_N": float(flange[-1])}
+            "lateral_mm": (float(lat[1]), float(lat[-1])), "flange_N": float(flange[-1]),
+            "times": tuple(float(x) for x in t[idx]), "texts": tuple(texts)}
 
 
 def _limits(y) -> tuple:
@@ -166,9 +178,9 @@ def _draw_layout(ax, drive, desc, k: int) -> None:
         c = q.centre
         colour = "C3" if j == k else "0.35"
         ax.plot(c[0] + R * np.cos(a), c[1] + R * np.sin(a), color=colour, lw=1.2)
-        ax.text(c[0], c[1], q.name, ha="center", va="center", fontsize=9, color=colour)
+        ax.text(c[0], c[1], q.name, ha="center", va="center", fontsize=FONT_PT, color=colour)
     ax.set(aspect="equal", xlabel="x [m]", ylabel="y [m]")
-    ax.set_title("drive seen along the axes", fontsize=10)
+    ax.set_title("drive seen along the axes", fontsize=FONT_PT)
     ax.margins(0.08)
 
 
