@@ -123,16 +123,39 @@ def timing_page(root: Path, chapter: str, parts: list) -> str:
 
 
 def _previous_statuses(root: Path, chapter: str) -> dict:
-    """The acceptance rows of an existing README.md in root (none if there is none), less
-    the rows the chapter's previous file listed (a check it renamed or dropped goes)."""
+    """The acceptance rows of an existing README.md in root (none if there is none), with
+    the rows the chapter's previous file listed (a check it renamed or dropped goes) as
+    one placeholder, ``chapter: None``, where the first of them stood (at the end if none
+    did): :func:`_with_chapter` puts the chapter's new rows there."""
     path = root / "README.md"
     if not path.exists():
-        return {}
+        return {chapter: None}
     text = path.read_text().split("## Acceptance summary", 1)[-1]
     rows = re.findall(r"^\| (.+?) \| (.+?) \|$", text, flags=re.M)
     old = root / chapter
     own = set(re.findall(r"^\| (.+?) \|", old.read_text(), flags=re.M)) if old.exists() else set()
-    return {k: v for k, v in rows if k != "check" and k not in own}
+    out = {}
+    for k, v in rows:
+        if k == "check":
+            continue
+        if k in own:
+            out.setdefault(chapter, None)
+        else:
+            out[k] = v
+    out.setdefault(chapter, None)
+    return out
+
+
+def _with_chapter(previous: dict, chapter: str, rows: dict) -> dict:
+    """``previous`` (:func:`_previous_statuses`) with the chapter's ``rows`` in its place,
+    so that regenerating one chapter leaves the summary's order as it was."""
+    out = {}
+    for k, v in previous.items():
+        if k == chapter and v is None:
+            out.update(rows)
+        elif k not in rows:
+            out[k] = v
+    return out
 
 
 def main(argv=None) -> int:
@@ -154,7 +177,8 @@ def main(argv=None) -> int:
     root.mkdir(parents=True, exist_ok=True)
     if args.chapter:
         heartbeat(args.chapter.removesuffix(".md"))
-        status = {**_previous_statuses(root, args.chapter), **write_chapters(root, args.chapter)}
+        previous = _previous_statuses(root, args.chapter)  # before the chapter is rewritten
+        status = _with_chapter(previous, args.chapter, write_chapters(root, args.chapter))
     else:
         status = write_all(root, args.quick, args.jobs)
     note = (" Reduced configuration (`--quick`): not the published data." if args.quick else "")

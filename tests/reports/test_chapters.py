@@ -124,5 +124,23 @@ def test_one_chapter_rewritten_drops_its_old_rows(tmp_path):
         "## Acceptance summary\n\n| check | status |\n|---|---|\n| kept row | PASS |\n"
         "| renamed row | FAIL |\n")
     (tmp_path / "x.md").write_text("| check | value |\n|---|---|\n| renamed row | 1 |\n")
-    assert _previous_statuses(tmp_path, "x.md") == {"kept row": "PASS"}
-    assert _previous_statuses(tmp_path, "y.md") == {"kept row": "PASS", "renamed row": "FAIL"}
+    assert _previous_statuses(tmp_path, "x.md") == {"kept row": "PASS", "x.md": None}
+    assert _previous_statuses(tmp_path, "y.md") == {"kept row": "PASS", "renamed row": "FAIL",
+                                                    "y.md": None}
+
+
+def test_one_chapter_rewritten_keeps_the_summary_order(tmp_path):
+    """The chapter's new rows take the place of its old ones: regenerating one chapter
+    leaves the other rows where they were (no reshuffled summary in the diff)."""
+    from ancf.reports.__main__ import _previous_statuses, _with_chapter
+    (tmp_path / "README.md").write_text(
+        "## Acceptance summary\n\n| check | status |\n|---|---|\n| a | PASS |\n"
+        "| x old | PASS |\n| x two | FAIL |\n| b | PASS |\n")
+    (tmp_path / "x.md").write_text("| check | value |\n|---|---|\n| x old | 1 |\n"
+                                   "| x two | 2 |\n")
+    new = {"x new": "PASS", "x two": "PASS"}
+    merged = _with_chapter(_previous_statuses(tmp_path, "x.md"), "x.md", new)
+    assert list(merged.items()) == [("a", "PASS"), ("x new", "PASS"), ("x two", "PASS"),
+                                    ("b", "PASS")]
+    fresh = _with_chapter(_previous_statuses(tmp_path, "z.md"), "z.md", {"z": "PASS"})
+    assert list(fresh)[-1] == "z"
