@@ -66,165 +66,17 @@ ancf.common.params.InputError: run: unknown name 'cantileverr'; allowed: simply-
 """
 from __future__ import annotations
 
-import json
 import os
 import tempfile
-from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 import ancf.scenes  # noqa: F401 - cheap (loads no scene); makes ``ancf.scenes`` the callable package
 from ancf.common.inputs import flag, is_boolean, mapping, merged, number, path, text
 from ancf.common.params import InputError
-from ancf.common.strict_json import dumps
+from ancf.result import Result
 
 __all__ = ["InputError", "Result", "analytic", "modes", "recommend", "run", "scenes", "sweep"]
-
-
-@dataclass(kw_only=True)
-class Result:
-    """The outcome of one run: the public JSON's fields as attributes, the scene's model in
-    ``extra`` and the arrays a user wants as properties (``None`` where the run has none:
-    an analytic reference has no mesh, a static run no time history).
-
-    ``command`` is ``"run"``, ``"analytic"`` or ``"modes"``, ``scene`` the name.
-    """
-
-    command: str
-    scene: str
-    params: dict
-    converged: bool
-    message: str
-    results: dict
-    cpu_time_s: float
-    warnings: list
-    compile_cpu_s: float = 0.0
-    extra: dict = field(default_factory=dict, repr=False)
-    _json: dict = field(default_factory=dict, repr=False)
-
-    def __repr__(self) -> str:  # short: the results may hold long time histories
-        return (f"<ancf.Result {self.command} {self.scene}: "
-                f"{'converged' if self.converged else 'NOT CONVERGED'} ({self.message}); "
-                f"results: {', '.join(self.results)}>")
-
-    # --- the JSON -------------------------------------------------------------------
-    def to_json(self, **kw) -> str:
-        """The JSON object ``ancf run|analytic NAME ... --json`` prints (strict: a value
-        that is not a finite number is ``null``); keywords go to ``json.dumps``."""
-        return dumps(self._json, **kw)
-
-    def to_dict(self) -> dict:
-        """:meth:`to_json` parsed back: plain Python values, ``None`` for non-finite."""
-        return json.loads(self.to_json())
-
-    # --- arrays ---------------------------------------------------------------------
-    def _geometry(self) -> bool:
-        from ancf.scenes.frames import has_geometry
-        return has_geometry(self.extra)
-
-    def _states(self):
-        from ancf.scenes.frames import states
-        return states(self.extra) if self._geometry() else (None, None, None)
-
-    @property
-    def q0(self) -> np.ndarray | None:
-        """Reference global coordinates (positions and slopes of every node)."""
-        return None if not self._geometry() else np.asarray(self._states()[2], float)
-
-    @property
-    def q(self) -> np.ndarray | None:
-        """Final global coordinates (the belt drives: the belt's, without the pulley)."""
-        if not self._geometry():
-            return None
-        qs = self._states()[1]
-        return np.asarray(qs[-1], float) if len(qs) else None
-
-    def _nodes(self, q):
-        from ancf.scenes.frames import node_positions
-        return None if q is None else node_positions(self.extra, q)
-
-    @property
-    def reference_nodes(self) -> np.ndarray | None:
-        """The mesh: reference node positions (n_nodes, dim), m."""
-        return self._nodes(self.q0)
-
-    @property
-    def nodes(self) -> np.ndarray | None:
-        """Final node positions (n_nodes, dim), m."""
-        return self._nodes(self.q)
-
-    @property
-    def times(self) -> np.ndarray | None:
-        """Output times of a dynamic run (s), None for a static one."""
-        t = self.results.get("times")
-        return None if t is None else np.array([np.nan if v is None else v for v in t], float)
-
-    @property
-    def series(self) -> dict:
-        """Every time history of the results as an array (``times`` included), {} when
-        the run has none."""
-        t = self.results.get("times")
-        if not isinstance(t, list):
-            return {}
-        return {k: np.array([np.nan if x is None else x for x in v], float)
-                for k, v in self.results.items()
-                if isinstance(v, list) and len(v) == len(t)
-                and all(x is None or isinstance(x, (int, float)) for x in v)}
-
-    @property
-    def node_history(self) -> np.ndarray | None:
-        """Node positions at every output time (nt, n_nodes, dim) of a dynamic run, m."""
-        if not self._geometry():
-            return None
-        times, qs, _ = self._states()
-        if times is None:
-            return None
-        return np.stack([self._nodes(q) for q in qs]) if len(qs) else None
-
-    # --- ParaView -------------------------------------------------------------------
-    def frames(self, per_element: int = 8) -> list:
-        """The deformed mesh per output step (:func:`ancf.scenes.frames.frames`)."""
-        from ancf.scenes.frames import frames
-        return frames(self.scene, self.extra, per_element)
-
-    def write_vtk(self, directory, per_element: int = 8) -> Path:
-        """Write the run as a ParaView time series, ``directory/SCENE.pvd`` plus one
-        ``.vtu`` per output step (what ``ancf run SCENE --vtk DIR`` writes); returns the
-        ``.pvd`` path.  Raises InputError for a result without a mesh.
-
-        >>> import ancf, pathlib, tempfile
-        >>> with tempfile.TemporaryDirectory() as d:
-        ...     pvd = ancf.run("cantilever", n_elements=2).write_vtk(d)
-        ...     sorted(p.name for p in pathlib.Path(d).iterdir()), pvd.name
-        (['cantilever.pvd', 'cantilever_00000.vtu'], 'cantilever.pvd')
-        """
-        from ancf.scenes.vtk import check_directory, write_run
-        check_directory(directory)
-        return write_run(self.scene, self.extra, directory, per_element)[0]
-
-    def write_gif(self, path, *, title: str = "") -> Path:
-        """Write a belt drive's run (``belt2d``, ``belt3d``, ``belt-drive``) as an animated
-        GIF at ``path`` (what ``ancf run SCENE --gif PATH`` writes: the belt coloured by
-        its axial force in N, the pulleys named, one frame per output step from t = 0, at
-        most 80); returns the path.  Raises InputError for another scene or a bad path.
-
-        Parameters
-        ----------
-        path : str or Path
-            The file to write, ending in ``.gif``; its folder is created if missing.
-        title : str
-            The title over the animation (default ``ancf run SCENE``).
-
-        Returns
-        -------
-        Path
-            ``path``.
-        """
-        from ancf.reports.animations import animate
-        from ancf.scenes.vtk import check_gif
-        gif = check_gif(self.scene, path)
-        return animate(self.scene, gif, self.extra, title=title or f"ancf run {self.scene}").path
 
 
 def _result(command: str, scene: str, out: dict, res) -> Result:
@@ -279,10 +131,33 @@ def _execute(command: str, name: str, overrides, params: dict, vtk=None) -> Resu
 
 
 def run(scene: str, overrides: dict | None = None, /, *, vtk=None, **params) -> Result:
-    """Run a scene, as ``ancf run SCENE --set k=v ...``: parameters as keywords (or a
-    dict; values as Python values or as the strings ``--set`` takes).  ``vtk``: a
-    directory to write the ParaView series into (checked before the run starts).
+    """Run a scene, as ``ancf run SCENE --set k=v ...``.
 
+    Parameters
+    ----------
+    scene : str
+        The scene's name (``ancf.scenes()`` lists them with their parameters).
+    overrides : dict, optional
+        Parameters as a dict (``{"n_elements": 8}``, or a drive file's ``"file"`` and its
+        ``"section.key"`` overrides), merged with ``**params``.
+    vtk : str or Path, optional
+        A folder to write the ParaView series into; checked before the run starts.
+    **params : str, int, float or bool
+        Parameters as keywords: Python values or the strings ``--set`` takes.
+
+    Returns
+    -------
+    Result
+        The run's outcome; ``to_json()`` is what ``--json`` prints.
+
+    Raises
+    ------
+    InputError
+        An unknown scene or parameter, or a value out of its range (the message
+        ``ancf run`` prints after ``error:``).
+
+    Examples
+    --------
     >>> import ancf
     >>> r = ancf.run("axial-bar", {"n_elements": 2})
     >>> r.converged, r.scene, r.command
@@ -293,12 +168,36 @@ def run(scene: str, overrides: dict | None = None, /, *, vtk=None, **params) -> 
 
 def modes(scene: str, overrides: dict | None = None, /, *, count=None, about="reference",
           **params) -> Result:
-    """Natural frequencies and mode shapes of a static scene, as ``ancf modes SCENE --set
-    k=v ... --count K --about STATE``: ``count`` modes (default 6, or the reduced size - 1),
-    the tangent stiffness at the ``"reference"`` state or at the static ``"equilibrium"``.
-    ``results["frequencies_hz"]`` ascending; ``extra["vectors"]`` the global mode vectors
-    (n_dofs, count); ``q`` the state vibrated about.
+    """Natural frequencies and mode shapes of a static scene, as ``ancf modes SCENE``.
 
+    Parameters
+    ----------
+    scene : str
+        A static scene (``cantilever``, ``simply-supported``, ``axial-bar``, the plates,
+        the 3D beams, ``belt-drive`` with a file).
+    overrides : dict, optional
+        Parameters as a dict, merged with ``**params``.
+    count : int or str, optional
+        The number of modes, lowest first (default 6, or the reduced size - 1 if smaller).
+    about : {"reference", "equilibrium"}
+        The tangent stiffness at the reference state (default) or at the scene's static
+        equilibrium under its load (pre-stressed).
+    **params : str, int, float or bool
+        The scene's parameters as keywords, as ``--set`` takes them.
+
+    Returns
+    -------
+    Result
+        ``results["frequencies_hz"]`` ascending; ``extra["vectors"]`` the global mode
+        vectors (n_dofs, count); ``q`` the state vibrated about.
+
+    Raises
+    ------
+    InputError
+        A scene without modes, a bad ``count`` or ``about``, or a bad parameter.
+
+    Examples
+    --------
     >>> import ancf
     >>> m = ancf.modes("cantilever", n_elements=4, count=2)
     >>> m.command, m.results["about"], len(m.results["frequencies_hz"])
@@ -321,6 +220,27 @@ def modes(scene: str, overrides: dict | None = None, /, *, count=None, about="re
 def analytic(name: str, overrides: dict | None = None, /, **params) -> Result:
     """Evaluate an analytic reference, as ``ancf analytic NAME --set k=v ...``.
 
+    Parameters
+    ----------
+    name : str
+        The reference's name (``ancf.scenes()`` lists those with ``command`` ``"analytic"``).
+    overrides : dict, optional
+        Parameters as a dict, merged with ``**params``.
+    **params : str, int, float or bool
+        Parameters as keywords, as ``--set`` takes them.
+
+    Returns
+    -------
+    Result
+        ``results`` only (an analytic reference has no mesh: ``nodes`` is ``None``).
+
+    Raises
+    ------
+    InputError
+        An unknown name or parameter, or a value out of its range.
+
+    Examples
+    --------
     >>> import ancf
     >>> t = ancf.analytic("timoshenko", F=-2000.0)
     >>> t.params["F"], t.results["mid_deflection_m"] < 0
@@ -330,12 +250,20 @@ def analytic(name: str, overrides: dict | None = None, /, **params) -> Result:
 
 
 def scenes() -> list[dict]:
-    """Every scene (``command`` ``"run"``) and analytic reference (``"analytic"``) with its
-    one-line description and parameters: ``{name: {default, unit, allowed, doc}}``
-    (``default`` is None where it depends on other parameters), as ``ancf scenes`` lists.
-    ``ancf.scenes`` is also the package of the scenes, made callable: ``ancf.scenes()`` and
-    ``ancf.api.scenes()`` are the same list.
+    """Every scene and analytic reference with its description and parameters.
 
+    As ``ancf scenes`` lists them. ``ancf.scenes`` is also the package of the scenes, made
+    callable: ``ancf.scenes()`` and ``ancf.api.scenes()`` are the same list.
+
+    Returns
+    -------
+    list of dict
+        One dict per entry: ``name``, ``command`` (``"run"`` or ``"analytic"``), ``doc``
+        and ``params``: ``{name: {default, unit, allowed, doc}}`` (``default`` None where it
+        depends on other parameters).
+
+    Examples
+    --------
     >>> import ancf
     >>> info = {s["name"]: s for s in ancf.scenes()}
     >>> info["cantilever"]["command"], info["reissner"]["command"]
@@ -396,20 +324,60 @@ def sweep(scene: str, grid=None, *, fixed: dict | None = None, out=None,
           reference: str | None = None, workers: int | None = None, scheduler=None,
           time_limit: float = 600.0, retry_failed: bool = False, progress: bool = False,
           log=None, quantity: str = "results", force: bool = False):
-    """Run the cartesian product of ``grid`` ({param: [values]}, or a list of such grids;
-    default: the scene's speed-accuracy grid) with ``fixed`` overrides, as ``ancf sweep``;
-    returns a pandas DataFrame, one row per run (parameters, status, results, the error
-    against ``reference`` and the counted work).  ``out`` (.parquet or .csv) keeps the rows
-    and resumes an interrupted sweep; without it the rows go to a temporary file that is
-    removed.  ``log``: a function of one line (default: silent).  ``quantity="frequency"``:
-    ``ancf modes`` runs (``fixed={"count": K}``: the lowest K bending frequencies) against
-    the analytic frequencies (cantilever, simply-supported, plate-square).  ``force``: run
-    more than :data:`ancf.study.sweep.MAX_RUNS` runs, or more ``workers`` than cores (as
-    ``--force``).  Every argument is checked as the command line checks its own
-    (InputError naming it); ``df.attrs["sweep"]`` holds the call's counts.
+    """Run the cartesian product of a parameter grid, as ``ancf sweep``.
 
+    Every argument is checked as the command line checks its own (InputError naming it).
+
+    Parameters
+    ----------
+    scene : str
+        The scene's name.
+    grid : dict or list of dict, optional
+        ``{param: value or [values]}``, or a list of such grids (their union); default the
+        scene's speed-accuracy grid.
+    fixed : dict, optional
+        Overrides held fixed in every run.
+    out : str or Path, optional
+        A ``.parquet`` or ``.csv`` file keeping the rows; an interrupted sweep resumes from
+        it. Without it the rows go to a temporary file that is removed.
+    reference : str, optional
+        The reference the error is measured against (default: the scene's).
+    workers : int, optional
+        Worker processes (default: the cores).
+    scheduler : str, optional
+        A Dask scheduler's address (``tcp://127.0.0.1:8786``) to run on instead.
+    time_limit : float
+        Seconds one run may take before it is stopped (default 600).
+    retry_failed : bool
+        Run again the rows of ``out`` that failed.
+    progress : bool
+        Print progress lines on stderr.
+    log : callable, optional
+        A function of one line of text (default: silent).
+    quantity : {"results", "frequency"}
+        ``"frequency"``: ``ancf modes`` runs (``fixed={"count": K}``: the lowest K bending
+        frequencies) against the analytic frequencies (cantilever, simply-supported,
+        plate-square).
+    force : bool
+        Run more than :data:`ancf.study.sweep.MAX_RUNS` runs, or more workers than cores.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per run: parameters, status, results, the error against ``reference``
+        and the counted work; ``df.attrs["sweep"]`` holds the call's counts.
+
+    Raises
+    ------
+    InputError
+        A bad scene, grid entry or argument.
+
+    Examples
+    --------
     >>> import ancf
     >>> df = ancf.sweep("axial-bar", grid={"n_elements": [1, 2]}, workers=1)  # doctest: +SKIP
+    >>> len(df)  # doctest: +SKIP
+    2
     """
     from ancf.scenes import SCENES
     from ancf.study.sweep import run_sweep
@@ -432,15 +400,50 @@ def sweep(scene: str, grid=None, *, fixed: dict | None = None, out=None,
 def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: str | None = None,
               data=None, workers: int | None = None, scheduler=None, time_limit: float = 300.0,
               progress: bool = False, log=None, quantity: str = "results") -> dict:
-    """The cheapest configuration of ``scene`` meeting the error tolerance ``tol``, as
-    ``ancf recommend SCENE --tol TOL --json``: the same dict (``params`` that
-    :func:`run` accepts as they are, ``error``, ``work``, ``cpu_time_s``, ``found``,
-    ``message``, ``evidence``).  ``data``: answer from a sweep file (:func:`sweep`'s
-    ``out``) instead of running the scene's recommendation sweep (cached under
-    ``reports/.cache/``).  ``quantity="frequency"``: the cheapest model whose lowest K
-    (``fixed={"count": K}``, default 3) bending frequencies are within ``tol`` of the
-    analytic ones.
+    """The cheapest configuration of a scene meeting an error tolerance.
 
+    As ``ancf recommend SCENE --tol TOL --json``.
+
+    Parameters
+    ----------
+    scene : str
+        The scene's name.
+    tol : float
+        The error tolerance, relative (as the scene's reference measures it).
+    fixed : dict, optional
+        Parameters held fixed (physical ones define the problem).
+    reference : str, optional
+        The reference the error is measured against (default: the scene's).
+    data : str or Path, optional
+        Answer from this sweep file (:func:`sweep`'s ``out``) instead of running the scene's
+        recommendation sweep (cached under ``reports/.cache/``).
+    workers : int, optional
+        Worker processes of that sweep.
+    scheduler : str, optional
+        A Dask scheduler's address to run it on.
+    time_limit : float
+        Seconds one run may take (default 300).
+    progress : bool
+        Print progress lines on stderr.
+    log : callable, optional
+        A function of one line of text (default: silent).
+    quantity : {"results", "frequency"}
+        ``"frequency"``: the cheapest model whose lowest K (``fixed={"count": K}``,
+        default 3) bending frequencies are within ``tol`` of the analytic ones.
+
+    Returns
+    -------
+    dict
+        ``params`` (that :func:`run` accepts as they are), ``error``, ``work``,
+        ``cpu_time_s``, ``found``, ``message``, ``evidence``.
+
+    Raises
+    ------
+    InputError
+        A bad scene, data file or argument.
+
+    Examples
+    --------
     >>> import ancf
     >>> rec = ancf.recommend("cantilever", 1e-3)  # doctest: +SKIP
     >>> ancf.run("cantilever", **rec["params"]).converged  # doctest: +SKIP

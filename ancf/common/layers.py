@@ -18,7 +18,7 @@ ROOT = REPO
 #: bottom to top; each layer is one or more paths, a path a folder (its modules) or a file
 LAYERS = (("ancf/common",), ("analytic",), ("ancf/core",), ("ancf/solvers",),
           ("ancf/elements",), ("ancf/models",), ("ancf/belts",), ("ancf/scenes",),
-          ("ancf/study",), ("ancf/checks",), ("ancf/reports",), ("ancf/cli.py", "ancf/api.py"))
+          ("ancf/study",), ("ancf/checks",), ("ancf/reports",), ("ancf/cli.py", "ancf/api.py", "ancf/result.py"))
 
 #: files outside every layer: the package itself, whose ``__init__`` imports nothing of the
 #: project at module level and only the top layer lazily, inside its module ``__getattr__``

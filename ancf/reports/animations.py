@@ -1,7 +1,7 @@
 """Animations of the belt drives: GIFs (matplotlib's ``PillowWriter``) of a finished run
 of ``belt2d``, ``belt3d`` or ``belt-drive`` from rest (frame 0 at t = 0) to its end.
 
-:func:`animate` takes a run (an ``ancf.run`` :class:`~ancf.api.Result`, or the scene's name
+:func:`animate` takes a run (an ``ancf.run`` :class:`~ancf.result.Result`, or the scene's name
 and its ``SceneResult.extra``) and writes one GIF: the belt coloured by its axial force
 (N; the belt points of :func:`ancf.scenes.frames.frames`, the same as ``--vtk`` writes;
 one colour scale for the whole animation), every pulley with a spoke so that its rotation

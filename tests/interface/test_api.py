@@ -189,8 +189,11 @@ def test_import_ancf_is_cheap_and_the_api_light():
 
 def test_the_docstring_examples_run():
     import ancf.api
-    res = doctest.testmod(ancf.api, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
-    assert res.failed == 0 and res.attempted >= 20
+    import ancf.result
+    flags = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
+    res = [doctest.testmod(m, optionflags=flags) for m in (ancf.api, ancf.result)]
+    assert [r.failed for r in res] == [0, 0]
+    assert res[0].attempted >= 20 and res[1].attempted >= 8
 
 
 GUIDE = ROOT / "docs" / "guide" / "python.md"
