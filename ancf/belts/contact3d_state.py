@@ -24,6 +24,34 @@ Derivatives (z0 and h fixed within a step): dv_0 = -(n . vr) t^T / |N| dr + t^T 
 :class:`Drive3DState` is :class:`ancf.belts.forces.Drive3D` with the state z
 (2, nel, nq, np, 2) m: its :func:`ancf.belts.forces.drive_forces` is
 :func:`contact_forces3d_state`'s.
+
+Crowned rims (:class:`Drive3DCrown`, :func:`contact_forces3d_crown`; issue 36 item 4).  A
+pulley's rim is the surface of revolution of radius R(s) about its axis, s the point's
+axial coordinate from the mid-face point f = (o_x, o_y, z_m) (as :mod:`ancf.belts.flange3d`:
+s = (r - o) . p - (z_m - o_z) p_z), W the face width (``face_width_m``; 0: 1.1 b):
+
+    R(s) = R + c (1 - (2 s / W)^2),  R' = -8 c s / W^2,  R'' = -8 c / W^2           (C1)
+    n, t, |N| as contact3d;  g = sqrt(1 + R'^2),  nu = (n - R' p) / g
+    d    = (R(s) - |N|) / g                        penetration along the normal nu, m  (C2)
+    F_n  = max(k_p d - c_p nu . vr, 0);  w = vr - omega R(s) t;  v_s = w - (w . nu) nu
+    f    = F_n nu + f_t(v_s)                       friction in the tangent plane        (C3)
+
+nu is the outward unit normal of the surface of revolution (the gradient of R(s) - |N| is
+R' p - n); d is the radial gap R(s) - |N| projected on it, the distance to the surface to
+first order in d.  For |s| > W / 2 the parabola is continued (R(s) < R there): the law stays
+smooth (C-infinity), so the Newton Jacobian stays exact everywhere, and a belt edge
+hanging over the end of the face loses its support gradually, as off a real face's edge;
+a clamp R(s) = R beyond W / 2 would put a kink in R' at the face's ends.  The normal has
+no moment about the axis (t . nu = 0), so the moment is -|N| t . f_t as contact3d's.
+Derivatives (C4): dnu/dr = (t t^T / |N| - R'' p p^T) / g - nu (R' R'' / g^2) p^T,
+dd/dr = (R' p - n)^T / g - d (R' R'' / g^2) p^T, dF_n = k_p dd - c_p (vr^T dnu/dr) dr
+- c_p nu^T drdot, dw/dr = -omega (R' t p^T - R(s) n t^T / |N|), dv_s/dr = (I - nu nu^T)
+dw/dr - (nu (w^T dnu/dr) + (w . nu) dnu/dr), dv_s/drdot = I - nu nu^T, dv_s/domega =
+-R(s) t; the moment row as contact3d's (p x f).  tests/belts/test_belt3d_crown.py checks
+them by central differences.  With c = 0 on every pulley the drive keeps
+:class:`ancf.belts.forces.Drive3D` and contact3d's kernel (bit for bit the drive without
+the key); only a crowned drive takes this kernel (with the friction laws without a state;
+no tensioner arms).
 """
 from __future__ import annotations
 
@@ -202,3 +230,213 @@ def contact_state3d_stepped(E, V, S, centres, axes, radii, omegas, centre_veloci
                 fts[e, q, p] = ft
                 vss[e, q, p] = vs
     return rr, d, Fn, fts, vss, br
+
+
+class Drive3DCrown(Drive3D):
+    """The compiled data of a 3D belt drive with a crowned pulley (fields as
+    :class:`ancf.belts.forces.Drive3D`; ``flanges.crowns`` (np, 3): crown c (m), mid-face
+    z_m (m), half face W / 2 (m) per pulley); its contact is :func:`contact_forces3d_crown`."""
+
+    __slots__ = ()
+
+
+@leaf
+def _crown_geometry(a, vr, p, R, om, prm, cr, o_z, n, t, nu, vs):
+    """The crowned rim's geometry and normal force at one point (a = r - o, m; vr m/s;
+    crown row cr = (c, z_m, W / 2), centre height o_z, m): fills n, t, nu, v_s (3,) and
+    returns |N|, d, F_n, |v_s|, the branch (0 out, 1 clamped, -1 in contact), R(s) (m),
+    R' and g = sqrt(1 + R'^2) (:func:`contact_forces3d_crown`, Eqs C1-C3)."""
+    kp, cp = prm.k_p, prm.c_p
+    c, half = cr[0], cr[2]
+    ap = a[0] * p[0] + a[1] * p[1] + a[2] * p[2]
+    s = ap - (cr[1] - o_z) * p[2]
+    Rs = R + c * (1.0 - (s / half) ** 2)
+    R1 = -2.0 * c * s / (half * half)
+    for i in range(3):
+        n[i] = a[i] - ap * p[i]
+    rho = np.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+    for i in range(3):
+        n[i] /= rho
+    t[0], t[1], t[2] = p[1] * n[2] - p[2] * n[1], p[2] * n[0] - p[0] * n[2], p[0] * n[1] - p[1] * n[0]
+    g = np.sqrt(1.0 + R1 * R1)
+    for i in range(3):
+        nu[i] = (n[i] - R1 * p[i]) / g
+    d = (Rs - rho) / g
+    wn = nu[0] * vr[0] + nu[1] * vr[1] + nu[2] * vr[2]  # w = vr - omega R(s) t, t . nu = 0
+    for i in range(3):
+        vs[i] = vr[i] - om * Rs * t[i] - wn * nu[i]
+    vsn = np.sqrt(vs[0] * vs[0] + vs[1] * vs[1] + vs[2] * vs[2])
+    if d < 0.0:
+        return rho, d, 0.0, vsn, 0, Rs, R1, g
+    Fn = kp * d - cp * wn
+    if Fn <= 0.0:
+        return rho, d, 0.0, vsn, 1, Rs, R1, g
+    return rho, d, Fn, vsn, -1, Rs, R1, g
+
+
+@leaf
+def _crown_law(a, vr, p, R, om, prm, cr, o_z, n, t, nu, vs, ft):
+    """:func:`_crown_geometry` and the friction f_t (3,) in the crowned rim's tangent plane;
+    returns |N|, d, F_n, |v_s|, the branch (the friction law's in contact), R(s), R', g."""
+    rho, d, Fn, vsn, where, Rs, R1, g = _crown_geometry(a, vr, p, R, om, prm, cr, o_z, n, t,
+                                                        nu, vs)
+    ft[:] = 0.0
+    if where >= 0:
+        return rho, d, Fn, vsn, where, Rs, R1, g
+    b = friction.force((vs[0], vs[1], vs[2]), vsn, Fn, prm, ft)
+    return rho, d, Fn, vsn, b, Rs, R1, g
+
+
+@leaf
+def _crown_jacobian(vr, p, om, cr, rho, d, Fn, vsn, branch, Rs, R1, g, n, t, nu, vs, ft, prm,
+                    Dn, gF, G, D):
+    """D (4, 7): derivatives of (f_0, f_1, f_2, tau) by (r, rdot, omega) on the crowned rim
+    (Eq. C4); Dn (3, 3) d nu / dr, gF (7,), G (3, 7) scratch."""
+    kp, cp = prm.k_p, prm.c_p
+    R2 = -2.0 * cr[0] / (cr[2] * cr[2])
+    q = R1 * R2 / (g * g)
+    for i in range(3):
+        for c in range(3):
+            Dn[i, c] = (t[i] * t[c] / rho - R2 * p[i] * p[c]) / g - nu[i] * q * p[c]
+    wv = np.zeros(3)
+    for i in range(3):
+        wv[i] = vr[i] - om * Rs * t[i]
+    wn = nu[0] * wv[0] + nu[1] * wv[1] + nu[2] * wv[2]
+    for c in range(3):
+        vDn = vr[0] * Dn[0, c] + vr[1] * Dn[1, c] + vr[2] * Dn[2, c]
+        gF[c] = kp * ((R1 * p[c] - n[c]) / g - d * q * p[c]) - cp * vDn
+        gF[3 + c] = -cp * nu[c]
+    gF[6] = 0.0
+    dw = np.zeros((3, 3))  # d w / dr = -omega (R' t p^T - R(s) n t^T / |N|)
+    for i in range(3):
+        for c in range(3):
+            dw[i, c] = -om * (R1 * t[i] * p[c] - Rs * n[i] * t[c] / rho)
+    for c in range(3):
+        dwn = 0.0
+        for i in range(3):
+            dwn += nu[i] * dw[i, c] + wv[i] * Dn[i, c]
+        for i in range(3):
+            G[i, c] = dw[i, c] - nu[i] * dwn - wn * Dn[i, c]
+            G[i, 3 + c] = (1.0 if i == c else 0.0) - nu[i] * nu[c]
+    for i in range(3):
+        G[i, 6] = -Rs * t[i]
+    gFt = (gF[0], gF[1], gF[2], gF[3], gF[4], gF[5], gF[6])
+    friction.chain(branch, (vs[0], vs[1], vs[2]), vsn, Fn, prm, G, gFt, D)
+    for i in range(3):
+        for c in range(7):
+            D[i, c] += nu[i] * gF[c]
+        for c in range(3):
+            D[i, c] += Fn * Dn[i, c]
+    f = np.zeros(3)
+    for i in range(3):
+        f[i] = Fn * nu[i] + ft[i]
+    for c in range(7):
+        D[3, c] = -rho * (t[0] * D[0, c] + t[1] * D[1, c] + t[2] * D[2, c])
+    D[3, 0] += p[1] * f[2] - p[2] * f[1]
+    D[3, 1] += p[2] * f[0] - p[0] * f[2]
+    D[3, 2] += p[0] * f[1] - p[1] * f[0]
+
+
+@njit(cache=True)
+def contact_forces3d_crown(E, V, S0, w, centres, axes, radii, omegas, centre_velocities, prm,
+                           crowns, want_J, Q, Kq, Cv, Qw, T, dTq, dTv, dTw):
+    """:func:`ancf.belts.contact3d.contact_forces3d` on crowned rims (module docstring,
+    Eqs C1-C4): ``crowns`` (np, 3) per pulley c (m), z_m (m), W / 2 (m); arguments and
+    outputs otherwise as there; returns the pairs evaluated.  The culling takes the
+    largest radius R + c."""
+    nel, nq = w.shape
+    D, G, P, X = np.zeros((4, 7)), np.zeros((3, 7)), np.zeros((16, 3)), np.zeros((16, 3))
+    v, a, vr, gF, rq = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(7), np.zeros((nq, 3))
+    n, t, vs, ft, pax = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    nu, Dn = np.zeros(3), np.zeros((3, 3))
+    ns = S0.shape[2]
+    PB, DB = np.zeros((BATCH, ns * (ns + 1) // 2)), np.zeros((BATCH, 18))
+    A = np.zeros((18, ns * (ns + 1) // 2))
+    sk, Qt = np.zeros(ns), np.zeros((3, ns))
+    pairs = 0
+    for e in range(nel):
+        sa, sb = _sides(S0, w, e)
+        _control_points(E, e, sa, sb, P)
+        _positions(E, S0, e, rq)
+        for p in range(radii.shape[0]):
+            _unit_axis(axes, p, pax)
+            R, om, cr = radii[p], omegas[p], crowns[p]
+            if not _may_touch(P, centres[p], pax, R + cr[0], X):
+                continue
+            pairs += 1
+            nb = 0
+            touched = False
+            _swap_forces(Q, e, Qt, False)
+            for q in range(nq):
+                if not _penetrates(rq, q, centres, p, pax, R + cr[0]):
+                    continue
+                _mid_velocity(V, S0, e, q, v)
+                for c in range(3):
+                    a[c] = rq[q, c] - centres[p, c]
+                    vr[c] = v[c] - centre_velocities[p, c]
+                rho, d, Fn, vsn, branch, Rs, R1, g = _crown_law(
+                    a, vr, pax, R, om, prm, cr, centres[p, 2], n, t, nu, vs, ft)
+                if Fn <= 0.0:
+                    continue
+                ww = w[e, q]
+                _add_force(S0, e, q, ww, Fn, nu, ft, sk, Qt)
+                T[p] -= ww * rho * (t[0] * ft[0] + t[1] * ft[1] + t[2] * ft[2])
+                if want_J:
+                    _crown_jacobian(vr, pax, om, cr, rho, d, Fn, vsn, branch, Rs, R1, g, n, t,
+                                    nu, vs, ft, prm, Dn, gF, G, D)
+                    _add_jacobians(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], PB, DB, nb)
+                    dTw[p] += ww * D[3, 6]
+                    nb += 1
+                    if nb == BATCH:
+                        _add_batch(PB, DB, nb, A)
+                        nb = 0
+                    touched = True
+            _swap_forces(Q, e, Qt, True)
+            if touched:
+                _add_batch(PB, DB, nb, A)
+                _flush(A, e, ns, Kq, Cv)
+    return pairs
+
+
+@implements(drive_forces, Drive3DCrown)
+def _forces3d_crown(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
+    """The centres moved by their laws, the flanges, then the crowned rims' contact
+    (:func:`contact_forces3d_crown`)."""
+    plate36.gradient_tangent(E, drive.element, want_J, g, K)
+    o, odot = moved_centres(drive, laws)
+    add_flanges(E, V, drive.flanges, o, odot, drive.axes, drive.radii, want_J, c)
+    return contact_forces3d_crown(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas,
+                                  odot, drive.prm, drive.flanges.crowns, want_J, *c)
+
+
+@njit(cache=True)
+def contact_state3d_crown(E, V, S0, centres, axes, radii, omegas, centre_velocities, prm,
+                          crowns):
+    """:func:`ancf.belts.contact3d.contact_state3d` on crowned rims: r, d, F_n, f_t, v_s,
+    branch as there (d the crowned rim's penetration, Eq. C2) and the normals nu
+    (nel, nq, np, 3)."""
+    nel, nq, npul = S0.shape[0], S0.shape[1], radii.shape[0]
+    rr = np.zeros((nel, nq, 3))
+    d, Fn = np.zeros((nel, nq, npul)), np.zeros((nel, nq, npul))
+    fts, vss = np.zeros((nel, nq, npul, 3)), np.zeros((nel, nq, npul, 3))
+    br = np.zeros((nel, nq, npul), dtype=np.int64)
+    nus = np.zeros((nel, nq, npul, 3))
+    r, v, a, vr = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    n, t, vs, ft, pax, nu = (np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3),
+                             np.zeros(3))
+    for e in range(nel):
+        for q in range(nq):
+            _mid_surface(E, V, S0, e, q, r, v)
+            rr[e, q] = r
+            for p in range(npul):
+                _unit_axis(axes, p, pax)
+                for c in range(3):
+                    a[c] = r[c] - centres[p, c]
+                    vr[c] = v[c] - centre_velocities[p, c]
+                _, dd, F, _, b, _, _, _ = _crown_law(a, vr, pax, radii[p], omegas[p], prm,
+                                                     crowns[p], centres[p, 2], n, t, nu, vs, ft)
+                d[e, q, p], Fn[e, q, p], br[e, q, p] = dd, F, b
+                fts[e, q, p] = ft
+                vss[e, q, p] = vs
+                nus[e, q, p] = nu
+    return rr, d, Fn, fts, vss, br, nus

@@ -59,7 +59,12 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
   wrap).  A plate belt's pulley other than a tensioner may have flanges (:data:`FLANGES`:
   ``flanges`` true or false, default false; ``face_width_m``, the face between them, at
   least the belt's width, default 0: 1.1 b; ``flange_height_m``, default 0.005 m), side
-  walls holding a walking belt (:mod:`ancf.belts.flange3d`).
+  walls holding a walking belt (:mod:`ancf.belts.flange3d`).  Any plate-belt pulley but a
+  tensioner may be crowned (``crown_m``, default 0: a cylinder; at least 0 and below its
+  radius; the friction laws without a state), its rim the surface of revolution of radius
+  R + crown_m (1 - (2 a / W)^2) (:mod:`ancf.belts.contact3d_state`), and its face (crown and
+  flanges) displaced along its axis by ``face_offset_m`` (default 0 m), so the belt starts
+  that far off-centre.
   Angular velocities are counter-clockwise positive; a load torque T_a resists the
   pulley's running direction (Eq. 3.26 with -T_a; counter-clockwise on the belt's inner
   side, clockwise on its back); a table is ``[[t, value], ...]``, t increasing,
@@ -358,6 +363,13 @@ FLANGES = _keys(
           lo=0, hi=1.0),
     Param("flange_height_m", 0.005, float, "m", "the flanges' height above the rim (their "
           "stiffness tapers to 0 over its outer half)", lo=0, lo_open=True, hi=0.1),
+    Param("crown_m", 0.0, float, "m", "the crown: the rim's radius rise at mid-face, "
+          "R(a) = R + crown_m (1 - (2 a / W)^2) at the axial offset a from mid-face, W the "
+          "face width (face_width_m; ancf.belts.contact3d_state); below the radius",
+          lo=0, hi=1.0),
+    Param("face_offset_m", 0.0, float, "m", "the face's mid-plane (its crown's and flanges') "
+          "displaced along the axis from the belt's laid mid-line (a belt that starts "
+          "off-centre by -face_offset_m)", lo=-0.5, hi=0.5),
 )
 #: every key a pulley law or its time law may take (beyond PULLEY's)
 LAW_PARAMS = {**{k.name: k for role in ROLES.values() for k in role.keys}, **TIME_KEYS}

@@ -65,9 +65,13 @@ class Flanges(NamedTuple):
     S: np.ndarray      # (nel, 2 n, 12) plate36 shape functions at the edge points
     w: np.ndarray      # (nel, 2 n) their Gauss weights, m
     table: np.ndarray  # (nf, COLUMNS) one row per flanged pulley
+    #: (np, 3) per pulley its crown c (m), mid-face z_m (m), half face W / 2 (m); (0, 3)
+    #: when no pulley is crowned (ancf.belts.contact3d_state, crowned rims)
+    crowns: np.ndarray = np.zeros((0, 3))
 
 
-NO_FLANGES = Flanges(S=np.zeros((0, 0, 12)), w=np.zeros((0, 0)), table=np.zeros((0, COLUMNS)))
+NO_FLANGES = Flanges(S=np.zeros((0, 0, 12)), w=np.zeros((0, 0)), table=np.zeros((0, COLUMNS)),
+                     crowns=np.zeros((0, 3)))
 
 
 def edge_points(lengths, width: float, n: int) -> tuple:
@@ -94,7 +98,8 @@ def flanges_of(drive, desc) -> Flanges:
     s, rows = drive.spec, []
     for j, q in enumerate(desc.pulleys):
         if q.params.get("flanges", False):
-            rows.append((j, 0.5 * s.width, 0.5 * face_width(q.params, s.width),
+            rows.append((j, 0.5 * s.width + q.params.get("face_offset_m", 0.0),
+                         0.5 * face_width(q.params, s.width),
                          q.params["flange_height_m"], s.k_p * s.h, s.c_p * s.h))
     if not rows:
         return NO_FLANGES

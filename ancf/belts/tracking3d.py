@@ -46,13 +46,19 @@ over the belt's contact points on it (penetration > 0, weighted by their areas) 
 (r - f) . p, m; ``axial_force_N``, the pulley's contact force on the belt along p summed
 over the points, N (the friction's: the normal n is normal to p), with its flanges' force
 on the belt's edges (:mod:`ancf.belts.flange3d`); ``flange_force_N``, the flanges' part
-alone, N (0 on a pulley without flanges).
+alone, N (0 on a pulley without flanges).  On a crowned drive
+(:mod:`ancf.belts.contact3d_state`, crowned rims) the points in contact are those of the
+crowned rim, f is the face's mid-plane point (z_m = w / 2 + ``face_offset_m``) and the
+axial force includes the normal force's part along p (nu . p = -R' / g).
 """
 from __future__ import annotations
 
 import numpy as np
 
-from ancf.belts import flange3d, post3d
+from ancf.belts import flange3d, friction, post3d
+from ancf.belts.contact3d_state import contact_state3d_crown
+from ancf.belts.drive_data import ROLES
+from ancf.common.params import InputError
 
 
 def pulley_axes(desc) -> np.ndarray:
@@ -84,17 +90,54 @@ def align(drive, desc):
     if misaligned(desc):
         drive.align(pulley_axes(desc))
     drive.flanges = flange3d.flanges_of(drive, desc)
+    crowns = crowns_of(desc)
+    if crowns is not None:
+        drive.flanges = drive.flanges._replace(crowns=crowns)
     return drive
+
+
+def crowns_of(desc):
+    """(np, 3) per pulley crown c (m), mid-face z_m (m), W / 2 (m) (:mod:`ancf.belts.
+    contact3d_state`, crowned rims) of a plate-belt description with a crowned pulley, else
+    None; a crown on a tensioner, with a friction law carrying a state, or not below the
+    pulley's radius: InputError (one line naming the key and its allowed range)."""
+    if desc.belt["element"] != "plate36" or not any(
+            q.params.get("crown_m", 0.0) > 0 for q in desc.pulleys):
+        return None
+    w, rows = desc.belt["b"], []
+    for i, q in enumerate(desc.pulleys):
+        c = q.params["crown_m"]
+        if c >= q.radius:
+            raise InputError(f"pulleys.{i}.crown_m = {c!r} is out of range: not below the "
+                             f"pulley's radius {q.radius:g} m; allowed: a number in "
+                             f"[0, {q.radius:g}) m")
+        if c > 0 and ROLES[q.law].arm:
+            raise InputError(f"pulleys.{i}.crown_m = {c!r} is out of range for law = "
+                             f"{q.law!r}; allowed: 0 (a tensioner's pulley is a cylinder)")
+        rows.append((c, 0.5 * w + q.params["face_offset_m"],
+                     0.5 * flange3d.face_width(q.params, w)))
+    if desc.friction["law"] not in friction.LAWS:
+        raise InputError(f"friction.law = {desc.friction['law']!r} is out of range with a "
+                         "crowned pulley (crown_m > 0); allowed: one of "
+                         f"{', '.join(friction.LAWS)} (no state per contact point)")
+    return np.array(rows, dtype=float)
 
 
 def tracking(drive, x, v, t: float, state=None) -> tuple:
     """(lateral (np,) m, axial (np,) N, flange (np,) N) at state (x, v), time t (s): the
     module docstring's per-pulley quantities (NaN lateral position off contact); ``state``
     a friction law's (:func:`ancf.belts.post3d.contact_sample`)."""
-    r, d, _, ft = post3d.contact_sample(drive, x, v, t, state)[:4]
+    crowns = drive.flanges.crowns
     o, odot = drive.moved(x, v, t)
+    if crowns.shape[0]:
+        E, V, o2, om, od2 = post3d._contact_args(drive, x, v, t)
+        r, d, Fn, ft, _, _, nu = contact_state3d_crown(E, V, drive.S0, o2, drive.axes,
+                                                       drive.radii, om, od2, drive.prm, crowns)
+        ft = ft + Fn[..., None] * nu  # the crowned rim's normal has a part along p
+    else:
+        r, d, _, ft = post3d.contact_sample(drive, x, v, t, state)[:4]
     f = o.copy()
-    f[:, 2] = 0.5 * drive.spec.width
+    f[:, 2] = 0.5 * drive.spec.width if not crowns.shape[0] else crowns[:, 1]
     y = np.einsum("eqpc,pc->eqp", r[:, :, None, :] - f, drive.axes)
     W = drive.w[:, :, None] * (d > 0)
     area = W.sum(axis=(0, 1))
