@@ -298,25 +298,20 @@ def _crown_jacobian(vr, p, om, cr, rho, d, Fn, vsn, branch, Rs, R1, g, n, t, nu,
     for i in range(3):
         for c in range(3):
             Dn[i, c] = (t[i] * t[c] / rho - R2 * p[i] * p[c]) / g - nu[i] * q * p[c]
-    wv = np.zeros(3)
-    for i in range(3):
-        wv[i] = vr[i] - om * Rs * t[i]
-    wn = nu[0] * wv[0] + nu[1] * wv[1] + nu[2] * wv[2]
+    w0, w1, w2 = vr[0] - om * Rs * t[0], vr[1] - om * Rs * t[1], vr[2] - om * Rs * t[2]
+    wn = nu[0] * w0 + nu[1] * w1 + nu[2] * w2
     for c in range(3):
         vDn = vr[0] * Dn[0, c] + vr[1] * Dn[1, c] + vr[2] * Dn[2, c]
         gF[c] = kp * ((R1 * p[c] - n[c]) / g - d * q * p[c]) - cp * vDn
         gF[3 + c] = -cp * nu[c]
     gF[6] = 0.0
-    dw = np.zeros((3, 3))  # d w / dr = -omega (R' t p^T - R(s) n t^T / |N|)
-    for i in range(3):
-        for c in range(3):
-            dw[i, c] = -om * (R1 * t[i] * p[c] - Rs * n[i] * t[c] / rho)
-    for c in range(3):
-        dwn = 0.0
+    for c in range(3):  # d w / dr = -omega (R' t p^T - R(s) n t^T / |N|), column c in G
         for i in range(3):
-            dwn += nu[i] * dw[i, c] + wv[i] * Dn[i, c]
+            G[i, c] = -om * (R1 * t[i] * p[c] - Rs * n[i] * t[c] / rho)
+        dwn = (nu[0] * G[0, c] + nu[1] * G[1, c] + nu[2] * G[2, c]
+               + w0 * Dn[0, c] + w1 * Dn[1, c] + w2 * Dn[2, c])
         for i in range(3):
-            G[i, c] = dw[i, c] - nu[i] * dwn - wn * Dn[i, c]
+            G[i, c] += -nu[i] * dwn - wn * Dn[i, c]
             G[i, 3 + c] = (1.0 if i == c else 0.0) - nu[i] * nu[c]
     for i in range(3):
         G[i, 6] = -Rs * t[i]
@@ -327,14 +322,12 @@ def _crown_jacobian(vr, p, om, cr, rho, d, Fn, vsn, branch, Rs, R1, g, n, t, nu,
             D[i, c] += nu[i] * gF[c]
         for c in range(3):
             D[i, c] += Fn * Dn[i, c]
-    f = np.zeros(3)
-    for i in range(3):
-        f[i] = Fn * nu[i] + ft[i]
+    f0, f1, f2 = Fn * nu[0] + ft[0], Fn * nu[1] + ft[1], Fn * nu[2] + ft[2]
     for c in range(7):
         D[3, c] = -rho * (t[0] * D[0, c] + t[1] * D[1, c] + t[2] * D[2, c])
-    D[3, 0] += p[1] * f[2] - p[2] * f[1]
-    D[3, 1] += p[2] * f[0] - p[0] * f[2]
-    D[3, 2] += p[0] * f[1] - p[1] * f[0]
+    D[3, 0] += p[1] * f2 - p[2] * f1
+    D[3, 1] += p[2] * f0 - p[0] * f2
+    D[3, 2] += p[0] * f1 - p[1] * f0
 
 
 @njit(cache=True)

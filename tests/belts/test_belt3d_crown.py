@@ -44,3 +44,127 @@ def test_bad_crowns_are_one_error_line(path, item, words, capsys):
     ``error:`` line naming the key and its allowed range, exit 2."""
     line = _one_error_line(["run", "belt-drive", "--file", str(path), "--set", item], capsys)
     assert words in line, line
+
+
+# ------------------------------------------------------------ the crowned kernel's derivatives
+C, HALF = 1e-3, 0.03  # crown (m) and half face (m) of the checks: R' up to 2 C / HALF = 0.07
+FD_CASES = {  # strip radius above R0 (m), creep coefficient nu_s (kg/(m^2 s)), pulley speed
+    "linear": dict(gap=0.5e-3, nu=1e2, omega=5.0),
+    "saturated": dict(gap=0.5e-3, nu=1e8, omega=2.0),
+}
+
+
+def _crown_case(case: dict) -> tuple:
+    """4 plates wrapped over 1.6 rad at R0 + gap on a crowned pulley (axis AXIS; the strip
+    along it from 0.01 to 0.06 m, the mid-face at 0.03 m, so the crown's slope changes sign
+    on it and its edge lies past the face's end, on the continued parabola), perturbed at
+    random; pulley 1 far away.  Returns (E, V, S0, w, pulleys, omegas, prm, crowns)."""
+    from tests.belts.test_contact3d import AXIS, R0, _frame, _pulleys, _wrap
+    rng = np.random.default_rng(3)
+    p = _frame(AXIS)[2]
+    pul = _pulleys([[0.02, -0.01, 0.03], [0.6, 0.3, -0.2]], [AXIS, [1.0, 0.0, 0.0]], [R0, 0.05],
+                   odot=[[0.3, -0.2, 0.1], [0.0, 0.5, 0.0]])
+    E, V, S0, w, _ = _wrap(4, R0 + case["gap"], pul["centres"][0] + 0.01 * p, AXIS, arc=1.6,
+                           theta0=-0.3, width=0.05, omega_b=5.0, axial=0.2, drift=pul["odot"][0])
+    E = E + 1e-4 * rng.standard_normal(E.shape)
+    V = V + 0.05 * rng.standard_normal(V.shape)
+    zm = pul["centres"][0, 2] + 0.03 / p[2]  # s = (r - o) . p - (z_m - o_z) p_z
+    crowns = np.array([[C, zm, HALF], [0.0, 0.0, HALF]])
+    prm = friction.contact_record(1e7, 2000.0, "creep-rate", 0.3, case["nu"])
+    return E, V, S0, w, pul, np.array([case["omega"], 3.0]), prm, crowns
+
+
+def _crown_forces(E, V, S0, w, pul, omegas, prm, crowns, want_J=True) -> dict:
+    from tests.belts.test_contact3d import _outputs
+    out = _outputs(E.shape[0], pul["radii"].size)
+    contact_forces3d_crown(E, V, S0, w, pul["centres"], pul["axes"], pul["radii"], omegas,
+                           pul["odot"], prm, crowns, want_J, *out.values())
+    return out
+
+
+def _labels(E, V, S0, pul, omegas, prm, crowns) -> np.ndarray:
+    from ancf.belts.contact3d_state import contact_state3d_crown
+    return contact_state3d_crown(E, V, S0, pul["centres"], pul["axes"], pul["radii"], omegas,
+                                 pul["odot"], prm, crowns)[5]
+
+
+@pytest.mark.parametrize("name", list(FD_CASES))
+def test_crowned_jacobians_match_central_differences(name):
+    """Every derivative of contact_forces3d_crown (dQ/de, dQ/dedot, dQ/domega, dT/de,
+    dT/dedot, dT/domega) against central differences with test_contact3d's step and
+    column tolerance (RTOL of the column's norm plus round-off); no stencil point changes
+    any point's branch; some points in contact, some out, on the stated friction branch."""
+    from tests.belts.test_contact3d import H, R0, _check
+    E, V, S0, w, pul, omegas, prm, crowns = _crown_case(FD_CASES[name])
+    base = _crown_forces(E, V, S0, w, pul, omegas, prm, crowns)
+    labels = _labels(E, V, S0, pul, omegas, prm, crowns)
+    nel, npul = E.shape[0], 2
+    fd = {k: np.zeros_like(v) for k, v in base.items()}
+
+    def diff(Ep, Vp, om):
+        res = []
+        for sgn in (1.0, -1.0):
+            args = [x.copy() for x in (Ep(sgn * H), Vp(sgn * H), om(sgn * H))]
+            assert np.array_equal(_labels(args[0], args[1], S0, pul, args[2], prm, crowns),
+                                  labels), "a kink within one step"
+            o = _crown_forces(args[0], args[1], S0, w, pul, args[2], prm, crowns, False)
+            res.append((o["Q"], o["T"]))
+        return (res[0][0] - res[1][0]) / (2 * H), (res[0][1] - res[1][1]) / (2 * H)
+
+    def bump(X, e, k, c):
+        def at(h):
+            Xp = X.copy()
+            Xp[e, k, c] += h
+            return Xp
+        return at
+
+    same = (lambda X: (lambda h: X))
+    for e in range(nel):
+        for j in range(36):
+            k, c = divmod(j, 3)
+            dQ, dT = diff(bump(E, e, k, c), same(V), same(omegas))
+            fd["Kq"][e, :, j], fd["dTq"][:, e, j] = dQ[e], dT
+            dQ, dT = diff(same(E), bump(V, e, k, c), same(omegas))
+            fd["Cv"][e, :, j], fd["dTv"][:, e, j] = dQ[e], dT
+    for p in range(npul):
+        dQ, dT = diff(same(E), same(V), lambda h, p=p: omegas + h * (np.arange(npul) == p))
+        fd["Qw"][:, p, :], fd["dTw"][p] = dQ, dT[p]
+    sQ = np.abs(base["Q"]).max()
+    sT = max(np.abs(base["T"]).max(), R0 * sQ)
+    for key in ("Kq", "Cv", "Qw"):
+        _check(fd[key], base[key], sQ, key)
+    for key in ("dTq", "dTv"):
+        _check(fd[key], base[key], sT, key)
+    _check(fd["dTw"][:, None], base["dTw"][:, None], sT, "dTw")
+    on = labels[:, :, 0]
+    assert np.any(on == 0) and np.any(on >= 2), on
+    assert not labels[:, :, 1].any()
+    assert np.all(on[on >= 2] == (2 if name == "linear" else 3)), on
+
+
+# ------------------------------------------------------------------ crown_m = 0 is no crown
+def _coarse(sets: list, t_end: float = 0.05) -> tuple:
+    """(results, the scene's result) of examples/three_pulleys_3d.toml coarsened (20
+    plates, 5 x 5 contact points, the driver ramped to 20 rad/s in 20 ms, laid on its
+    path) to ``t_end`` s, with the extra ``sets``."""
+    base = ["pulleys.driver.t0=0", "pulleys.driver.t1=0.02", "pulleys.driven.t0=0",
+            "pulleys.driven.t1=0.02", "pulleys.driver.omega_final=20",
+            "pulleys.driven.load_torque=0.05", "belt.n_elements=20",
+            "contact.gauss_points=25", "run.start=laid"]
+    out, res = SCENES["belt-drive"].execute({
+        "file": str(THREE3D), "run.t_end": str(t_end), "run.steady_window": "0.005",
+        "run.output_dt": "0.0025", "set": "; ".join(base + sets)})
+    assert out["converged"], out["message"]
+    return json.loads(json.dumps(out))["results"], res
+
+
+def test_crown_zero_is_the_drive_without_the_key():
+    """``crown_m = 0`` (and ``face_offset_m = 0``) runs bit for bit the drive that does not
+    name the keys, on a 1 deg tilted driven pulley (contact3d's kernel, the Drive3D
+    record: the crowned kernel is not called)."""
+    (a, ra), (b, rb) = (_coarse(["pulleys.driven.axis_tilt_deg=1"] + extra) for extra in (
+        ["pulleys.driven.crown_m=0", "pulleys.driven.face_offset_m=0"], []))
+    assert type(ra.extra["drive"].kernel()).__name__ == "Drive3D"
+    assert a["times"] == b["times"] and a["pulleys"] == b["pulleys"]
+    assert np.array_equal(ra.extra["result"].q, rb.extra["result"].q)
+    assert np.array_equal(ra.extra["result"].v, rb.extra["result"].v)
