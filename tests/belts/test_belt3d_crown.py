@@ -168,3 +168,54 @@ def test_crown_zero_is_the_drive_without_the_key():
     assert a["times"] == b["times"] and a["pulleys"] == b["pulleys"]
     assert np.array_equal(ra.extra["result"].q, rb.extra["result"].q)
     assert np.array_equal(ra.extra["result"].v, rb.extra["result"].v)
+
+
+# ------------------------------------------------------------------ centring (ancf.checks.crown3d)
+def test_crowned_example_runs_from_the_cli(capsys):
+    """``ancf run belt-drive --file examples/crowned.toml`` (cut to 0.05 s) converges; the
+    driven pulley's lateral position, measured from its displaced face's mid-plane, is the
+    belt's start off the crown's top, -face_offset_m, within 5 % (the contact points' mean)."""
+    from ancf.belts.drive_file import load
+    path = REPO / "examples" / "crowned.toml"
+    assert main(["run", "belt-drive", "--json", "--file", str(path), "--set", "run.t_end=0.05",
+                 "--set", "run.steady_window=0.01"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    y0 = load(path).pulleys[2].params["face_offset_m"]
+    lateral = out["results"]["pulleys"][2]["lateral_position_m"]
+    assert out["converged"] and y0 > 0
+    assert lateral[-1] == pytest.approx(-y0, rel=0.05), lateral
+
+
+@pytest.fixture(scope="module")
+def centring() -> list:
+    from ancf.checks import crown3d
+    return crown3d.rows()
+
+
+@pytest.mark.xfail(strict=True, reason="documented miss (ancf/checks/crown3d.py): the soft "
+                   "benchmark belt stretches to follow the crown instead of steering")
+def test_benchmark_belt_comes_back_in_the_rules_time(centring):
+    """The acceptance: the belt 3 mm off a 0.5 mm crown is back within 10 % of its offset
+    within 10 % of the classic rule's time t* (crown3d Eq. 2).  It is not (strict xfail):
+    the row stays a failed check until the model or the rule changes."""
+    from ancf.checks import crown3d
+    assert crown3d.checks(centring)[0].passed, centring[0]
+
+
+def test_the_miss_is_the_belts_stretch(centring):
+    """The evidence for the miss.  The rule's t* falls within the runs (before 60 % of
+    T_END).  The benchmark belt, whose 19 % strain is over 20 times the 0.5 % edge strain
+    difference the crown asks for, moves its entry less than 1 % of y0; the stiff belt,
+    whose 0.19 % strain is below that difference (its low edge would go slack), moves
+    toward the crown's top by over 4 % of y0 and over 5 times the benchmark belt's move;
+    neither is back within 10 % by T_END (the rule: by t*)."""
+    from ancf.checks import crown3d
+    soft, stiff = centring
+    y0 = -soft["entry_start_m"]
+    assert soft["predicted_s"] < 0.6 * crown3d.T_END
+    assert soft["belt_strain"] > 20 * soft["edge_strain_difference"]
+    assert stiff["belt_strain"] < stiff["edge_strain_difference"]
+    moved = [r["entry_end_m"] - r["entry_start_m"] for r in (soft, stiff)]
+    assert abs(moved[0]) < 0.01 * y0, moved
+    assert moved[1] > 0.04 * y0 and moved[1] > 5 * abs(moved[0]), moved
+    assert all(np.isnan(r["simulated_s"]) for r in centring)
