@@ -170,6 +170,9 @@ def modes(scene: str, overrides: dict | None = None, /, *, count=None, about="re
           **params) -> Result:
     """Natural frequencies and mode shapes of a static scene, as ``ancf modes SCENE``.
 
+    As ``ancf modes SCENE --set k=v ... --count K --about STATE``: the parameters are
+    checked as ``--set`` values are.
+
     Parameters
     ----------
     scene : str
@@ -178,10 +181,11 @@ def modes(scene: str, overrides: dict | None = None, /, *, count=None, about="re
     overrides : dict, optional
         Parameters as a dict, merged with ``**params``.
     count : int or str, optional
-        The number of modes, lowest first (default 6, or the reduced size - 1 if smaller).
+        The number of modes, lowest first (``--count``; default 6, or the reduced size - 1
+        if smaller).
     about : {"reference", "equilibrium"}
         The tangent stiffness at the reference state (default) or at the scene's static
-        equilibrium under its load (pre-stressed).
+        equilibrium under its load, pre-stressed (``--about``).
     **params : str, int, float or bool
         The scene's parameters as keywords, as ``--set`` takes them.
 
@@ -349,17 +353,18 @@ def sweep(scene: str, grid=None, *, fixed: dict | None = None, out=None,
     time_limit : float
         Seconds one run may take before it is stopped (default 600).
     retry_failed : bool
-        Run again the rows of ``out`` that failed.
+        Run again the rows of ``out`` that failed (default False).
     progress : bool
-        Print progress lines on stderr.
+        Print progress lines on stderr (default False).
     log : callable, optional
         A function of one line of text (default: silent).
     quantity : {"results", "frequency"}
-        ``"frequency"``: ``ancf modes`` runs (``fixed={"count": K}``: the lowest K bending
-        frequencies) against the analytic frequencies (cantilever, simply-supported,
-        plate-square).
+        ``"results"`` (default): the scene's runs. ``"frequency"``: ``ancf modes`` runs
+        (``fixed={"count": K}``: the lowest K bending frequencies) against the analytic
+        frequencies (cantilever, simply-supported, plate-square).
     force : bool
-        Run more than :data:`ancf.study.sweep.MAX_RUNS` runs, or more workers than cores.
+        Run more than :data:`ancf.study.sweep.MAX_RUNS` runs, or more ``workers`` than cores
+        (as ``--force``; default False).
 
     Returns
     -------
@@ -424,18 +429,20 @@ def recommend(scene: str, tol: float, *, fixed: dict | None = None, reference: s
     time_limit : float
         Seconds one run may take (default 300).
     progress : bool
-        Print progress lines on stderr.
+        Print progress lines on stderr (default False).
     log : callable, optional
         A function of one line of text (default: silent).
     quantity : {"results", "frequency"}
-        ``"frequency"``: the cheapest model whose lowest K (``fixed={"count": K}``,
-        default 3) bending frequencies are within ``tol`` of the analytic ones.
+        ``"results"`` (default): the scene's results. ``"frequency"``: the cheapest model
+        whose lowest K (``fixed={"count": K}``, default 3) bending frequencies are within
+        ``tol`` of the analytic ones.
 
     Returns
     -------
     dict
-        ``params`` (that :func:`run` accepts as they are), ``error``, ``work``,
-        ``cpu_time_s``, ``found``, ``message``, ``evidence``.
+        The dict ``ancf recommend ... --json`` prints: ``params`` (that :func:`run`
+        accepts as they are), ``error``, ``work``, ``cpu_time_s``, ``found``, ``message``,
+        ``evidence``.
 
     Raises
     ------
