@@ -43,6 +43,21 @@ class Result:
         CPU seconds spent compiling or loading kernels.
     extra : dict
         The scene's own model (mesh, solver result, the belt drive).
+    q0 : numpy.ndarray or None
+        Reference global coordinates (positions and slopes of every node).
+    q : numpy.ndarray or None
+        Final global coordinates (the belt drives: the belt's, without the pulley).
+    reference_nodes : numpy.ndarray or None
+        The mesh: reference node positions (n_nodes, dim), m.
+    nodes : numpy.ndarray or None
+        Final node positions (n_nodes, dim), m.
+    times : numpy.ndarray or None
+        Output times of a dynamic run (s), None for a static one.
+    series : dict
+        Every time history of the results as an array (``times`` included), {} when the
+        run has none.
+    node_history : numpy.ndarray or None
+        Node positions at every output time (nt, n_nodes, dim) of a dynamic run, m.
 
     Examples
     --------
