@@ -257,7 +257,8 @@ def _crown_geometry(a, vr, p, R, om, prm, cr, o_z, n, t, nu, vs):
     rho = np.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
     for i in range(3):
         n[i] /= rho
-    t[0], t[1], t[2] = p[1] * n[2] - p[2] * n[1], p[2] * n[0] - p[0] * n[2], p[0] * n[1] - p[1] * n[0]
+    t[0], t[1] = p[1] * n[2] - p[2] * n[1], p[2] * n[0] - p[0] * n[2]
+    t[2] = p[0] * n[1] - p[1] * n[0]
     g = np.sqrt(1.0 + R1 * R1)
     for i in range(3):
         nu[i] = (n[i] - R1 * p[i]) / g

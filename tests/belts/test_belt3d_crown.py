@@ -46,6 +46,20 @@ def test_bad_crowns_are_one_error_line(path, item, words, capsys):
     assert words in line, line
 
 
+def test_crown_with_a_friction_state_is_one_line(tmp_path, capsys):
+    """A crowned pulley with the bristle law (a state per contact point, which the crowned
+    kernel does not carry): one ``error:`` line naming friction.law and the laws allowed."""
+    import re
+    text = re.sub(r"\[friction\][^\[]*", "[friction]\nlaw = 'bristle'\nmu = 0.6\n"
+                  "stiffness = 1e8\ndamping = 1e3\n\n", THREE3D.read_text())
+    path = tmp_path / "bristle.toml"
+    path.write_text(text)
+    line = _one_error_line(["run", "belt-drive", "--file", str(path), "--set",
+                            "pulleys.driven.crown_m=0.001"], capsys)
+    assert line.startswith("error: friction.law = 'bristle' is out of range with a crowned "
+                           "pulley") and "allowed: one of " + ", ".join(friction.LAWS) in line
+
+
 # ------------------------------------------------------------ the crowned kernel's derivatives
 C, HALF = 1e-3, 0.03  # crown (m) and half face (m) of the checks: R' up to 2 C / HALF = 0.07
 FD_CASES = {  # strip radius above R0 (m), creep coefficient nu_s (kg/(m^2 s)), pulley speed
@@ -219,3 +233,18 @@ def test_the_miss_is_the_belts_stretch(centring):
     assert abs(moved[0]) < 0.01 * y0, moved
     assert moved[1] > 0.04 * y0 and moved[1] > 5 * abs(moved[0]), moved
     assert all(np.isnan(r["simulated_s"]) for r in centring)
+
+
+def test_a_centred_belt_stays_on_the_crowns_top():
+    """The example with face_offset_m = 0 (the belt centred on the crown; 0.2 s): by
+    symmetry every pulley's lateral position and the crowned pulley's axial force stay
+    at round-off, below 1e-3 of the example's offset (m) and of its load torque over its
+    radius (N)."""
+    from ancf.checks import crown3d
+    out, res = crown3d.run(("pulleys.driven.face_offset_m=0",), 0.2)
+    desc = crown3d.run(())[1].extra["description"]
+    y0, q = desc.pulleys[2].params["face_offset_m"], desc.pulleys[2]
+    lateral = np.array([p["lateral_position_m"] for p in out["results"]["pulleys"]], float)
+    axial = np.array(out["results"]["pulleys"][2]["axial_force_N"])
+    assert np.nanmax(np.abs(lateral)) < 1e-3 * y0
+    assert np.max(np.abs(axial)) < 1e-3 * q.params["load_torque"] / q.radius
