@@ -133,3 +133,122 @@ def checks(table: list[dict]) -> list[Check]:
                          "largest |walk / z(x) - 1| where x >= L / 4 (x / L to "
                          f"{r['travel_end_spans']:.1f})"))
     return got
+
+
+# ------------------------------------------------------------------- crowned pulleys centre
+#: the crowned drive: FILE coarsened as :func:`run`'s, both 50 mm pulleys crowned 1 mm over
+#: their 44 mm faces (1.1 b), every face 2 mm along its axis off the laid belt, the
+#: creep-rate law's nu_s ten times FILE's (at FILE's the belt creeps down the slope instead)
+CROWN_SETS = ("pulleys.driver.t0=0", "pulleys.driver.t1=0.02", "pulleys.driven.t0=0",
+              "pulleys.driven.t1=0.02", f"pulleys.driver.omega_final={OMEGA}",
+              "pulleys.driven.load_torque=0.05", "belt.n_elements=20",
+              "contact.gauss_points=25", "run.start=laid", "pulleys.driver.crown_m=0.001",
+              "pulleys.driven.crown_m=0.001", *(f"pulleys.{k}.face_offset_m=0.002" for k in
+                                                ("driver", "idler", "driven")))
+CROWN_NU, CROWN_T_END = 2e6, 7.0  # kg/(m^2 s); s (the rule's return: 2.4 s)
+CROWN_TOL = 0.10  # the acceptance: return time within 10 % of the rule's
+CROWN = "Crowned pulleys: return to 10 % of the offset within 10 % of the rule's time"
+
+
+def span_reach(L: float, k: float) -> tuple[float, float]:
+    """(G, H) m of a tensioned span of length ``L`` (m) with k = sqrt(T / EI) (1/m), pinned
+    (moment free) at its far end: its entry slope per unit edgewise curvature imposed at
+    its downstream end, G = coth(k L) / k - 1 / (k^2 L), or at its upstream end,
+    H = 1 / (k^2 L) - 1 / (k sinh(k L)) (:func:`crown_rule`)."""
+    return (1.0 / (k * np.tanh(k * L)) - 1.0 / (k * k * L),
+            1.0 / (k * k * L) - 1.0 / (k * np.sinh(k * L)))
+
+
+def crown_rule(desc, v: float) -> dict:
+    """The crowned pulleys' centring rule of a plate-belt description ``desc`` at belt
+    speed ``v`` (m/s): the belt's offset e from mid-face (every face at the same offset)
+    decays as exp(-t / tau).  Derivation.  Normal entry (tracking3d's Eq. 2): the entry
+    point walks along the axis at -v y'(L), y'(L) the entering span's slope there.  On a
+    crowned pulley at offset e the rim under the belt is a cone of slope R' = -8 c e / W^2
+    whose parallels have geodesic curvature R' / R: the belt, stuck to the rim, is bent
+    edgewise to kappa = R' / R, concave toward the smaller radius.  A span with tension T
+    and edgewise stiffness EI (a tensioned beam, y'''' = k^2 y'', k = sqrt(T / EI)) carrying
+    that curvature at its downstream end meets the pulley turned by G kappa toward the
+    larger radius (G, H: :func:`span_reach`), and the span leaving it reaches the next
+    pulley turned by H kappa: both walk the belt toward the crown.  The spans' chords
+    (dz_i/dt = -v (z_i - z_(i-1)) / L_i) move no belt on the whole; summed over the loop
+    with weights L_i (the belt's length P, the wraps carrying their positions):
+
+        P de/dt = v sum_i (L_in G(L_in) + L_out H(L_out)) R'_i / R_i,
+        tau     = P / (8 v sum_i c_i (L_in G(L_in) + L_out H(L_out)) / (W_i^2 R_i))   (C5)
+
+    first order in e, no slip (the crown's own pull down its slope left out).  T and EI
+    of the St-Venant-Kirchhoff membrane at the belt's stretch lambda on its path:
+    T = E h b lambda (lambda^2 - 1) / 2, EI = E (3 lambda^2 - 1) / 2 h b^3 / 12 (its
+    tangent).  Returns tau, t10 = tau ln 10 (s: the return to 10 %), T, k, P."""
+    from ancf.belts.flange3d import face_width
+    b = desc.belt
+    P = desc.path.length
+    lam = P / b["length"]
+    T = b["E"] * b["h"] * b["b"] * lam * (lam ** 2 - 1) / 2
+    k = np.sqrt(T / (b["E"] * (3 * lam ** 2 - 1) / 2 * b["h"] * b["b"] ** 3 / 12))
+    spans = [s.length for s in desc.path.spans]
+    rate = 0.0
+    for i, q in enumerate(desc.pulleys):
+        c, W = q.params.get("crown_m", 0.0), face_width(q.params, b["b"])
+        L_in, L_out = spans[i - 1], spans[i]
+        reach = L_in * span_reach(L_in, k)[0] + L_out * span_reach(L_out, k)[1]
+        rate += 8 * v * c * reach / (W * W * q.radius * P)
+    tau = 1.0 / rate if rate > 0 else float("inf")
+    return {"tau_s": tau, "t10_s": tau * np.log(10.0), "T_N": T, "k_per_m": k, "P_m": P}
+
+
+def return_time(t, e, y0: float) -> dict:
+    """The simulated return of the offset e(t) (m; 4-sample running means) from y0 (m):
+    ``t10_s`` the first time |e| <= 0.1 |y0| (NaN if not reached), ``tau_s`` the least-
+    squares time constant of log|e| over the run's second half."""
+    tm, em = mean4(t), mean4(e)
+    hit = np.nonzero(np.abs(em) <= CROWN_TOL * abs(y0))[0]
+    half = tm >= 0.5 * tm[-1]
+    tau = -1.0 / np.polyfit(tm[half], np.log(np.abs(em[half])), 1)[0]
+    return {"t10_s": float(tm[hit[0]]) if hit.size else float("nan"), "tau_s": float(tau)}
+
+
+@lru_cache(maxsize=None)
+def crown_run(nu_s: float | None = None, t_end: float | None = None) -> tuple:
+    """(out JSON, the belt speed v m/s, the description) of FILE with :data:`CROWN_SETS`,
+    friction.nu_s = ``nu_s`` (kg/(m^2 s); None: :data:`CROWN_NU`) to ``t_end`` (s; None:
+    :data:`CROWN_T_END`), output every 10 ms."""
+    import json
+
+    from ancf.scenes import SCENES
+    sets = (*CROWN_SETS, f"friction.nu_s={CROWN_NU if nu_s is None else nu_s}")
+    out, res = SCENES["belt-drive"].execute({
+        "file": str(FILE), "run.t_end": str(CROWN_T_END if t_end is None else t_end),
+        "run.steady_window": "0.05", "run.output_dt": "0.01", "set": "; ".join(sets)})
+    if not out["converged"]:
+        raise RuntimeError(f"crowned run (nu_s {nu_s}): {out['message']}")
+    desc = res.extra["description"]
+    driver = desc.pulleys[0]  # the prescribed driver: v = omega_final R
+    return json.loads(json.dumps(out)), driver.params["omega_final"] * driver.radius, desc
+
+
+def crown_rows() -> list[dict]:
+    """Per crowned pulley of :func:`crown_run`: the rule's (:func:`crown_rule`) and the
+    run's (:func:`return_time`) time constants and returns to 10 % of the offset."""
+    out, v, desc = crown_run()
+    rule = crown_rule(desc, v)
+    t = np.array(out["results"]["times"])
+    rows = []
+    for k, q in enumerate(desc.pulleys):
+        if q.params.get("crown_m", 0.0) <= 0:
+            continue
+        e = np.array(out["results"]["pulleys"][k]["lateral_position_m"], float)
+        got = return_time(t, e, q.params["face_offset_m"])
+        rows.append({"pulley": q.name, "rule_tau_s": rule["tau_s"], "rule_t10_s": rule["t10_s"],
+                     "run_tau_s": got["tau_s"], "run_t10_s": got["t10_s"],
+                     "t10_ratio": got["t10_s"] / rule["t10_s"]})
+    return rows
+
+
+def crown_check(rows: list[dict]) -> Check:
+    """:data:`CROWN` from :func:`crown_rows`: the largest |t10 ratio - 1| over the pulleys."""
+    worst = max(abs(r["t10_ratio"] - 1) for r in rows)
+    return Check(CROWN, worst, 0.0, worst, CROWN_TOL, "-",
+                 "largest |simulated / rule return time to 10 % of the offset - 1| "
+                 "(CROWN_SETS)")

@@ -1,0 +1,78 @@
+"""Crowned pulleys centre an off-centre plate belt (issue 36 item 4) against the tensioned-
+span rule of :func:`ancf.checks.belt_tracking3d.crown_rule` (Eq. C5): the keys' defaults,
+the rule's scaling, and the run of :data:`ancf.checks.belt_tracking3d.CROWN_SETS` (both
+50 mm pulleys crowned 1 mm, every face 2 mm off the laid belt, 7 s at v = 1 m/s; about
+100 CPU s).  Seen: the rule's return to 10 % of the offset 2.40 s (tau 1.04 s), the run's
+6.30 s and 6.43 s (tau 2.74 s and 2.71 s): the belt centres, exponentially as the rule
+says, about 2.7 times slower (a miss, kept as a strict xfail)."""
+import numpy as np
+import pytest
+
+from ancf.belts.drive_data import FLANGES
+from ancf.belts.drive_file import load
+from ancf.belts.tracking3d import crowns_of
+from ancf.checks import belt_tracking3d as bt
+from ancf.common.paths import REPO
+
+THREE3D = REPO / "examples" / "three_pulleys_3d.toml"
+
+
+def test_crown_keys_default_to_a_cylinder():
+    """A pulley that names neither key is a cylinder with its face on the laid belt: crown_m
+    and face_offset_m take their declared defaults (0 m) and no crown row is built."""
+    desc = load(THREE3D)
+    default = {k: FLANGES[k].default for k in ("crown_m", "face_offset_m")}
+    assert default == {"crown_m": 0.0, "face_offset_m": 0.0}
+    for q in desc.pulleys:
+        assert {k: q.params[k] for k in default} == default
+    assert crowns_of(desc) is None
+
+
+def test_crown_rule_scales_as_eq_c5():
+    """tau = P W^2 / (8 v sum c (L G + L H) / R): doubling the crowns halves tau, doubling
+    the face widths (W 88 mm) quadruples it, doubling v halves it (to 1e-12); no crown:
+    no return (inf).  span_reach's G -> 1/k - 1/(k^2 L) and H -> 1/(k^2 L) for k L >> 1."""
+    desc = load(THREE3D, list(bt.CROWN_SETS))
+    tau = bt.crown_rule(desc, 1.0)["tau_s"]
+    twice = load(THREE3D, [*bt.CROWN_SETS, "pulleys.driver.crown_m=0.002",
+                           "pulleys.driven.crown_m=0.002"])
+    wide = load(THREE3D, [*bt.CROWN_SETS, "pulleys.driver.face_width_m=0.088",
+                          "pulleys.driven.face_width_m=0.088"])
+    assert bt.crown_rule(twice, 1.0)["tau_s"] == pytest.approx(tau / 2, rel=1e-12)
+    assert bt.crown_rule(wide, 1.0)["tau_s"] == pytest.approx(4 * tau, rel=1e-12)
+    assert bt.crown_rule(desc, 2.0)["tau_s"] == pytest.approx(tau / 2, rel=1e-12)
+    assert bt.crown_rule(load(THREE3D), 1.0)["tau_s"] == np.inf
+    k, L = 50.0, 2.0
+    G, H = bt.span_reach(L, k)
+    assert G == pytest.approx(1 / k - 1 / (k * k * L), rel=1e-12)
+    assert H == pytest.approx(1 / (k * k * L), rel=1e-12)
+
+
+@pytest.mark.slow
+def test_crowned_pulleys_centre_the_belt():
+    """The run: both crowned pulleys' lateral_position_m come back within 10 % of the 2 mm
+    offset, the whole belt moving as one (their time constants within 5 %), each 4-sample
+    mean at most 1 % of y0 above the one 0.5 s before (a monotone return past 0.5 s); the
+    rule is the faster (its t10 below the run's)."""
+    rows = bt.crown_rows()
+    assert [r["pulley"] for r in rows] == ["driver", "driven"]
+    assert all(np.isfinite(r["run_t10_s"]) for r in rows), rows
+    assert rows[0]["run_tau_s"] == pytest.approx(rows[1]["run_tau_s"], rel=0.05)
+    out, _, desc = bt.crown_run()
+    t = bt.mean4(np.array(out["results"]["times"]))
+    y0 = desc.pulleys[2].params["face_offset_m"]
+    for k in (0, 2):
+        e = np.abs(bt.mean4(np.array(out["results"]["pulleys"][k]["lateral_position_m"])))
+        e = e[t >= 0.5]
+        assert np.all(e[50:] <= e[:-50] + 0.01 * y0)
+    assert all(r["t10_ratio"] > 1 for r in rows), rows
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="the run returns about 2.7 times slower than the "
+                   "tensioned-span rule (Eq. C5): 6.3 s against 2.4 s")
+def test_return_time_within_10_percent_of_the_rule():
+    """The acceptance: the simulated return to 10 % of the offset within 10 % of the
+    rule's time (:data:`ancf.checks.belt_tracking3d.CROWN`)."""
+    check = bt.crown_check(bt.crown_rows())
+    assert check.passed, (check.value, check.tolerance)
