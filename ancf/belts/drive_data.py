@@ -365,7 +365,8 @@ FLANGES = _keys(
           "stiffness tapers to 0 over its outer half)", lo=0, lo_open=True, hi=0.1),
     Param("crown_m", 0.0, float, "m", "the crown: the rim's radius rise at mid-face, "
           "R(a) = R + crown_m (1 - (2 a / W)^2) at the axial offset a from mid-face, W the "
-          "face width (face_width_m; ancf.belts.contact3d_state); below the radius",
+          "face width (face_width_m; ancf.belts.contact3d_state); the parabola continues past "
+          "the face's ends, so the contact force stays smooth; below the radius",
           lo=0, hi=1.0),
     Param("face_offset_m", 0.0, float, "m", "the face's mid-plane (its crown's and flanges') "
           "displaced along the axis from the belt's laid mid-line (a belt that starts "

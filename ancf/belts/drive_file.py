@@ -358,8 +358,8 @@ def _flanges(pulleys: tuple, belt: dict, element: str) -> None:
                 if p.params[key.name] != key.default:
                     raise InputError(f"{prefix}{key.name} = {_toml(p.params[key.name])} is out "
                                      f"of range for belt.element = {element!r}; allowed: "
-                                     f"{_toml(key.default)} (flanges need belt.element = "
-                                     "'plate36')")
+                                     f"{_toml(key.default)} (a pulley's face keys: flanges, "
+                                     "crown and face offset, need belt.element = 'plate36')")
             continue
         if p.params["flanges"] and dd.ROLES[p.law].arm:
             raise InputError(f"{prefix}flanges = true is out of range for law = {p.law!r}; "
