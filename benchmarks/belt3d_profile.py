@@ -24,7 +24,7 @@ import numpy as np
 
 from ancf.belts.contact3d import contact_forces3d
 from ancf.elements import plate36
-from ancf.belts.forces import gather
+from ancf.belts.forces import gather, moved_centres
 from benchmarks.belt_profile import _per_call, breakdown, linear_algebra_costs
 
 T_ENDS = (0.3, 1.2)
@@ -40,11 +40,7 @@ def kernel_costs3d(drive, x, v, t: float) -> dict:
     eld = drive.element.kernel_data()
     g, K = np.zeros((nel, 36)), np.zeros((nel, 36, 36))
     omegas = np.array([float(drive.omega_driver(t)), float(v[-1])])
-    laws = drive.laws(t)[:, 0]
-    centres = drive.centres.copy()
-    centres[0] += laws[2] * drive.kernel().shift
-    odot = np.zeros_like(centres)
-    odot[0] = laws[3] * drive.kernel().shift
+    centres, odot = moved_centres(drive.kernel(), drive.laws(t)[:, 0])
     out = (np.zeros((nel, 36)), np.zeros((nel, 36, 36)), np.zeros((nel, 36, 36)),
            np.zeros((nel, npul, 36)), np.zeros(npul), np.zeros((npul, nel, 36)),
            np.zeros((npul, nel, 36)), np.zeros(npul))
