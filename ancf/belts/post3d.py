@@ -24,7 +24,8 @@ from ancf.belts.post2d import _span_coords, spans
 from ancf.belts.strains import DEFAULT_POINTS, measures
 from ancf.belts import friction
 from ancf.belts.contact3d import contact_forces3d, contact_state3d
-from ancf.belts.contact3d_state import contact_forces3d_state, contact_state3d_stepped
+from ancf.belts.contact3d_state import (contact_forces3d_crown, contact_forces3d_state,
+                                        contact_state3d_crown, contact_state3d_stepped)
 from ancf.core.quadrature import gauss01
 from ancf.elements.basis import plate36_S, plate36_x, plate36_y
 
@@ -109,6 +110,13 @@ def _contact_args(drive, x, v, t: float) -> tuple:
     return E, V, o, drive.omegas(t, v), odot
 
 
+def _crowns(drive):
+    """The crowned rims (np, 3) of a drive with a crowned pulley (:mod:`ancf.belts.
+    contact3d_state`), else None: the post-processing then takes the cylinders'."""
+    crowns = drive.flanges.crowns
+    return crowns if crowns.shape[0] else None
+
+
 def _state(drive, state):
     """(z0 (nel, nq, np, 2) m at the march's contact points, h s) of a friction law with a
     state: ``state`` (the march's at a sample: the state its step started from, and that
@@ -129,8 +137,11 @@ def pulley_moments(drive, x, v, t: float, state=None) -> np.ndarray:
     out = (False, np.zeros((nel, 36)), np.zeros((0, 36, 36)), np.zeros((0, 36, 36)),
            np.zeros((0, npul, 36)), T, np.zeros((npul, 0, 36)), np.zeros((npul, 0, 36)),
            np.zeros(npul))
-    stepped = _state(drive, state)
-    if stepped is None:
+    stepped, crowns = _state(drive, state), _crowns(drive)
+    if crowns is not None:  # no friction state on crowned rims (ancf.belts.tracking3d)
+        contact_forces3d_crown(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, om, odot,
+                               drive.prm, crowns, *out)
+    elif stepped is None:
         contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, om, odot,
                          drive.prm, *out)
     else:
@@ -145,7 +156,10 @@ def contact_sample(drive, x, v, t: float, state=None) -> tuple:
     """:func:`ancf.belts.contact3d.contact_state3d` at state (x, v) at the march's contact
     points: r, d, F_n, f_t, v_s, branch (a friction law with a state on ``state``)."""
     E, V, o, om, odot = _contact_args(drive, x, v, t)
-    stepped = _state(drive, state)
+    stepped, crowns = _state(drive, state), _crowns(drive)
+    if crowns is not None:
+        return contact_state3d_crown(E, V, drive.S0, o, drive.axes, drive.radii, om, odot,
+                                     drive.prm, crowns)[:6]
     if stepped is None:
         return contact_state3d(E, V, drive.S0, o, drive.axes, drive.radii, om, odot, drive.prm)
     return contact_state3d_stepped(E, V, drive.S0, o, drive.axes, drive.radii, om, odot,
@@ -188,8 +202,11 @@ def width_contact(drive, x, v, t: float, npts: int = DEFAULT_POINTS, state=None)
     Y = np.broadcast_to(np.tile(yg * s.width, npts), X.shape)
     S = np.ascontiguousarray(plate36_S(X, Y, np.broadcast_to(L[:, None], X.shape),
                                        np.full_like(X, s.width)))
-    stepped = _state(drive, state)
-    if stepped is None:
+    stepped, crowns = _state(drive, state), _crowns(drive)
+    if crowns is not None:
+        r, _, Fn, ft = contact_state3d_crown(E, V, S, o, drive.axes, drive.radii, om, odot,
+                                             drive.prm, crowns)[:4]
+    elif stepped is None:
         r, _, Fn, ft = contact_state3d(E, V, S, o, drive.axes, drive.radii, om, odot,
                                        drive.prm)[:4]
     else:

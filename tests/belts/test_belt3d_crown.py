@@ -250,3 +250,31 @@ def test_a_centred_belt_stays_on_the_crowns_top():
     axial = np.array(out["results"]["pulleys"][2]["axial_force_N"])
     assert np.nanmax(np.abs(lateral)) < 1e-3 * y0
     assert np.max(np.abs(axial)) < 1e-3 * q.params["load_torque"] / q.radius
+
+
+# ------------------------------------------------------------------ post-processing on the crown
+@pytest.mark.slow
+def test_reported_moments_and_depths_are_the_crowned_rims():
+    """The results a crowned drive reports at t_end (the pulleys' moments, the largest
+    penetration, ancf.belts.post3d) are the crowned rims' (contact_forces3d_crown,
+    contact_state3d_crown at the same state), not the cylinders': on 1 mm crowns the
+    cylinders' penetration of the crowned pulleys is below the crowned one by over a third
+    of the crown, and their moments differ from the crowned ones by over 1 %."""
+    from ancf.belts import post3d
+    from ancf.belts.contact3d import contact_state3d
+    from ancf.belts.contact3d_state import contact_state3d_crown
+    c = 0.001
+    out, res = _coarse([f"pulleys.driver.crown_m={c}", f"pulleys.driven.crown_m={c}"])
+    drive, run = res.extra["drive"], res.extra["result"]
+    x, v, t = run.q[-1], run.v[-1], float(run.t[-1])
+    E, V, o, om, odot = post3d._contact_args(drive, x, v, t)
+    args = (E, V, drive.S0, o, drive.axes, drive.radii, om, odot, drive.prm)
+    crowned = contact_state3d_crown(*args, drive.flanges.crowns)[1].max(axis=(0, 1))
+    cylinder = contact_state3d(*args)[1].max(axis=(0, 1))
+    assert out["penetration_max_m"] == pytest.approx(crowned.max(), rel=1e-12)
+    assert np.all(cylinder[[0, 2]] < crowned[[0, 2]] - c / 3), (cylinder, crowned)
+    T = np.array([p["torque_Nm"][-1] for p in out["pulleys"]])
+    assert np.allclose(T, post3d.pulley_moments(drive, x, v, t), rtol=1e-12, atol=0)
+    drive.flanges = drive.flanges._replace(crowns=np.zeros((0, 3)))
+    T_cyl = post3d.pulley_moments(drive, x, v, t)
+    assert np.max(np.abs(T_cyl / T - 1)[[0, 2]]) > 0.01, (T, T_cyl)
