@@ -419,6 +419,38 @@ def _add_force(S0, e, q, ww, Fn, n, ft, sk, Qt):
         Qt[2, k] += sk[k] * f2
 
 
+@leaf
+def _add_point(S0, e, q, ww, Fn, nrm, ft, rho, t, sk, Qt):
+    """Add point q's force w S_q^T (F_n nrm + f_t) to the element's Qt (:func:`_add_force`)
+    and return its moment about the pulley axis, -w |N| t . f_t, N m (module docstring)."""
+    _add_force(S0, e, q, ww, Fn, nrm, ft, sk, Qt)
+    return -(ww * rho * (t[0] * ft[0] + t[1] * ft[1] + t[2] * ft[2]))
+
+
+@leaf
+def _batch_point(S0, e, q, ww, D, Qwe, dTqe, dTve, dTw, p, PB, DB, nb, A):
+    """Point q's derivatives D (4, 7) into the pair's batch (:func:`_add_jacobians`) and
+    dTw[p]; a full batch goes into A (:func:`_add_batch`).  Returns the points then in
+    the batch."""
+    _add_jacobians(S0, e, q, ww, D, Qwe, dTqe, dTve, PB, DB, nb)
+    dTw[p] += ww * D[3, 6]
+    nb += 1
+    if nb == BATCH:
+        _add_batch(PB, DB, nb, A)
+        nb = 0
+    return nb
+
+
+@leaf
+def _end_pair(Q, e, Qt, touched, PB, DB, nb, A, Kq, Cv):
+    """A pair's end: its forces back into Q[e] (:func:`_swap_forces`) and, if a point added
+    derivatives, the batch's last points and the buffer A into Kq[e], Cv[e]."""
+    _swap_forces(Q, e, Qt, True)
+    if touched:
+        _add_batch(PB, DB, nb, A)
+        _flush(A, e, Qt.shape[1], Kq, Cv)
+
+
 @njit(cache=True)
 def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocities, prm,
                      want_J, Q, Kq, Cv, Qw, T, dTq, dTv, dTw, cull=True):
@@ -473,22 +505,14 @@ def contact_forces3d(E, V, S0, w, centres, axes, radii, omegas, centre_velocitie
                 if Fn <= 0.0:
                     continue
                 ww = w[e, q]
-                _add_force(S0, e, q, ww, Fn, n, ft, sk, Qt)
-                T[p] -= ww * rho * (t[0] * ft[0] + t[1] * ft[1] + t[2] * ft[2])
+                T[p] += _add_point(S0, e, q, ww, Fn, n, ft, rho, t, sk, Qt)
                 if want_J:
                     _point_jacobian(vr, pax, R, om, rho, Fn, vsn, branch, n, t, vs, ft,
                                     prm, gF, G, D)
-                    _add_jacobians(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], PB, DB, nb)
-                    dTw[p] += ww * D[3, 6]
-                    nb += 1
-                    if nb == BATCH:
-                        _add_batch(PB, DB, nb, A)
-                        nb = 0
+                    nb = _batch_point(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], dTw, p,
+                                      PB, DB, nb, A)
                     touched = True
-            _swap_forces(Q, e, Qt, True)
-            if touched:
-                _add_batch(PB, DB, nb, A)
-                _flush(A, e, ns, Kq, Cv)
+            _end_pair(Q, e, Qt, touched, PB, DB, nb, A, Kq, Cv)
     return pairs
 
 

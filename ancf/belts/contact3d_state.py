@@ -59,11 +59,10 @@ import numpy as np
 from numba import njit
 
 from ancf.belts import friction
-from ancf.belts.contact3d import (BATCH, _add_batch, _add_force, _add_jacobians, _add_normal,
-                                  _control_points, _flush, _may_touch, _mid_surface,
-                                  _mid_velocity,
-                                  _normal_rates, _penetrates, _point_geometry, _positions,
-                                  _sides, _swap_forces, _unit_axis)
+from ancf.belts.contact3d import (BATCH, _add_normal, _add_point, _batch_point,
+                                  _control_points, _end_pair, _may_touch, _mid_surface,
+                                  _mid_velocity, _normal_rates, _penetrates, _point_geometry,
+                                  _positions, _sides, _swap_forces, _unit_axis)
 from ancf.belts.flange3d import add_flanges
 from ancf.belts.forces import Drive3D, drive_forces, moved_centres
 from ancf.common.dispatch import implements
@@ -169,22 +168,14 @@ def contact_forces3d_state(E, V, S0, w, centres, axes, radii, omegas, centre_vel
                 if Fn <= 0.0:
                     continue
                 ww = w[e, q]
-                _add_force(S0, e, q, ww, Fn, n, ft, sk, Qt)
-                T[p] -= ww * rho * (t[0] * ft[0] + t[1] * ft[1] + t[2] * ft[2])
+                T[p] += _add_point(S0, e, q, ww, Fn, n, ft, rho, t, sk, Qt)
                 if want_J:
                     _state_jacobian(vr, pax, R, rho, Fn, branch, n, t, ft, phi, prm, z0, h, v2,
                                     gF, G, Dz, D)
-                    _add_jacobians(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], PB, DB, nb)
-                    dTw[p] += ww * D[3, 6]
-                    nb += 1
-                    if nb == BATCH:
-                        _add_batch(PB, DB, nb, A)
-                        nb = 0
+                    nb = _batch_point(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], dTw, p,
+                                      PB, DB, nb, A)
                     touched = True
-            _swap_forces(Q, e, Qt, True)
-            if touched:
-                _add_batch(PB, DB, nb, A)
-                _flush(A, e, ns, Kq, Cv)
+            _end_pair(Q, e, Qt, touched, PB, DB, nb, A, Kq, Cv)
     return pairs
 
 
@@ -373,22 +364,14 @@ def contact_forces3d_crown(E, V, S0, w, centres, axes, radii, omegas, centre_vel
                 if Fn <= 0.0:
                     continue
                 ww = w[e, q]
-                _add_force(S0, e, q, ww, Fn, nu, ft, sk, Qt)
-                T[p] -= ww * rho * (t[0] * ft[0] + t[1] * ft[1] + t[2] * ft[2])
+                T[p] += _add_point(S0, e, q, ww, Fn, nu, ft, rho, t, sk, Qt)
                 if want_J:
                     _crown_jacobian(vr, pax, om, cr, rho, d, Fn, vsn, branch, Rs, R1, g, n, t,
                                     nu, vs, ft, prm, Dn, gF, G, D)
-                    _add_jacobians(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], PB, DB, nb)
-                    dTw[p] += ww * D[3, 6]
-                    nb += 1
-                    if nb == BATCH:
-                        _add_batch(PB, DB, nb, A)
-                        nb = 0
+                    nb = _batch_point(S0, e, q, ww, D, Qw[e, p], dTq[p, e], dTv[p, e], dTw, p,
+                                      PB, DB, nb, A)
                     touched = True
-            _swap_forces(Q, e, Qt, True)
-            if touched:
-                _add_batch(PB, DB, nb, A)
-                _flush(A, e, ns, Kq, Cv)
+            _end_pair(Q, e, Qt, touched, PB, DB, nb, A, Kq, Cv)
     return pairs
 
 
