@@ -222,3 +222,37 @@ def history(plate: Plate = Plate(), dt: float = 1e-3, steps: int = 4000, tol: fl
         raise RuntimeError(f"the march stopped at step {k} of {steps} (status {status})")
     tip = int(np.flatnonzero(sysm.free == plate.tip())[0])
     return ts[1:], out_x[:, tip], int(count[3])
+
+
+@njit(cache=True)
+def _static(system, x, loads, tol, max_iter):
+    """Newton on Q(q) = lam F (Eq. (1) at rest) for lam in ``loads`` in turn, from x (free
+    coordinates, m, updated); converged when |dz|_inf <= tol (1 + |z|_inf).  Returns the
+    iterations, or -1 if a load step does not converge."""
+    n = x.size
+    zero, r, count = np.zeros(n), np.zeros(n), np.zeros(5, dtype=np.int64)
+    iters = 0
+    for lam in loads:
+        done = False
+        for _ in range(max_iter):
+            _residual(system, x, zero, zero, 0, 1.0, 0.0, True, count, r)
+            d = np.linalg.solve(system.J, -(r + (1.0 - lam) * system.F))
+            x += d
+            iters += 1
+            if np.max(np.abs(d)) <= tol * (1.0 + np.max(np.abs(x))):
+                done = True
+                break
+        if not done:
+            return -1
+    return iters
+
+
+def static_tip(plate: Plate = Plate(), increments: int = 20, tol: float = 1e-12) -> float:
+    """The tip's z-position (m) at static equilibrium under the full load (the history's
+    steady state), by Newton over ``increments`` equal load steps.  RuntimeError if a step
+    does not converge."""
+    sysm = system(plate)
+    x = plate.reference()[sysm.free]
+    if _static(sysm, x, np.arange(1, increments + 1) / increments, tol, 50) < 0:
+        raise RuntimeError("the static Newton did not converge")
+    return float(x[np.flatnonzero(sysm.free == plate.tip())[0]])

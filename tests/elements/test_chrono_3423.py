@@ -20,6 +20,7 @@ import pytest
 
 from analytic import _codegen
 from analytic import ancf3423 as generator
+from ancf.checks.chrono_shell3423 import HISTORY
 from ancf.elements import ancf3423
 from ancf.models import plate3423
 from tests.elements.chrono_data import load
@@ -106,7 +107,7 @@ def test_3423_refuses_an_unknown_ans_order():
 
 
 def _first_steps(ans):
-    ref = load("UT_ANCFShellIso", (4000, 2))[:CHRONO_STEPS, 1]
+    ref = load(HISTORY, (4000, 2))[:CHRONO_STEPS, 1]
     _, z, _ = plate3423.history(plate3423.Plate(ans=ans), steps=CHRONO_STEPS)
     return np.abs(z - ref).max()
 
