@@ -45,7 +45,8 @@ Integration: 2 x 2 x 2 Gauss points (Chrono's), dV = (a/2)(b/2)(h/2) dxi deta dz
 
 ``ans="chrono"`` reproduces Chrono's interpolation of Eq. (3), which weights the samples at
 nodes C and D with N_D and N_C (its knots run A, B, D, C against the shape functions'
-A, B, C, D); ``ans="paper"`` is Eq. (3) as written.  They differ only for a non-uniform
+A, B, C, D); ``ans="paper"`` (the default) is Eq. (3) as written, and the element as it was
+when Chrono's stored plate history was made (2015).  They differ only for a non-uniform
 thickness strain.
 """
 from __future__ import annotations
@@ -78,7 +79,7 @@ def _sym(u, v) -> np.ndarray:
     return np.outer(u, v) + np.outer(v, u)
 
 
-def point_forms(a: float, b: float, h: float, ans: str = "chrono") -> tuple:
+def point_forms(a: float, b: float, h: float, ans: str = "paper") -> tuple:
     """(H (8, 6, 8, 8), G (8, 6, 5), w (8,)) at the 2 x 2 x 2 Gauss points: the strain
     forms H^k of Eqs. (2)-(6), the EAS modes and the weights times dV (m^3); sides in m."""
     if ans not in ANS:
@@ -213,7 +214,7 @@ class Shell3423:
     dim = 3
     node_points = ((NODE_XI + 1) / 2, (NODE_ETA + 1) / 2)
 
-    def __init__(self, lengths, widths, h, E, nu, rho=0.0, e0=None, ans="chrono", alpha=0.0):
+    def __init__(self, lengths, widths, h, E, nu, rho=0.0, e0=None, ans="paper", alpha=0.0):
         a = np.atleast_1d(np.asarray(lengths, dtype=float))
         b = np.broadcast_to(np.asarray(widths, dtype=float), a.shape)
         if not np.all(a == a[0]) or not np.all(b == b[0]):
