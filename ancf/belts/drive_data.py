@@ -366,11 +366,13 @@ FLANGES = _keys(
     Param("crown_m", 0.0, float, "m", "the crown: the rim's radius rise at mid-face, "
           "R(a) = R + crown_m (1 - (2 a / W)^2) at the axial offset a from mid-face, W the "
           "face width (face_width_m; ancf.belts.contact3d_state); the parabola continues past "
-          "the face's ends, so the contact force stays smooth; below the radius",
-          lo=0, hi=1.0),
+          "the face's ends, so the contact force stays smooth; below the radius, and its "
+          "slope at the face's ends 4 crown_m / W at most 0.1 (ancf.belts.tracking3d."
+          "MAX_CROWN_SLOPE)", lo=0, hi=1.0),
     Param("face_offset_m", 0.0, float, "m", "the face's mid-plane (its crown's and flanges') "
           "displaced along the axis from the belt's laid mid-line (a belt that starts "
-          "off-centre by -face_offset_m)", lo=-0.5, hi=0.5),
+          "off-centre by -face_offset_m); at most W / 2 (the belt's mid-line on the face), "
+          "with flanges (W - b) / 2 (the belt between them)", lo=-0.5, hi=0.5),
 )
 #: every key a pulley law or its time law may take (beyond PULLEY's)
 LAW_PARAMS = {**{k.name: k for role in ROLES.values() for k in role.keys}, **TIME_KEYS}

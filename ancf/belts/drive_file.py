@@ -28,6 +28,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from ancf.belts import drive_data as dd
+from ancf.belts import flange3d
 from ancf.belts.friction import ALL_PARAMS as FRICTION_LAWS
 from ancf.belts.friction import PARAMS as FRICTION_PARAMS
 from ancf.belts.path import Pulley, PulleyPath
@@ -369,6 +370,19 @@ def _flanges(pulleys: tuple, belt: dict, element: str) -> None:
             raise InputError(f"{prefix}face_width_m = {face!r} is out of range: the flanges "
                              f"would be inside the belt (belt.b = {belt['b']:g} m); allowed: "
                              f"0 (1.1 b) or a number in [{belt['b']:g}, 1] m")
+        _face_offset(prefix, p.params, belt["b"])
+
+
+def _face_offset(prefix: str, params: dict, b: float) -> None:
+    """The face's offset keeps the belt's mid-line on the face (|offset| <= W / 2, W the
+    face width) and, between flanges, the belt between them (|offset| <= (W - b) / 2)."""
+    off, face = params["face_offset_m"], flange3d.face_width(params, b)
+    room, why = ((0.5 * (face - b), "a flange would be inside the belt") if params["flanges"]
+                 else (0.5 * face, "the belt's mid-line would be off the face"))
+    if abs(off) > room + 1e-15:
+        raise InputError(f"{prefix}face_offset_m = {off!r} is out of range: {why} (face "
+                         f"width {face:g} m, belt.b = {b:g} m); allowed: a number in "
+                         f"[{-room:.4g}, {room:.4g}] m")
 
 
 def _toml(value) -> str:

@@ -60,6 +60,13 @@ from ancf.belts.contact3d_state import contact_state3d_crown
 from ancf.belts.drive_data import ROLES
 from ancf.common.params import InputError
 
+#: the steepest crown: its rim's slope at the face's ends, |R'(W/2)| = 4 c / W (rad).  Flat-
+#: belt pulleys are crowned to 0.3-1 mm on faces of 40-250 mm (ISO 22), slopes below 0.03;
+#: a steeper crown pokes through a belt laid flat across it (a membrane across its width)
+#: and sets the pulleys rocking before the drive starts (0.5 rad/s on three_pulleys_3d's
+#: idler at slope 0.045, 26 rad/s at 0.45)
+MAX_CROWN_SLOPE = 0.1
+
 
 def pulley_axes(desc) -> np.ndarray:
     """The unit axes p (np, 3) of Eq. 1 from a description's pulleys' ``axis_tilt_deg`` and
@@ -99,8 +106,9 @@ def align(drive, desc):
 def crowns_of(desc):
     """(np, 3) per pulley crown c (m), mid-face z_m (m), W / 2 (m) (:mod:`ancf.belts.
     contact3d_state`, crowned rims) of a plate-belt description with a crowned pulley, else
-    None; a crown on a tensioner, with a friction law carrying a state, or not below the
-    pulley's radius: InputError (one line naming the key and its allowed range)."""
+    None; a crown on a tensioner, with a friction law carrying a state, not below the
+    pulley's radius or steeper than :data:`MAX_CROWN_SLOPE`: InputError (one line naming
+    the key and its allowed range)."""
     if desc.belt["element"] != "plate36" or not any(
             q.params.get("crown_m", 0.0) > 0 for q in desc.pulleys):
         return None
@@ -114,8 +122,14 @@ def crowns_of(desc):
         if c > 0 and ROLES[q.law].arm:
             raise InputError(f"pulleys.{i}.crown_m = {c!r} is out of range for law = "
                              f"{q.law!r}; allowed: 0 (a tensioner's pulley is a cylinder)")
+        face = flange3d.face_width(q.params, w)
+        if 4 * c / face > MAX_CROWN_SLOPE:
+            raise InputError(f"pulleys.{i}.crown_m = {c!r} is out of range: its slope at the "
+                             f"face's ends 4 c / W = {4 * c / face:.3g} is above "
+                             f"{MAX_CROWN_SLOPE:g} (W = {face:g} m the face width); allowed: "
+                             f"a number in [0, {MAX_CROWN_SLOPE * face / 4:.4g}] m")
         rows.append((c, 0.5 * w + q.params["face_offset_m"],
-                     0.5 * flange3d.face_width(q.params, w)))
+                     0.5 * face))
     if desc.friction["law"] not in friction.LAWS:
         raise InputError(f"friction.law = {desc.friction['law']!r} is out of range with a "
                          "crowned pulley (crown_m > 0); allowed: one of "

@@ -38,11 +38,23 @@ def _one_error_line(args, capsys) -> str:
      "below the pulley's radius 0.05 m; allowed: a number in [0, 0.05) m"),
     (SERPENTINE3D, "pulleys.tensioner.crown_m=0.001", "pulleys.1.crown_m = 0.001 is out of "
      "range for law = 'tensioner'; allowed: 0"),
+    (THREE3D, "pulleys.driven.crown_m=0.002", "pulleys.2.crown_m = 0.002 is out of range: its "
+     "slope at the face's ends 4 c / W = 0.182 is above 0.1 (W = 0.044 m the face width); "
+     "allowed: a number in [0, 0.0011] m"),
+    (THREE3D, "pulleys.driven.face_offset_m=0.5", "pulleys.2.face_offset_m = 0.5 is out of "
+     "range: the belt's mid-line would be off the face (face width 0.044 m, belt.b = 0.04 m); "
+     "allowed: a number in [-0.022, 0.022] m"),
+    (THREE3D, "pulleys.driven.flanges=true; pulleys.driven.face_offset_m=-0.003",
+     "pulleys.2.face_offset_m = -0.003 is out of range: a flange would be inside the belt "
+     "(face width 0.044 m, belt.b = 0.04 m); allowed: a number in [-0.002, 0.002] m"),
 ])
 def test_bad_crowns_are_one_error_line(path, item, words, capsys):
-    """A crown on the 2D belt, negative, not below the radius, or on a tensioner: one
-    ``error:`` line naming the key and its allowed range, exit 2."""
-    line = _one_error_line(["run", "belt-drive", "--file", str(path), "--set", item], capsys)
+    """A crown on the 2D belt, negative, not below the radius, steeper at the face's ends
+    than tracking3d.MAX_CROWN_SLOPE, or on a tensioner; a face offset that takes the belt's
+    mid-line off the face or puts a flange inside the belt: one ``error:`` line naming the
+    key and its allowed range, exit 2."""
+    sets = [a for s in item.split("; ") for a in ("--set", s)]
+    line = _one_error_line(["run", "belt-drive", "--file", str(path), *sets], capsys)
     assert words in line, line
 
 
