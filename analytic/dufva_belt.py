@@ -112,6 +112,11 @@ def generate() -> str:
         lines += emit(f"{name}_grad", doc + "; gradient into grad (7,)", m, POINT, pargs[:-1], 1)
         lines += emit(f"{name}_hess", doc + "; gradient into grad (7,), Hessian into hess (7, 7)",
                       m, POINT, pargs[:-1], 2, f"{name}_grad")
+    slopes, doc = POINT[:2], "axial strain at (a0, a1): its derivatives by the slopes alone"
+    lines += emit("axial_slope_grad", doc + "; gradient into grad (2,)", strain_measures()[0],
+                  slopes, ["a0", "a1"], 1)
+    lines += emit("axial_slope_hess", doc + "; gradient into grad (2,), Hessian into hess (2, 2)",
+                  strain_measures()[0], slopes, ["a0", "a1"], 2, "axial_slope_grad")
     return stamped("\n".join(lines).rstrip() + "\n", SOURCES)
 
 

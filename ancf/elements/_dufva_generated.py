@@ -383,4 +383,29 @@ def bending_strain_hess(a0, a1, c0, c1, s, sx, ey, grad, hess):
     hess[5, 6] = hess[6, 5] = 0
     hess[6, 6] = 0
     return value
-# generator stamp (sha256 of generator sources, SymPy version, text): a3e4d373b51e8e6345a31ac748337bc5d689fb1c03c1ccd9d14d27285cba9182
+
+
+@njit(cache=True)
+def axial_slope_grad(a0, a1, grad):
+    """axial strain at (a0, a1): its derivatives by the slopes alone; gradient into grad (2,)"""
+    x0 = math.sqrt(a0**2 + a1**2)
+    x1 = 1/x0
+    grad[0] = a0*x1
+    grad[1] = a1*x1
+    return x0 - 1
+
+
+@njit(cache=True)
+def axial_slope_hess(a0, a1, grad, hess):
+    """axial strain at (a0, a1): its derivatives by the slopes alone; gradient into grad (2,), Hessian into hess (2, 2)"""
+    value = axial_slope_grad(a0, a1, grad)
+    x0 = a0**2
+    x1 = a1**2
+    x2 = x0 + x1
+    x3 = 1/math.sqrt(x2)
+    x4 = 1/x2
+    hess[0, 0] = -x3*(x0*x4 - 1)
+    hess[0, 1] = hess[1, 0] = -a0*a1/x2**(3/2)
+    hess[1, 1] = -x3*(x1*x4 - 1)
+    return value
+# generator stamp (sha256 of generator sources, SymPy version, text): bb7ca3839927e8df22aa613bad670856c279d586dc2beefde051431d650e4f55

@@ -108,13 +108,15 @@ def energy(E, data):
 
 
 @njit(cache=True)
-def _add_engineering(k6, a0, a1, c0, c1, s, sx, want_K, gw, H, ge, He):
+def _add_engineering(k6, a0, a1, want_K, gw, H, ge, He):
     """Add the engineering axial density's gradient k6 eps deps to gw (7,) and, if
-    want_K, its Hessian k6 (deps deps^T + eps d2eps) to H (7, 7); ge, He: work arrays."""
+    want_K, its Hessian k6 (deps deps^T + eps d2eps) to H (7, 7); ge (2,), He (2, 2): work
+    arrays (eps depends on the slopes a alone: its derivatives by a, the same sums as
+    those of the seven point variables)."""
     if want_K:
-        gen.axial_strain_hess(a0, a1, c0, c1, s, sx, 0.0, ge, He)
+        gen.axial_slope_hess(a0, a1, ge, He)
     else:
-        gen.axial_strain_grad(a0, a1, c0, c1, s, sx, 0.0, ge)
+        gen.axial_slope_grad(a0, a1, ge)
     eps = math.sqrt(a0 * a0 + a1 * a1) - 1.0
     for i in range(2):
         gw[i] += k6 * eps * ge[i]
@@ -173,7 +175,7 @@ def gradient_tangent(E, data, want_K, g, K):
     hI, hJ, H = np.empty((4, 4)), np.empty((4, 4)), np.empty((7, 7))
     Jv, HJ = np.empty((7, nd)), np.empty((7, nd))
     Ke = np.empty((nd, nd))
-    ge, He = np.empty(7), np.zeros((7, 7))
+    ge, He = np.empty(2), np.empty((2, 2))
     for e in range(nel):
         sI = _nodal_shear_sine(E[e, 1], E[e, 2], want_K, gI, hI)
         sJ = _nodal_shear_sine(E[e, 4], E[e, 5], want_K, gJ, hJ)
@@ -191,7 +193,7 @@ def gradient_tangent(E, data, want_K, g, K):
             else:
                 gen.density_grad(a0, a1, c0, c1, s, sx, ey, k, gw)
             if k[6] != 0.0:
-                _add_engineering(k[6], a0, a1, c0, c1, s, sx, want_K, gw, H, ge, He)
+                _add_engineering(k[6], a0, a1, want_K, gw, H, ge, He)
             _add_point_gradient(g, e, q, ww, z, inv_l, BX, BXX, gI, gJ, E, gw)
             if want_K:
                 _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
@@ -205,7 +207,9 @@ def gradient_tangent(E, data, want_K, g, K):
                 for b in range(a + 1, nd):
                     Ke[b, a] = Ke[a, b]
             _add_nodal_curvature(Ke, bI, bJ, hI, hJ, wI, wJ)
-            K[e] += Ke
+            for a in range(nd):
+                for b in range(nd):
+                    K[e, a, b] += Ke[a, b]
 
 
 @njit(cache=True)
