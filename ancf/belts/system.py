@@ -167,6 +167,17 @@ def add_mass_times(rows, x, r):
 
 
 @njit(cache=True)
+def add_mass(rows, kl, S):
+    """S += M (band storage, half-bandwidth kl) by M's nonzeros (:func:`mass_rows`): the
+    sum of adding the whole band, bit for bit (an exact zero added to an entry assembled
+    from +0.0 leaves it as it is), on a fraction of its entries."""
+    ptr, col, val = rows
+    for i in range(ptr.size - 1):
+        for k in range(ptr[i], ptr[i + 1]):
+            S[i, col[k] - i + kl] += val[k]
+
+
+@njit(cache=True)
 def small_lu(A, piv) -> bool:
     """LU with partial pivoting of the small dense A in place; False if singular."""
     k = A.shape[0]
@@ -292,7 +303,7 @@ def _residual(system, x1, v1, acc1, k, bp, gp, want_J, count, r):
 @implements(system_factor, BeltSystem)
 def _factor(system, bp, pivoting):
     S = system.S
-    S += system.Mb
+    add_mass(system.mass_rows, system.kl, S)
     if banded.lu(S, system.kl, system.piv, pivoting) != 0:
         return False
     inertia, schur = system.drive.inertia, system.schur
