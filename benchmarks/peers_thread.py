@@ -1,7 +1,7 @@
 """The THREAD belt drive side by side with Exudyn on Exudyn's own example.
 
     python -m benchmarks.peers_thread [--t-end 2.45] [--file drive.toml] [--set k=v ...]
-                                      [--out reports/benchmarks]
+                                      [--out reports/benchmarks] [--stem NAME]
 
 Exudyn: :mod:`benchmarks.peers_thread_exudyn` (its ``beltDriveReevingSystem.py`` as
 shipped: 240 elements, 2 contact segments, step 1e-4 s, TrapezoidalIndex2, 2.45 s).
@@ -22,8 +22,12 @@ Exudyn's (a full run is minutes long); ours is the scene's ``cpu_time_s`` (build
 settling and march; numba compilation excluded, reported as ``compile_cpu_s``),
 Exudyn's ``time.process_time`` around build, static equilibrium and dynamic solve.
 ``--t-end`` shortens both runs (the means are then over the last half of the run).
+``--set`` overrides ours further, a key of :data:`OURS` included (the file's own
+quadrature: ``--set belt.elastic_points=5 --set contact.gauss_points=5 --stem
+peers_thread_file``).
 
-Writes ``peers_thread.json`` (``--t-end`` below 2.45 s: ``peers_thread_short.json``)
+Writes ``peers_thread.json`` (``--t-end`` below 2.45 s: ``peers_thread_short.json``;
+``--stem``: the name given)
 with keys ``schema``, ``started``, ``command``, ``machine``, ``settings``, ``ours``,
 ``exudyn`` (per side: ``cpu_s``, driven ``omega_driven`` at t_end and
 ``omega_driven_mean``, ``driver_torque_mean_Nm``, ``tension_tight_N`` and
@@ -75,9 +79,18 @@ SETTINGS = {
 }
 
 
+def our_sets(t_end: float, extra: list) -> list:
+    """The overrides of our run: :data:`OURS`, the end time and window, then ``extra``,
+    whose keys replace those of the others (a key may be given once)."""
+    window = min(WINDOW, t_end / 2)
+    given = {e.split("=", 1)[0] for e in extra}
+    sets = [*OURS, f"run.t_end={t_end:g}", f"run.steady_window={window:g}"]
+    return [s for s in sets if s.split("=", 1)[0] not in given] + list(extra)
+
+
 def _ours(path: Path, t_end: float, extra: list, env: dict) -> dict:
     window = min(WINDOW, t_end / 2)
-    sets = [*OURS, f"run.t_end={t_end:g}", f"run.steady_window={window:g}", *extra]
+    sets = our_sets(t_end, extra)
     cmd = [sys.executable, "-m", "ancf.cli", "run", "belt-drive", "--file", str(path), "--json"]
     for s in sets:
         cmd += ["--set", s]
@@ -151,6 +164,8 @@ def main(argv=None) -> int:
     ap.add_argument("--file", type=Path, default=FILE, help="our drive file")
     ap.add_argument("--set", action="append", default=[], help="more overrides of our file")
     ap.add_argument("--out", type=Path, default=peers.DEFAULT_OUT, help="output folder")
+    ap.add_argument("--stem", help="the record's file name (default peers_thread, "
+                    "peers_thread_short below 2.45 s)")
     args = ap.parse_args(argv)
     if peers.exudyn_missing():
         print("peers_thread: exudyn is not installed (pip install -e .[peers]); skipped")
@@ -163,7 +178,7 @@ def main(argv=None) -> int:
     res["ours"] = _ours(args.file, args.t_end, args.set, env)
     res["exudyn"] = _exudyn(args.t_end, env)
     res["ratio"] = peers._ratio(res["ours"].get("cpu_s"), res["exudyn"].get("cpu_s"))
-    res["stem"] = "peers_thread" if args.t_end >= T_END else "peers_thread_short"
+    res["stem"] = args.stem or ("peers_thread" if args.t_end >= T_END else "peers_thread_short")
     peers.write(args.out, res["stem"], res, markdown(res))
     print(f"peers_thread: ratio {res['ratio']}; wrote {args.out / res['stem']}.json/.md")
     return 0

@@ -265,6 +265,20 @@ def test_the_races_quadrature_changes_the_drive_little():
     assert p1[0]["torque_Nm"][-1] == pytest.approx(p0[0]["torque_Nm"][-1], rel=1.2e-3)
 
 
+def test_the_races_overrides_replace_its_own_keys():
+    """benchmarks/peers_thread.py --set: a key the race sets itself is replaced, not given
+    twice (the drive file takes a key once), so the file's own quadrature can race."""
+    from benchmarks.peers_thread import OURS, QUADRATURE, our_sets
+
+    extra = ["belt.elastic_points=5", "contact.gauss_points=5"]
+    sets = our_sets(2.45, extra)
+    keys = [s.split("=", 1)[0] for s in sets]
+    assert len(keys) == len(set(keys))
+    assert sets[-2:] == extra and not set(QUADRATURE) & set(sets)
+    assert our_sets(0.3, [])[: len(OURS)] == list(OURS)
+    load(EXAMPLE, sets)  # one value per key: accepted
+
+
 def test_stored_friction_carries_its_tension_change():
     """Exudyn's stored friction (per laid length) integrated over each pulley's belt
     (``th.WRAPS``) is the change of its span forces within 0.5 % (0.35 % seen): the
