@@ -6,7 +6,8 @@ multiplied by the number of calls the run's counters report:
 
 * elastic forces: the belt element kernel, with the tangent on Jacobian evaluations, and
   the belt's strain-rate damping where it has any, with the part of the iteration matrix
-  the drive's ``run.damping_jacobian`` asks for (``rate``: dQ_d/dz' only, as the march);
+  the drive's ``run.damping_jacobian`` asks for (``rate``: dQ_d/dz' only, as the march;
+  an axial damping so in the elastic kernel's pass, as the march);
 * contact: the contact kernel (with the friction law's state where it has one), with its
   Jacobians on Jacobian evaluations;
 * linear algebra: per factorisation the band LU plus the solve for the border
@@ -27,7 +28,7 @@ import time
 import numpy as np
 
 from ancf.belts.contact2d import contact_forces_moving
-from ancf.elements.dufva2d import damping_parts, gradient_tangent
+from ancf.elements.dufva2d import damping_parts, gradient_tangent, gradient_tangent_damped
 from ancf.solvers import banded
 from ancf.belts.forces import gather
 
@@ -66,7 +67,10 @@ def kernel_costs(drive, x, v, omegas) -> dict:
                                              dT, T)
 
     def elastic(J):
-        def fn():
+        def fn():  # as the march (ancf.belts.forces._forces2d)
+            if damping[0] != 0.0 and damping[1] == 0.0 and (rate or not J):
+                gradient_tangent_damped(E, V, eld, damping[0], J, J, g, K, Cv)
+                return
             gradient_tangent(E, eld, J, g, K)
             if damping.any():
                 damping_parts(E, V, eld, damping, J and not rate, J, g, K, Cv)

@@ -152,10 +152,18 @@ def _belt_damping(E, V, drive, want_J, g, K, Cv):
 def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
     """The centres moved by their laws (:func:`moved_centres`), the tensioners' pulleys at
     their arms' angles (:mod:`ancf.belts.arm2d`, their pivots moved alike); the belt's
-    strain-rate damping only if it has any."""
-    dufva2d.gradient_tangent(E, drive.element, want_J, g, K)
-    if drive.strain_damping[0] != 0.0 or drive.strain_damping[1] != 0.0:
-        _belt_damping(E, V, drive, want_J, g, K, c[2])
+    strain-rate damping only if it has any, an axial one without dQ_d/dz in the elastic
+    forces' pass (:func:`ancf.elements.dufva2d.gradient_tangent_damped`)."""
+    d = drive.strain_damping
+    if d[0] != 0.0 and d[1] == 0.0 and (not want_J or drive.damping_jacobian == 1):
+        Cv = c[2]
+        C = np.zeros_like(Cv)  # the axial damping without dQ_d/dz: with the elastic pass
+        dufva2d.gradient_tangent_damped(E, V, drive.element, d[0], want_J, want_J, g, K, C)
+        Cv -= C
+    else:
+        dufva2d.gradient_tangent(E, drive.element, want_J, g, K)
+        if d[0] != 0.0 or d[1] != 0.0:
+            _belt_damping(E, V, drive, want_J, g, K, c[2])
     arms, n = drive.arms, x.size - drive.inertia.size
     o, odot = moved_centres(drive, laws)
     u = np.zeros((arms.shape[0], 2))

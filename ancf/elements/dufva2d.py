@@ -49,7 +49,9 @@ with the axial strain ``eps = |a| - 1`` and the bending strain ``kappa = (a x c)
 s_x`` (SymPy: ``analytic/dufva_belt.py``), their rates ``eps' = deps/de e'`` and the
 same Gauss points as the elastic forces; the exact Jacobians are dQ_d/de = int dEA
 (deps/de (d2eps/de2 e')^T + eps' d2eps/de2) dx + (the same for kappa) and dQ_d/de' =
-int (dEA deps/de deps/de^T + dEI dkappa/de dkappa/de^T) dx.
+int (dEA deps/de deps/de^T + dEI dkappa/de dkappa/de^T) dx.  An axial damping alone (dEI =
+0) without dQ_d/de also comes with the elastic forces in one pass
+(:func:`gradient_tangent_damped`).
 """
 from __future__ import annotations
 
@@ -168,6 +170,22 @@ def _nodal_shear_sine(x, y, want_K, grad, hess):
 def gradient_tangent(E, data, want_K, g, K):
     """Add dU/de (nel, 12) to ``g`` (N or N m) and, if ``want_K``, d2U/de2 (nel, 12, 12)
     to ``K``.  E: (nel, 6, 2) C-contiguous; data: ``DufvaBelt2D.kernel_data()``."""
+    _elastic(E, E, data, 0.0, want_K, False, g, K, K)
+
+
+@njit(cache=True)
+def gradient_tangent_damped(E, V, data, dEA, want_K, want_C, g, K, C):
+    """:func:`gradient_tangent` and the axial strain-rate damping of dEA (N s; dEI = 0, no
+    dQ_d/de) of ``damping_parts(E, V, data, (dEA, 0), False, want_C, g, K, C)`` in one pass:
+    each element's elastic terms, then its damping's, with the slopes and their axial
+    strain's gradient formed once per point; both kernels' sums bit for bit (each g[e]
+    gets its terms in the same order)."""
+    _elastic(E, V, data, dEA, want_K, want_C, g, K, C)
+
+
+@njit(cache=True)
+def _elastic(E, V, data, dEA, want_K, want_C, g, K, C):
+    """:func:`gradient_tangent_damped` (dEA = 0: :func:`gradient_tangent`; V, C unread)."""
     BX, BXX, xi, wq, lengths, k = data
     nel, nq = wq.shape
     nd = 2 * E.shape[1]
@@ -176,6 +194,7 @@ def gradient_tangent(E, data, want_K, g, K):
     Jv, HJ = np.empty((7, nd)), np.empty((7, nd))
     Ke = np.empty((nd, nd))
     ge, He = np.empty(2), np.empty((2, 2))
+    ax, G = np.empty((nq, 2)), np.empty(nd)
     for e in range(nel):
         sI = _nodal_shear_sine(E[e, 1], E[e, 2], want_K, gI, hI)
         sJ = _nodal_shear_sine(E[e, 4], E[e, 5], want_K, gJ, hJ)
@@ -194,6 +213,9 @@ def gradient_tangent(E, data, want_K, g, K):
                 gen.density_grad(a0, a1, c0, c1, s, sx, ey, k, gw)
             if k[6] != 0.0:
                 _add_engineering(k[6], a0, a1, want_K, gw, H, ge, He)
+            elif dEA != 0.0:
+                gen.axial_slope_grad(a0, a1, ge)
+            ax[q, 0], ax[q, 1] = ge[0], ge[1]
             _add_point_gradient(g, e, q, ww, z, inv_l, BX, BXX, gI, gJ, E, gw)
             if want_K:
                 _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
@@ -210,6 +232,8 @@ def gradient_tangent(E, data, want_K, g, K):
             for a in range(nd):
                 for b in range(nd):
                     K[e, a, b] += Ke[a, b]
+        if dEA != 0.0:
+            _element_axial_damping(e, V, BX, wq, dEA, ax, want_C, g, C, G)
 
 
 @njit(cache=True)
@@ -401,24 +425,33 @@ def _axial_damping(E, V, data, dEA, want_C, g, C):
     point Jacobian and the nodal shear sines."""
     BX, BXX, xi, wq, lengths, k = data
     nel, nq = wq.shape
-    ns = E.shape[1]
-    gm, G = np.empty(7), np.empty(2 * ns)
+    ge, ax, G = np.empty(2), np.empty((nq, 2)), np.empty(2 * E.shape[1])
     for e in range(nel):
         for q in range(nq):
             a0, a1, c0, c1 = _centre_line(E, BX, BXX, e, q)
-            gen.axial_strain_grad(a0, a1, c0, c1, 0.0, 0.0, 0.0, gm)
-            rate = 0.0
-            for m in range(ns):
-                for d in range(2):
-                    G[2 * m + d] = 0.0 + BX[e, q, m] * gm[d]
-                    rate += G[2 * m + d] * V[e, m, d]
-            f = wq[e, q] * dEA
+            gen.axial_slope_grad(a0, a1, ge)
+            ax[q, 0], ax[q, 1] = ge[0], ge[1]
+        _element_axial_damping(e, V, BX, wq, dEA, ax, want_C, g, C, G)
+
+
+@njit(cache=True)
+def _element_axial_damping(e, V, BX, wq, dEA, ax, want_C, g, C, G):
+    """Element e's axial damping forces into g[e] and, if want_C, dQ_d/de' into C[e], from
+    the axial strain's gradient ax[q] (2,) by the slopes at its points (G: work)."""
+    ns = V.shape[1]
+    for q in range(wq.shape[1]):
+        rate = 0.0
+        for m in range(ns):
+            for d in range(2):
+                G[2 * m + d] = 0.0 + BX[e, q, m] * ax[q, d]
+                rate += G[2 * m + d] * V[e, m, d]
+        f = wq[e, q] * dEA
+        for a in range(2 * ns):
+            g[e, a] += f * rate * G[a]
+        if want_C:
             for a in range(2 * ns):
-                g[e, a] += f * rate * G[a]
-            if want_C:
-                for a in range(2 * ns):
-                    for b in range(2 * ns):
-                        C[e, a, b] += f * G[a] * G[b]
+                for b in range(2 * ns):
+                    C[e, a, b] += f * G[a] * G[b]
 
 
 @njit(cache=True)
