@@ -260,9 +260,12 @@ def test_a_swinging_tensioner_gets_friction_from_its_centres_velocity(workdir, l
 
 
 # ------------------------------------------------------------------ the plate belt
-#: the plate belt's drive (Table 4.1, Model 2) and its friction values per unit area
+#: the plate belt's drive (Table 4.1, Model 2) and its friction values per unit area;
+#: Coulomb's v_reg = 0.05 m/s (its slope mu p / v_reg about 3x the creep-rate law's nu_s
+#: at this drive's contact pressure) runs in 21 s where 0.01 m/s took 77 s (idle machine)
+#: for the same balances (worst 3.2 % against 2.9 %)
 BELT3D = EXAMPLES / "thesis_table_4_1.toml"
-VALUES3D = {"mu": 0.6, "nu_s": 2e5, "v_reg": 0.01}
+VALUES3D = {"mu": 0.6, "nu_s": 2e5, "v_reg": 0.05}
 LAWS3D = list(friction.PARAMS)
 #: the plate belt's tolerances where they differ from the 2D belt's: about twice the
 #: worst of the full 1.2 s run (the wrap's 3.8 %, the spans' 4.6 %, regularised Coulomb)
@@ -270,7 +273,7 @@ TOL_WRAP3D = 0.08
 TOL_SPANS3D = 0.10
 #: Table 4.1's ramps (driver to 500 rad/s, load to 2 N m) over 0.05-0.4 s instead of
 #: 0.05-1.0 s, then 0.2 s steady as in the file: half the simulated time; the balances
-#: hold as on the full run (worst law: wrap 2.2 %, normal 1.2 %, moment 1.3 %, spans
+#: hold as on the full run (worst law: wrap 2.4 %, normal 1.2 %, moment 1.3 %, spans
 #: 3.6 %; full run 3.8, 0.95, 1.6, 4.6 %)
 SHORT3D = "pulleys.driver.t1=0.4; pulleys.driven.t1=0.4; run.t_end=0.6"
 
@@ -316,13 +319,13 @@ def test_plate_belt_reported_fields_obey_their_balances(workdir, law):
     running counter-clockwise round both pulleys):
 
     - int_wrap f ds = T(span p - 1) - T(span p), within TOL_WRAP3D (today: creep-rate
-      <= 1.8 %, Coulomb <= 2.2 %);
+      <= 1.9 %, Coulomb <= 2.4 %);
     - the mean normal force over the wrap's middle half = mean (lambda N - rho A v^2) / R
       there, within TOL_NORMAL (today <= 1.2 %);
     - the reported torque = -int_wrap f |r - o| ds, within TOL_MOMENT of the largest
       (today <= 1.3 %);
     - (T(span p) - T(span p - 1)) R = the torque, within TOL_SPANS3D of the largest
-      (today: creep-rate <= 3.6 %, Coulomb <= 2.9 %).
+      (today: creep-rate <= 3.6 %, Coulomb <= 3.2 %).
     Friction reported along the clockwise tangent turns the wrap's balance to -200 %."""
     results, a, wraps = _plate_wraps(workdir, law)
     T = [q["tension_N"] for q in results["spans"]]
