@@ -124,6 +124,37 @@ def mass_matrix(a: float, b: float, h: float, rho: float) -> np.ndarray:
     return np.kron(rho * scalar_mass(a, b, h), np.eye(3))
 
 
+def gravity(a: float, b: float, h: float, rho: float, g) -> np.ndarray:
+    """F_g = rho int S^T g dV (24,), N (N m on d), for g (3,) in m/s^2: M times g on every
+    node's r, as sum_i N_i = 1 makes S times that vector g at every point."""
+    return mass_matrix(a, b, h, rho) @ np.tile(np.r_[np.asarray(g, dtype=float), 0, 0, 0], NNODE)
+
+
+def _bilinear(xi, eta):
+    """(N, dN/dxi, dN/deta) (..., 4) of nodes A, B, C, D at xi, eta in [-1, 1]."""
+    xi, eta = (np.asarray(v, dtype=float)[..., None] for v in (xi, eta))
+    u, v = 1 + NODE_XI * xi, 1 + NODE_ETA * eta
+    return u * v / 4, NODE_XI * v / 4, NODE_ETA * u / 4
+
+
+def scalar_shape(xi, eta, z) -> np.ndarray:
+    """The 8 scalar shape functions of Eq. (1) at xi, eta in [-1, 1] and z = h zeta/2 (m)
+    from the mid-surface, (..., 8) ordered 2 node + (r, d): N_i (-) and z N_i (m)."""
+    N, _, _ = _bilinear(xi, eta)
+    z = np.asarray(z, dtype=float)[..., None]
+    return np.stack(np.broadcast_arrays(N, z * N), -1).reshape(N.shape[:-1] + (NSHAPE,))
+
+
+def natural_gradient(xi, eta, z) -> np.ndarray:
+    """ds_a/d(xi, eta, z) (..., 8, 3) (the derivatives of :func:`scalar_shape`, z in m)."""
+    N, Nx, Ny = _bilinear(xi, eta)
+    z = np.asarray(z, dtype=float)[..., None]
+    zero = np.zeros_like(N)
+    r = np.stack(np.broadcast_arrays(Nx, Ny, zero), -1)
+    d = np.stack(np.broadcast_arrays(z * Nx, z * Ny, N + zero), -1)
+    return np.stack([r, d], -2).reshape(r.shape[:-2] + (NSHAPE, 3))
+
+
 @njit(cache=True)
 def element(E, V, E0, H, G, w, D, Kinv, alpha, want_J, Q, K, R):
     """One element: Q (24,) N (Eq. (8)), and if want_J K (24, 24) N/m, R (24, 24) N s/m

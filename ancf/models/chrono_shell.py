@@ -1,14 +1,15 @@
-"""A flat rectangular plate of Chrono's ANCF shells (``ancf3443``, ``ancf3833``) as our own
-model: mesh, assembly, mass, loads, supports, Newton's static solve and natural frequencies.
+"""A flat rectangular plate of Chrono's ANCF shells (``ancf3443``, ``ancf3833``, ``ancf3423``)
+as our own model: mesh, assembly, mass, loads, supports, Newton's static solve and natural frequencies.
 
 Mesh: the mid-surface [x0, x0 + a] x [y0, y0 + b] in the plane z = 0 (m), thickness H (m),
 nx x ny equal elements of Le = a/nx by We = b/ny.  The nodes lie on a grid of steps
-Le/s, We/s with s = 1 (3443: corners only) or s = 2 (3833: corners and mid-sides, the
-element centres (odd, odd) left out); neighbours share nodes.  Each node carries c
-coordinates (3443: c = 12, [r, r_x, r_y, r_z]; 3833: c = 9, [r, r_z, r_zz]), its entries
-at node * c + 3 slot + component; the reference e0 is every element's own reference
-(positions in m, unit gradients r_x, r_y, r_z; r_zz = 0).  Equations (N, N m on gradient
-entries; the elements' ``internal_force`` and ``internal_force_jacobians``, no velocity):
+Le/s, We/s with s = 1 (3443, 3423: corners only) or s = 2 (3833: corners and mid-sides,
+the element centres (odd, odd) left out); neighbours share nodes.  Each node carries c
+coordinates (3443: c = 12, [r, r_x, r_y, r_z]; 3833: c = 9, [r, r_z, r_zz]; 3423: c = 6,
+[r, r_z]), its entries at node * c + 3 slot + component; the reference e0 is every
+element's own reference (positions in m, unit gradients r_x, r_y, r_z; r_zz = 0).
+Equations (N, N m on gradient entries; the elements' ``internal_force`` and
+``internal_force_jacobians``, the 3423's ANS/EAS ``Shell3423.gradient``, no velocity):
 
     Q(e) = sum_k A_k^T Q_k(A_k e),  K(e) = dQ/de = sum_k A_k^T K_k A_k,  N/m       (1)
     M = sum_k A_k^T M_k A_k,  M_k = int_V rho S^T S dV                   kg        (2)
@@ -23,9 +24,9 @@ al. 2016): grad_r s_a = (ds_a/dxi) J^-1, J = dr/dxi (3, 3) at the point.  Suppor
 lists of fixed coordinates: ``clamped`` (every coordinate of the edge's nodes) and
 ``simply_supported`` (the transverse displacement w, the z-displacement of the edge: the
 nodes' z-positions, and for the 3443 also the z-component of the edge-tangent gradient, so
-that w = 0 all along its cubic edge; the 3833's quadratic edge is w = 0 from its three
-nodes).  A simple support leaves the in-plane positions and the fibre gradients (r_z,
-r_zz; the 3443's normal slope) free, as Navier's plate leaves the rotation about the edge
+that w = 0 all along its cubic edge; the 3833's quadratic and the 3423's linear edge are
+w = 0 from their nodes).  A simple support leaves the in-plane positions and the fibre
+gradients (r_z, r_zz, the 3423's d = r_z; the 3443's normal slope) free, as Navier's plate leaves the rotation about the edge
 and the in-plane motion free; ``in_plane_rigid`` then removes only the three in-plane
 rigid motions.
 
@@ -43,22 +44,23 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from ancf.elements import ancf3443, ancf3833
+from ancf.elements import ancf3423, ancf3443, ancf3833
 from ancf.elements import continuum3d as c3
+from ancf.elements.ancf3423 import Shell3423
 from ancf.models.chrono_beam import Solution, cardan_xyz  # noqa: F401 (re-exported)
 
 #: element name -> (module, grid steps per element side)
-ELEMENTS = {"3443": (ancf3443, 1), "3833": (ancf3833, 2)}
+ELEMENTS = {"3443": (ancf3443, 1), "3833": (ancf3833, 2), "3423": (ancf3423, 1)}
 #: edge name -> (grid axis, at the start (0) or the end (1))
 EDGES = {"x0": (0, 0), "x1": (0, 1), "y0": (1, 0), "y1": (1, 1)}
 
 
 @dataclass(frozen=True)
 class Plate:
-    """The plate: element ("3443" or "3833"), nx x ny elements, sides a (along x) and b
+    """The plate: element ("3443", "3833" or "3423"), nx x ny elements, sides a (along x) and b
     (along y), thickness H, all m, the corner (x0, y0) in m, density rho (kg/m^3), Young's
     modulus E (Pa), Poisson's ratio nu (isotropic, one layer); ``poisson`` the 3443's law
-    (module docstring, ``ancf3443.POISSON``; the 3833 takes "3d" only)."""
+    (module docstring, ``ancf3443.POISSON``; the 3833 and 3423 take "3d" only)."""
 
     element: str
     nx: int
@@ -204,13 +206,26 @@ def _kernel(element: str, dims: tuple, H: float, E: float, nu: float, poisson: s
     return basis.e0, c3.parts(basis, rules)
 
 
+@lru_cache(maxsize=16)
+def _shell3423(nel: int, dims: tuple, H: float, E: float, nu: float) -> Shell3423:
+    """nel 3423 elements of sides dims (m), thickness H (m), E (Pa), nu, each on its own
+    reference (corner A at the origin), built once per mesh."""
+    return Shell3423(np.full(nel, dims[0]), np.full(nel, dims[1]), H, E, nu)
+
+
 def assemble(plate: Plate, e: np.ndarray, tangent: bool = True):
     """(Q (ndof,) in N, K sparse in N/m or None) of eq. (1) at the state e (m), all elements
-    in one ``continuum3d.static_batch``.  Each element sees its displacement A_k (e - e0),
-    so the mesh offset (up to a, m) does not round off the small strains."""
-    e0, parts = _kernel(plate.element, plate.dims, plate.H, plate.E, plate.nu, plate.poisson)
-    u = (e - plate.reference())[plate.dofs] + (plate.element_reference - e0)
-    Qk, Kk = c3.static_batch(u, parts, tangent)
+    in one ``continuum3d.static_batch`` (the 3423: one ``Shell3423.gradient``).  Each
+    element sees its displacement A_k (e - e0) on its own reference, so the mesh offset
+    (up to a, m) does not round off the small strains."""
+    u = (e - plate.reference())[plate.dofs] + plate.element_reference
+    if plate.element == "3423":
+        el = _shell3423(len(plate.dofs), plate.dims, plate.H, plate.E, plate.nu)
+        Qk, Kk = el.gradient(u, tangent)
+    else:
+        e0, parts = _kernel(plate.element, plate.dims, plate.H, plate.E, plate.nu,
+                            plate.poisson)
+        Qk, Kk = c3.static_batch(u - e0, parts, tangent)
     Q = np.zeros(plate.ndof)
     np.add.at(Q, plate.dofs, Qk)
     return Q, (_scatter(plate, Kk) if tangent else None)
@@ -219,8 +234,12 @@ def assemble(plate: Plate, e: np.ndarray, tangent: bool = True):
 def reference_stiffness(plate: Plate) -> sp.csr_matrix:
     """K(e0) (N/m): every element has the same reference, so one element's K_k serves all."""
     m, zero = plate.module, np.zeros(plate.module.NDOF)
-    Kk = m.internal_force_jacobians(plate.element_reference, zero, *plate.dims, plate.H,
-                                    *plate.material(), **plate.options())[0]
+    if plate.element == "3423":
+        el = _shell3423(1, plate.dims, plate.H, plate.E, plate.nu)
+        Kk = el.gradient(plate.element_reference, tangent=True)[1][0]
+    else:
+        Kk = m.internal_force_jacobians(plate.element_reference, zero, *plate.dims, plate.H,
+                                        *plate.material(), **plate.options())[0]
     return _scatter(plate, np.broadcast_to(Kk, (len(plate.dofs),) + Kk.shape))
 
 
@@ -242,16 +261,16 @@ def gravity(plate: Plate, g) -> np.ndarray:
 
 
 def _shape(plate: Plate, xi, eta, z=0.0) -> np.ndarray:
-    """The module's scalar shape functions (..., NSHAPE) at (xi, eta, z)."""
+    """The module's scalar shape functions (..., NSHAPE) at (xi, eta, z), z in m."""
     if plate.element == "3443":
         return ancf3443.scalar_shape(xi, eta, z, *plate.dims)
-    return ancf3833.scalar_shape(xi, eta, z)
+    return plate.module.scalar_shape(xi, eta, z)
 
 
 def _natural_gradient(plate: Plate, xi, eta) -> np.ndarray:
     if plate.element == "3443":
         return ancf3443.natural_gradient(xi, eta, 0.0, *plate.dims)
-    return ancf3833.natural_gradient(xi, eta, 0.0)
+    return plate.module.natural_gradient(xi, eta, 0.0)
 
 
 def pressure(plate: Plate, p: float, ngauss: int = 3) -> np.ndarray:
@@ -341,7 +360,7 @@ def modes(plate: Plate, fixed, k: int = 6) -> np.ndarray:
 def simply_supported_square(shell_cls, n: int, a: float, H: float, E: float, nu: float,
                             p: float):
     """(plate, u) of the scene ``plate-square`` with a registry shell class ``shell_cls``
-    (``chrono_element.Shell3443`` or ``Shell3833``): n x n elements over a x a (m),
+    (``chrono_element.Shell3443``, ``Shell3833`` or ``ancf3423.Shell3423``): n x n elements over a x a (m),
     thickness H (m), E (Pa), nu; w = 0 on the four edges (``simply_supported``) and
     ``in_plane_rigid``; the uniform pressure p (Pa) along +z (eq. (3)); the linear solve
     K(e0) u = F_p on the free coordinates, K(e0) (N/m) the class's tangent assembled on

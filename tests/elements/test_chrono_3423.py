@@ -97,6 +97,23 @@ def test_3423_mass_and_shapes():
     np.testing.assert_allclose(S["z"](X, Y, 0.0, A, B)[:, 1::2], np.eye(4), atol=1e-15)
 
 
+def test_3423_closed_form_shapes_and_gravity_match_the_generated_module():
+    """scalar_shape, natural_gradient (chrono_shell's loads) against the generated
+    evaluator at random points (1e-14: round-off of O(1) sums); gravity rho V g / 4 per
+    node position, nothing on d (1e-12)."""
+    rng = np.random.default_rng(11)
+    for xi, eta, zeta in rng.uniform(-1, 1, (5, 3)):
+        gen = ancf3423._shapes_at(xi, eta, zeta, A, B, H)
+        z = H * zeta / 2
+        np.testing.assert_allclose(ancf3423.scalar_shape(xi, eta, z), gen[0], rtol=0, atol=1e-14)
+        dn = ancf3423.natural_gradient(xi, eta, z) / [A / 2, B / 2, 1.0]
+        np.testing.assert_allclose(dn, gen[1:].T, rtol=0, atol=1e-13)
+    g = np.array([0.5, -2.0, -9.81])
+    Fg = ancf3423.gravity(A, B, H, RHO, g).reshape(4, 2, 3)
+    np.testing.assert_allclose(Fg[:, 0], np.tile(RHO * A * B * H * g / 4, (4, 1)), rtol=1e-12)
+    assert np.abs(Fg[:, 1]).max() <= 1e-12 * RHO * A * B * H * 9.81
+
+
 def test_3423_generated_module_carries_its_stamp():
     assert _codegen.stamp_ok(generator.TARGET, generator.SOURCES)
 
