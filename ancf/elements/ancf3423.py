@@ -230,11 +230,29 @@ def batch(Es, Vs, E0s, H, G, w, D, Kinv, alpha, want_J, Q, K, R, U):
         U[i] = element(Es[i], Vs[i], E0s[i], H, G, w, D, Kinv, alpha, want_J, Q[i], K[i], R[i])
 
 
+def internal_force(e, edot, a, b, h, E, nu, alpha=0.0, *, ans="paper") -> np.ndarray:
+    """Q(e, e') (24,), N (N m on d), Eq. (8) of one element on its own reference
+    (:func:`reference_coordinates`): e (24,) in m, edot (24,) in m/s, sides a, b and
+    thickness h in m, E in Pa, nu, alpha in s; the interface of the other Chrono modules
+    (``ancf element``).  Chrono's ``ComputeInternalForces`` stores -Q."""
+    el = Shell3423(a, b, h, E, nu, ans=ans, alpha=alpha)
+    return el.evaluate(np.reshape(e, (1, NDOF)), np.reshape(edot, (1, NDOF)))[0][0]
+
+
+def internal_force_jacobians(e, edot, a, b, h, E, nu, alpha=0.0, *, ans="paper"):
+    """(K, R) = (dQ/de in N/m, dQ/de' in N s/m), each (24, 24), Eqs. (9), (10), of
+    :func:`internal_force` (same arguments)."""
+    el = Shell3423(a, b, h, E, nu, ans=ans, alpha=alpha)
+    _, K, R, _ = el.evaluate(np.reshape(e, (1, NDOF)), np.reshape(edot, (1, NDOF)), want_J=True)
+    return K[0], R[0]
+
+
 class Shell3423:
     """``nel`` ANCF 3423 elements of sides a, b (nel,) m and thickness h (m), one
-    isotropic layer (E Pa, nu), density rho (kg/m^3), reference e0 (nel, 24) (default
-    each element's own, :func:`reference_coordinates`), the ANS order ``ans`` (module
-    docstring) and the damping alpha (s).  The element contract
+    isotropic layer (E Pa, nu; or the law ``D`` (6, 6) in Pa, Voigt order of Eq. (2), in
+    their place), density rho (kg/m^3), reference e0 (nel, 24) (default each element's
+    own, :func:`reference_coordinates`), the ANS order ``ans`` (module docstring) and the
+    damping alpha (s).  The element contract
     (:mod:`ancf.elements.contract`): energy, gradient (exact tangent), mass."""
 
     module = sys.modules[__name__]
@@ -245,14 +263,15 @@ class Shell3423:
     dim = 3
     node_points = ((NODE_XI + 1) / 2, (NODE_ETA + 1) / 2)
 
-    def __init__(self, lengths, widths, h, E, nu, rho=0.0, e0=None, ans="paper", alpha=0.0):
+    def __init__(self, lengths, widths, h, E, nu, rho=0.0, e0=None, ans="paper", alpha=0.0,
+                 D=None):
         a = np.atleast_1d(np.asarray(lengths, dtype=float))
         b = np.broadcast_to(np.asarray(widths, dtype=float), a.shape)
         if not np.all(a == a[0]) or not np.all(b == b[0]):
             raise ValueError("lengths, widths: elements of one size only (got several)")
         self.nel, self.nshape, self.ndof = a.size, NSHAPE, NDOF
         self.lengths, self.widths, self.h, self.rho = a, b, float(h), float(rho)
-        self.D = isotropic_3d(E, nu)
+        self.D = isotropic_3d(E, nu) if D is None else np.array(D, dtype=float)
         self.H, self.G, self.w = point_forms(a[0], b[0], self.h, ans)
         self.Kinv = np.linalg.inv(eas_stiffness(self.G, self.w, self.D))
         self.alpha = float(alpha)

@@ -2,7 +2,7 @@
 ``ancf element NAME`` (issue 35), so that other codes can be compared with ours.
 
 :data:`ELEMENTS` maps each name (``ancf3243``, ``ancf3333`` beams, ``ancf3443``,
-``ancf3833`` shells, ``ancf3843`` brick) to an :class:`ElementSpec`: its parameters
+``ancf3833``, ``ancf3423`` shells, ``ancf3843`` brick) to an :class:`ElementSpec`: its parameters
 (:class:`~ancf.common.params.Param`, defaults = the parameters of Chrono's unit tests
 ``utest_FEA_ANCF*_Formulation.cpp``) and ``matrices(p)``, which evaluates the element's
 own module (no numerics here).  The state is Chrono's: every node at the reference
@@ -26,7 +26,7 @@ import numpy as np
 
 from ancf.common.params import InputError, Param, resolve
 
-from . import ancf3243, ancf3333, ancf3443, ancf3833, ancf3843
+from . import ancf3243, ancf3333, ancf3423, ancf3443, ancf3833, ancf3843
 from .material import isotropic_3d
 
 _POS = dict(lo=0, lo_open=True)
@@ -129,7 +129,7 @@ class ElementSpec:
 
 
 #: how many leading dimensions each module's ``reference_coordinates`` takes
-_REF_ARGS = {ancf3243: 1, ancf3333: 1, ancf3443: 2, ancf3833: 2, ancf3843: 3}
+_REF_ARGS = {ancf3243: 1, ancf3333: 1, ancf3443: 2, ancf3833: 2, ancf3423: 2, ancf3843: 3}
 
 
 def _beam_material(p):
@@ -151,6 +151,8 @@ ELEMENTS = {s.name: s for s in (
           _SHELL_DIMS, lambda p: (isotropic_3d(p["E"], p["nu"]),)),
     _spec("ancf3833", "Chrono's 8-node higher-order shell (r, r_z, r_zz)", ancf3833, 8, 1,
           _SHELL_DIMS, lambda p: (p["E"], p["nu"])),
+    _spec("ancf3423", "Chrono's 4-node ANS/EAS shell (r, r_z)", ancf3423, 4, 1, _SHELL_DIMS,
+          lambda p: (p["E"], p["nu"])),
     _spec("ancf3843", "Chrono's 8-node brick (r, r_x, r_y, r_z)", ancf3843, 8, 1,
           _BRICK_DIMS, lambda p: (p["E"], p["nu"])),
 )}

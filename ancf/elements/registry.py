@@ -158,7 +158,8 @@ class ElementType:
 _CHRONO_STRAIN = "ancf.elements.continuum3d"
 _BEAM_LAW = "St Venant-Kirchhoff, k1 = k2 = ks on the shears, Poisson part on the axis"
 _SOLID = frozenset({"axial", "bending", "shear", "large-rotation", "inertia", "3D"})
-#: Chrono's ANCF elements (``ancf.elements.chrono_element``), one exact rule each
+#: Chrono's ANCF elements (``ancf.elements.chrono_element``, one exact rule each; the 3423
+#: its own module, 2 x 2 x 2 Gauss points)
 _CHRONO = (
     ElementType(name="ancf3243", dim=3, kind="beam", family="cubic3d", nodes=2,
                 strain=_CHRONO_STRAIN, material=_BEAM_LAW,
@@ -171,6 +172,12 @@ _CHRONO = (
                 physics=_BEAM | {"3D"},
                 doc="Chrono's 3-node shear-deformable beam ChElementBeamANCF_3333, "
                     "27 coordinates"),
+    ElementType(name="ancf3423", dim=3, kind="shell", family="ancf3423", nodes=4,
+                strain="ancf.elements.ancf3423",
+                material="isotropic 3D St Venant-Kirchhoff, ANS thickness and transverse "
+                         "shear strains, five EAS modes condensed per element",
+                path="ancf.elements.ancf3423:Shell3423", variants=(), physics=_SOLID,
+                doc="Chrono's 4-node ANS/EAS shell ChElementShellANCF_3423, 24 coordinates"),
     ElementType(name="ancf3443", dim=3, kind="shell", family="ancf3443", nodes=4,
                 strain=_CHRONO_STRAIN, material="isotropic 3D St Venant-Kirchhoff (Chrono's)",
                 path="ancf.elements.chrono_element:Shell3443", variants=(), physics=_SOLID,

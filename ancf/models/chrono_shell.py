@@ -187,6 +187,11 @@ class Plate:
         """The keyword arguments of the module's internal force (the 3443's ``poisson``)."""
         return {"poisson": self.poisson} if self.element == "3443" else {}
 
+    def shell3423(self, nel: int) -> Shell3423:
+        """nel 3423 elements of this plate's sides, thickness and law, each on its own
+        reference (corner A at the origin)."""
+        return _shell3423(nel, self.dims, self.H, self.E, self.nu)
+
 
 def _scatter(plate: Plate, blocks: np.ndarray) -> sp.csr_matrix:
     """sum_k A_k^T blocks_k A_k as a sparse (ndof, ndof) matrix; blocks (nel, NDOF, NDOF)."""
@@ -208,8 +213,8 @@ def _kernel(element: str, dims: tuple, H: float, E: float, nu: float, poisson: s
 
 @lru_cache(maxsize=16)
 def _shell3423(nel: int, dims: tuple, H: float, E: float, nu: float) -> Shell3423:
-    """nel 3423 elements of sides dims (m), thickness H (m), E (Pa), nu, each on its own
-    reference (corner A at the origin), built once per mesh."""
+    """:meth:`Plate.shell3423` of sides dims (m), thickness H (m), E (Pa), nu, built once
+    per mesh."""
     return Shell3423(np.full(nel, dims[0]), np.full(nel, dims[1]), H, E, nu)
 
 
@@ -220,8 +225,7 @@ def assemble(plate: Plate, e: np.ndarray, tangent: bool = True):
     (up to a, m) does not round off the small strains."""
     u = (e - plate.reference())[plate.dofs] + plate.element_reference
     if plate.element == "3423":
-        el = _shell3423(len(plate.dofs), plate.dims, plate.H, plate.E, plate.nu)
-        Qk, Kk = el.gradient(u, tangent)
+        Qk, Kk = plate.shell3423(len(plate.dofs)).gradient(u, tangent)
     else:
         e0, parts = _kernel(plate.element, plate.dims, plate.H, plate.E, plate.nu,
                             plate.poisson)
@@ -235,8 +239,7 @@ def reference_stiffness(plate: Plate) -> sp.csr_matrix:
     """K(e0) (N/m): every element has the same reference, so one element's K_k serves all."""
     m, zero = plate.module, np.zeros(plate.module.NDOF)
     if plate.element == "3423":
-        el = _shell3423(1, plate.dims, plate.H, plate.E, plate.nu)
-        Kk = el.gradient(plate.element_reference, tangent=True)[1][0]
+        Kk = plate.shell3423(1).gradient(plate.element_reference, tangent=True)[1][0]
     else:
         Kk = m.internal_force_jacobians(plate.element_reference, zero, *plate.dims, plate.H,
                                         *plate.material(), **plate.options())[0]

@@ -3,8 +3,8 @@ plate of thesis 4.3 against Navier's series).
 
 ``n_elements`` x ``n_elements`` ``plate36`` elements (bending on, ``ng`` x ``ng`` Gauss
 points) over a x a; simply supported: w = 0 and the slope along the edge vanish on the
-boundary, the in-plane coordinates are fixed.  ``element`` = ``ancf3443`` or ``ancf3833``
-(Chrono's shells): the registry's class on
+boundary, the in-plane coordinates are fixed.  ``element`` = ``ancf3423``, ``ancf3443`` or
+``ancf3833`` (Chrono's shells): the registry's class on
 :func:`ancf.models.chrono_shell.simply_supported_square`'s mesh, w = 0 on the edges
 (:meth:`~ancf.models.chrono_shell.Plate.simply_supported`), in-plane rigid motion removed.
 Linear (small-deflection) static solve at the flat reference with a sparse direct solver
@@ -55,7 +55,8 @@ CHOICES = tuple(n for n, t in ELEMENTS.items() if t.kind == "plate") + tuple(
 def params() -> tuple:
     return (
         Param("element", "plate36", str, doc="plate element: plate36, or Chrono's shells "
-              "ancf3443, ancf3833 (exact rules, ng ignored)", choices=CHOICES),
+              "ancf3423 (ANS/EAS), ancf3443, ancf3833 (their own rules, ng ignored)",
+              choices=CHOICES),
         Param("a", 1.0, float, "m", "side of the square", lo=0, lo_open=True),
         Param("h", 0.01, float, "m", "thickness", lo=0, lo_open=True),
         Param("E", 2.1e11, float, "Pa", "Young's modulus", lo=0, lo_open=True),
@@ -215,8 +216,8 @@ def equilibrium(p: dict) -> SceneResult:
 
 
 PLATE_KNOBS = ("element", "n_elements", "ng")
-#: the recommender's shells: Chrono's (ancf3443, ancf3833) on meshes up to 16 x 16 (the
-#: 3833 at 16 x 16: about 7400 coordinates)
+#: the recommender's shells: Chrono's (ancf3423, ancf3443, ancf3833) on meshes up to 16 x 16
+#: (the 3833 at 16 x 16: about 7400 coordinates)
 SHELL_GRID = {"element": [n for n in CHOICES if ELEMENTS[n].kind == "shell"],
               "n_elements": [2, 4, 8, 16]}
 

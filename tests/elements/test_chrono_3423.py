@@ -139,3 +139,29 @@ def test_3423_chronos_present_ans_order_is_not_the_files():
     """The knots A, B, D, C against shape functions A, B, C, D: within Chrono's 5e-5 over 10
     steps, but beyond the file's rounding (the file predates the reordering, 2015)."""
     assert ROUNDING < _first_steps("chrono") <= CHRONO_TOL
+
+
+def test_3423_element_command_prints_the_modules_matrices(cli):
+    """``ancf element ancf3423 --json`` at a displaced, moving node: the module's Q, K, R
+    (Shell3423.evaluate, bit-equal), mass and gravity; valid against its schema."""
+    import json
+
+    from ancf.study.schemas import element_schema, validate
+
+    rc, out, err = cli("element", "ancf3423", "--json", "--set", "displacement=0.001",
+                       "--set", "velocity=0.002", "--set", "alpha=0.01", "--set", "node=2")
+    assert rc == 0 and err == ""
+    d = json.loads(out)
+    p = d["params"]
+    el = ancf3423.Shell3423(p["L"], p["W"], p["H"], p["E"], p["nu"], alpha=0.01)
+    e, edot = el.e0[0].copy(), np.zeros(24)
+    e[14], edot[14] = 0.001, 0.002  # node 2 (C), z: 6 * 2 + 2
+    Q, K, R, _ = el.evaluate(e[None], edot[None], want_J=True)
+    np.testing.assert_array_equal(d["coordinates"], e)
+    np.testing.assert_array_equal(d["internal_force"], Q[0])
+    np.testing.assert_array_equal(d["stiffness"], K[0])
+    np.testing.assert_array_equal(d["damping"], R[0])
+    np.testing.assert_array_equal(d["mass_matrix"], ancf3423.mass_matrix(p["L"], p["W"], p["H"],
+                                                                          p["rho"]))
+    assert np.abs(Q).max() > 0 and np.abs(R).max() > 0
+    assert validate(d, element_schema("ancf3423")) == []

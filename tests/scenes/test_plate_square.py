@@ -1,8 +1,8 @@
-"""plate-square with Chrono's shells (issue 35): ``element`` = ancf3443 or ancf3833.
+"""plate-square with Chrono's shells (issue 35): ``element`` = ancf3423, ancf3443 or ancf3833.
 
 The scene (the registry's class, batched ``continuum3d.static_batch`` tangent, assembled on
 ``chrono_shell.Plate``'s mesh) against ``chrono_shell``'s own reference stiffness (the
-module's ``internal_force_jacobians`` of one element, scattered) with the same supports and
+module's ``internal_force_jacobians`` of one element, the 3423's ``Shell3423``, scattered) with the same supports and
 pressure: one linear solve each, so the centre deflections agree to round-off (1e-9
 relative); a mesh of 2 more elements per side differs by > 1e-3.  ``ancf modes`` on the
 shells: the same frequencies as ``chrono_shell.modes`` (1e-8 relative, two eigensolvers),
@@ -29,7 +29,7 @@ def _chrono_centre(element: str, n: int, p: dict) -> float:
     return float(u[plate.coordinate(cs.centre_node(plate), 0, 2)])
 
 
-@pytest.mark.parametrize("element", ["ancf3443", "ancf3833"])
+@pytest.mark.parametrize("element", ["ancf3423", "ancf3443", "ancf3833"])
 def test_scene_matches_the_chrono_shell_model(element):
     out, _ = SCENES["plate-square"].execute({"element": element, "n_elements": 4})
     p, w = out["params"], out["results"]["center_deflection_m"]
@@ -49,7 +49,7 @@ def test_an_element_the_scene_cannot_model_is_one_error_line(element, capsys):
     assert main(["run", "plate-square", "--set", f"element={element}"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"error: element = {element!r} is out of range; allowed: one of "
-                   "plate36, ancf3443, ancf3833"]
+                   "plate36, ancf3423, ancf3443, ancf3833"]
 
 
 def _chrono_modes(element: str, n: int, p: dict, count: int) -> np.ndarray:
@@ -63,7 +63,7 @@ def _chrono_modes(element: str, n: int, p: dict, count: int) -> np.ndarray:
 SAME_MODES = 1e-8
 
 
-@pytest.mark.parametrize("element", ["ancf3443", "ancf3833"])
+@pytest.mark.parametrize("element", ["ancf3423", "ancf3443", "ancf3833"])
 def test_modes_of_a_shell_match_the_chrono_shell_model(element):
     out, _ = modes.execute("plate-square", {"element": element, "n_elements": 4}, count=6)
     f = np.array(out["results"]["frequencies_hz"])
@@ -73,8 +73,9 @@ def test_modes_of_a_shell_match_the_chrono_shell_model(element):
     assert np.shape(out["results"]["mode_shapes"])[1:] == (len(out["results"]["sample_points"]), 3)
 
 
-def test_a_free_shell_plate_has_six_rigid_modes():
-    out, _ = modes.execute("plate-square", {"element": "ancf3833", "n_elements": 2,
+@pytest.mark.parametrize("element", ["ancf3423", "ancf3833"])
+def test_a_free_shell_plate_has_six_rigid_modes(element):
+    out, _ = modes.execute("plate-square", {"element": element, "n_elements": 2,
                                             "supports": "free"}, count=8)
     assert out["converged"] and out["results"]["rigid_body_modes"] == 6
 
@@ -83,7 +84,11 @@ def test_shell_modes_about_the_equilibrium_under_the_pressure():
     """Newton's equilibrium (w about h/47) stiffens the plate little: the lowest frequency
     within 1 % of the reference state's, and its centre deflection the linear run's within
     1 % (the same small-deflection plate)."""
-    p = {"element": "ancf3833", "n_elements": 4}
+    for element in ("ancf3423", "ancf3833"):
+        _equilibrium_agrees({"element": element, "n_elements": 4})
+
+
+def _equilibrium_agrees(p: dict) -> None:
     out, res = modes.execute("plate-square", p, count=2, about="equilibrium")
     r = out["results"]
     assert out["converged"] and r["newton_iterations"] >= 1
