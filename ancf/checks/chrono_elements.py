@@ -252,8 +252,9 @@ def locking_factor(nu: float) -> float:
     return (1 - nu) ** 2 / (1 - 2 * nu)
 
 
-#: (element, Poisson law) of the chapter's plate rows: the 3443 locked and with the remedy
-PLATE_CASES = (("3443", "3d"), ("3443", "plane_stress"), ("3833", "3d"))
+#: (element, Poisson law) of the chapter's plate rows: the 3443 locked and with the remedy,
+#: the ANS/EAS 3423 and the 3833 (both with the 3D law)
+PLATE_CASES = (("3443", "3d"), ("3443", "plane_stress"), ("3423", "3d"), ("3833", "3d"))
 
 
 def plate_rows() -> list[dict]:

@@ -223,13 +223,13 @@ def assemble(plate: Plate, e: np.ndarray, tangent: bool = True):
     in one ``continuum3d.static_batch`` (the 3423: one ``Shell3423.gradient``).  Each
     element sees its displacement A_k (e - e0) on its own reference, so the mesh offset
     (up to a, m) does not round off the small strains."""
-    u = (e - plate.reference())[plate.dofs] + plate.element_reference
+    u = (e - plate.reference())[plate.dofs]
     if plate.element == "3423":
-        Qk, Kk = plate.shell3423(len(plate.dofs)).gradient(u, tangent)
+        Qk, Kk = plate.shell3423(len(plate.dofs)).gradient(u + plate.element_reference, tangent)
     else:
         e0, parts = _kernel(plate.element, plate.dims, plate.H, plate.E, plate.nu,
                             plate.poisson)
-        Qk, Kk = c3.static_batch(u - e0, parts, tangent)
+        Qk, Kk = c3.static_batch(u + (plate.element_reference - e0), parts, tangent)
     Q = np.zeros(plate.ndof)
     np.add.at(Q, plate.dofs, Qk)
     return Q, (_scatter(plate, Kk) if tangent else None)

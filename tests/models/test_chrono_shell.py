@@ -133,9 +133,9 @@ def test_sparse_modes_equal_the_dense_eigenproblem(element):
 RTOL = ce.PLATE_TOL
 REMEDIES = ("plane_stress", "split")   # the 3443's Poisson-locking remedies (``ancf3443``)
 #: every (element, Poisson law) of the square plate held to Navier at 16 x 16
-PLATES = {("3443", "3d"), ("3833", "3d"), *(("3443", r) for r in REMEDIES)}
+PLATES = {("3443", "3d"), ("3833", "3d"), ("3423", "3d"), *(("3443", r) for r in REMEDIES)}
 #: those solved here: the others, ``ce.PLATE_CASES`` (the plain 3443, its plane-stress
-#: remedy, the 3833), are the chapter's rows, solved once and held to Navier there
+#: remedy, the ANS/EAS 3423, the 3833), are the chapter's rows, solved once and held to Navier there
 #: (``tests/reports/test_chrono_elements_chapter.py``: the 3833's w and six frequencies
 #: within 1 %, the plain 3443's w low and frequencies high by more than 1 % (Poisson
 #: locking: w -18.7 %, f +10.9..12.2 %, see test_3443_miss_is_poisson_locking), the

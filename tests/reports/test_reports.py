@@ -21,6 +21,7 @@ from ancf.checks.serpentine_3d import NAMES as SERPENTINE_3D
 from ancf.checks.belt_tracking3d import ALIGNED as TRACK_ALIGNED, NAMES as TRACK_NAMES
 from ancf.checks.belt2d import GAUSS_CHECK
 from ancf.checks.chrono_shell3423 import NAMES as C3423_NAMES
+from ancf.checks.chrono_locking import ANS_NAMES
 from ancf.checks.belt_drives import SERPENTINE_NAMES
 from ancf.reports.belt_drives import THREAD_NAMES
 from ancf.checks.frequencies import ACCEPT_MESH, AXIAL_MESHES, SUPPORTS
@@ -63,6 +64,8 @@ AGREES = {
          "test_plate_rows_and_checks"),
         ("Square plate 16 × 16, 3443 (plane stress): w within 1 % of Navier",
          "test_plate_3443_plane_stress_w_passes_f4_to_f6_miss"),
+        ("Square plate 16 × 16, 3423: w within 1 % of Navier", "test_plate_rows_and_checks"),
+        *((name, "test_3423_plate_no_locking_and_converges") for name in ANS_NAMES),
         ("Square plate 16 × 16, 3833: w within 1 % of Navier", "test_plate_rows_and_checks"),
         ("Square plate, 3833: first six frequencies within 1 % of the analytic plate",
          "test_plate_rows_and_checks"))},
