@@ -220,6 +220,10 @@ MUTATIONS = [
     ("tensioner arm start angle from pivot to centre reversed", "ancf/belts/drive_model.py",
      ("beta0=math.atan2(c[1] - P[1], c[0] - P[0]),", "beta0=math.atan2(P[1] - c[1], P[0] - c[0]),"),
      "tests/belts/test_drive_keys.py::test_arm_start_is_the_files_centre"),
+    ("3423 transverse shear at the Gauss point, not the ANS edge midpoints",
+     "ancf/elements/ancf3423.py",
+     ("Hq[3] += p * _sym(sp[2], sp[3])", "Hq[3] += p * _sym(s[2], s[3])"),
+     "tests/reports/test_chrono_elements_chapter.py::test_3423_plate_no_locking_and_converges"),
 ]
 
 
