@@ -75,6 +75,15 @@ class ChronoElement:
     def _group_parts(self, s: tuple):
         return _parts(type(self), s, self.material)
 
+    #: one element's sizes (m) and material for :meth:`points_per_element` (any will do)
+    _unit: tuple = ((1.0, 1.0, 0.1), (1.0, 0.3))
+
+    @classmethod
+    def points_per_element(cls) -> int:
+        """Quadrature points of one element's internal force, summed over its material
+        parts (each part its own exact rule): the cost model's kernel points."""
+        return sum(len(p.dV) for p in _parts(cls, *cls._unit))
+
     def energy(self, e) -> np.ndarray:
         """Eq. (1) of each element (nel,), J."""
         U, out = np.asarray(e, dtype=float) - self.e0, np.zeros(self.nel)
@@ -131,6 +140,8 @@ class ChronoElement:
 class _Beam(ChronoElement):
     """A beam along x: lengths (nel,) m, e0 (nel, ndof) m, the section's height h (y)
     and width b (z), m; ks the shear correction of both shears (default Chrono's)."""
+
+    _unit = ((1.0, 0.1, 0.1), (1.0, 0.3, 1.0, 1.0))
 
     def __init__(self, lengths, e0, section, E, nu, rho=0.0, ks=None):
         k = chrono_shear(nu) if ks is None else float(ks)

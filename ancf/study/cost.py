@@ -39,6 +39,10 @@ machine-independent; whether they describe *this* machine is reported by
 relative residuals over a sweep's rows, with the scatter of the fit and the seconds per
 work unit that the weighted model implies.
 
+Chrono's elements (``ancf3243`` ... ``ancf3843``) count their own coordinates and quadrature
+points (:func:`chrono_type`; their exact rules are large: 50 points per beam, 147 per 3443
+shell, 8 per ANS/EAS 3423) and their meshes' nodes (:func:`mesh_size`).
+
 The belt scenes have no ``element`` knob: their kernel is the Dufva belt element
 (:func:`belt_shape`: 12 coordinates, elastic plus contact points; the 3D belt's
 plate: :func:`plate_belt_shape`, 36 coordinates, 16 elastic plus contact points).  The plate scenes
@@ -123,12 +127,23 @@ def plate_belt_shape(params) -> tuple[int, int]:
     return 36, 16 + int(_num(params.get("contact_points")))
 
 
+def chrono_type(params):
+    """The registry's record of the run's element when it is one of Chrono's (its own
+    quadrature, :meth:`points_per_element`), else None."""
+    from ancf.elements.registry import ELEMENTS
+    t = ELEMENTS.get(str(params.get("element")))
+    return t if t is not None and hasattr(t.cls, "points_per_element") else None
+
+
 def element_shape(params) -> tuple[int, int]:
     """(coordinates per element, quadrature points per element) of the run's element and
     integration scheme (or of the belt element, :func:`belt_shape`); (0, 0) for an element
     family this module does not know."""
     from ancf.models.beam3d import BUILDERS
     from ancf.elements.catalogue import ELEMENTS
+    chrono = chrono_type(params)
+    if chrono is not None:
+        return chrono.cls.module.NDOF, chrono.cls.points_per_element()
     cls = ELEMENTS.get(str(params.get("element")))
     if cls is None and _num(params.get("contact_points")):
         return plate_belt_shape(params)
@@ -193,6 +208,27 @@ def _evaluations(params, results) -> tuple | None:
     return "static", 0.0, tangents, factors, 0.0
 
 
+def mesh_size(params, d: int) -> tuple[float, float]:
+    """(elements, global coordinates) of the run's mesh: a beam's n_elements in a row, a
+    plate's n x n_width (n x n for the square; 27 per node of the 36-coordinate plate), a
+    Chrono shell's n x n_width with its 4 or 8 nodes per element, a Chrono beam's or
+    brick's n in a row (the brick's four nodes per cross-section)."""
+    n = _num(params.get("n_elements")) or 0.0
+    chrono = chrono_type(params)
+    per_node = chrono.cls.module.NDOF / chrono.nodes if chrono is not None else 0
+    if chrono is not None and chrono.kind == "shell":
+        ny = _num(params.get("n_width")) or n
+        corners = (n + 1) * (ny + 1)
+        mid = n * (ny + 1) + (n + 1) * ny if chrono.nodes == 8 else 0.0
+        return n * ny, (corners + mid) * per_node
+    if chrono is not None:
+        return n, ((chrono.nodes - 1) * n + 1 if chrono.kind == "beam" else 4 * (n + 1)) * per_node
+    if d == 36:  # a plate mesh: n x n_width elements (n x n for the square), 27 per node
+        ny = _num(params.get("n_width")) or n
+        return n * ny, (n + 1) * (ny + 1) * 27
+    return n, (n + 1) * d / 2
+
+
 def counts(params, results) -> dict | None:
     """The counted work of one run (:data:`FEATURES` and its ``kind``, a key of
     :data:`WEIGHTS`), or None without counters."""
@@ -202,11 +238,7 @@ def counts(params, results) -> dict | None:
         return None
     kind, forces, tangents, factors, steps = ev
     d, qp = element_shape(params)
-    n = _num(params.get("n_elements")) or 0.0
-    size = (n + 1) * d / 2
-    if d == 36:  # a plate mesh: n x n_width elements (n x n for the square), 27 per node
-        ny = _num(params.get("n_width")) or n
-        n, size = n * ny, (n + 1) * (ny + 1) * 27
+    n, size = mesh_size(params, d)
     stab = size if _stability_checked(results) else 0.0
     return {"kind": kind, "runs": 1.0, "forces": forces, "tangents": tangents, "factorizations": factors,
             "steps": steps, "kernel_points": (forces * d + tangents * d * d) * n * qp,

@@ -97,6 +97,33 @@ def test_static_counts_prefer_the_solver_counters_and_fall_back():
     assert counts(p, {"tip_x": 1.0}) is None and np.isnan(work(None))
 
 
+@pytest.mark.parametrize("element", ["ancf3423", "ancf3443", "ancf3833"])
+def test_chrono_shells_count_their_own_mesh_and_points(element):
+    """A Chrono shell on plate-square is counted on its own coordinates, the model's nodes
+    (:class:`ancf.models.chrono_shell.Plate`) and its own quadrature, not as the
+    36-coordinate plate (``ng`` is ignored by these elements)."""
+    from ancf.elements.registry import ELEMENTS
+    from ancf.models.chrono_shell import Plate
+    plate = Plate(element[-4:], 3, 3, 1.0, 1.0, 0.01, 2e11, 0.3)
+    cls = ELEMENTS[element].cls
+    p = {"element": element, "n_elements": 3, "ng": 4}
+    c = counts(p, {"tangent_evaluations": 2, "factorizations": 2})
+    assert c["factor_dofs"] == 2 * plate.ndof
+    assert c["kernel_points"] == 2 * cls.module.NDOF ** 2 * 9 * cls.points_per_element()
+    assert c == counts({**p, "ng": 2}, {"tangent_evaluations": 2, "factorizations": 2})
+
+
+def test_chrono_beams_count_their_exact_rule():
+    """Chrono's beams (exact rules, 50 points each) cost more kernel work per element than
+    Kerkkanen's 3D linear beam on the same mesh, and the 3-node beam's mesh has 2n + 1
+    nodes of 9 coordinates."""
+    r = {"tangent_evaluations": 1, "factorizations": 1}
+    chrono = counts({"element": "ancf3333", "n_elements": 4}, r)
+    assert chrono["factor_dofs"] == 9 * 9
+    assert chrono["kernel_points"] > counts({"element": "linear3d", "n_elements": 4,
+                                             "integration": "thesis"}, r)["kernel_points"]
+
+
 def test_dynamic_counts_per_integrator():
     p = {"element": "omar-shabana", "integration": "thesis", "n_elements": 2}
     res = {"nfev": 30, "njev": 3, "nlu": 4, "steps": 10}
