@@ -382,8 +382,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p = sub.add_parser("element", help="one of Chrono's ANCF elements: its mass, gravity, "
                        "internal force, K and R at a stated state")
-    p.add_argument("name", help="ancf3243, ancf3333 (beams), ancf3443, ancf3833 (shells), "
-                                "ancf3843 (brick)")
+    p.add_argument("name", help="ancf3243, ancf3333 (beams), ancf3423, ancf3443, ancf3833 "
+                                "(shells), ancf3843 (brick)")
     p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a parameter "
                    "(dimensions, rho, E, nu, alpha, gx/gy/gz, node, component, displacement, "
                    "velocity; beams k1, k2)")

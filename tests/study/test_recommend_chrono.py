@@ -1,5 +1,5 @@
 """`ancf recommend` across element families (issue 35): the scenes that take Chrono's
-elements (the 3D beam scenes: ancf3243, ancf3333; plate-square: ancf3443, ancf3833, its
+elements (the 3D beam scenes: ancf3243, ancf3333; plate-square: ancf3423, ancf3443, ancf3833, its
 statics and frequencies) put them in their recommendation grids beside the thesis
 elements, and the recommender ranks their runs with the others'."""
 from __future__ import annotations
@@ -12,7 +12,7 @@ from ancf.study.recommend import recommend
 from ancf.study.references import spec
 
 CHRONO_BEAMS = {"ancf3243", "ancf3333"}
-CHRONO_SHELLS = {"ancf3443", "ancf3833"}
+CHRONO_SHELLS = {"ancf3423", "ancf3443", "ancf3833"}
 #: scene, quantity -> Chrono's elements its recommendation grids must hold
 CASES = {("beam3d-cantilever", "results"): CHRONO_BEAMS,
          ("princeton-beam", "results"): CHRONO_BEAMS,
