@@ -147,13 +147,15 @@ def _previous_statuses(root: Path, chapter: str) -> dict:
 
 
 def _with_chapter(previous: dict, chapter: str, rows: dict) -> dict:
-    """``previous`` (:func:`_previous_statuses`) with the chapter's ``rows`` in its place,
-    so that regenerating one chapter leaves the summary's order as it was."""
-    out = {}
+    """``previous`` (:func:`_previous_statuses`) with the chapter's ``rows`` in its place
+    (the placeholder, or the first of its rows the summary already held, whichever comes
+    first), so that regenerating one chapter leaves the summary's order as it was."""
+    out, placed = {}, False
     for k, v in previous.items():
-        if k == chapter and v is None:
+        if not placed and (k in rows or (k == chapter and v is None)):
             out.update(rows)
-        elif k not in rows:
+            placed = True
+        elif k not in rows and not (k == chapter and v is None):
             out[k] = v
     return out
 

@@ -144,3 +144,18 @@ def test_one_chapter_rewritten_keeps_the_summary_order(tmp_path):
                                     ("b", "PASS")]
     fresh = _with_chapter(_previous_statuses(tmp_path, "z.md"), "z.md", {"z": "PASS"})
     assert list(fresh)[-1] == "z"
+
+
+def test_rows_the_chapter_file_does_not_list_keep_their_place(tmp_path):
+    """A chapter whose acceptance rows are not table rows of its own file (the
+    speed-accuracy chapter's 'Pareto plot + table' rows) keeps them where they stood, not
+    appended at the end of the summary."""
+    from ancf.reports.__main__ import _previous_statuses, _with_chapter
+    (tmp_path / "README.md").write_text(
+        "## Acceptance summary\n\n| check | status |\n|---|---|\n| a | PASS |\n"
+        "| s one | PASS |\n| s two | PASS |\n| b | PASS |\n")
+    (tmp_path / "s.md").write_text("no table rows\n")
+    merged = _with_chapter(_previous_statuses(tmp_path, "s.md"), "s.md",
+                           {"s one": "PASS", "s two": "FAIL"})
+    assert list(merged.items()) == [("a", "PASS"), ("s one", "PASS"), ("s two", "FAIL"),
+                                    ("b", "PASS")]
