@@ -1,10 +1,12 @@
 """Crowned pulleys centre an off-centre plate belt (issue 36 item 4) against the tensioned-
 span rule of :func:`ancf.checks.belt_tracking3d.crown_rule` (Eq. C5): the keys' defaults,
 the rule's scaling, and the run of :data:`ancf.checks.belt_tracking3d.CROWN_SETS` (both
-50 mm pulleys crowned 1 mm, every face 2 mm off the laid belt, 7 s at v = 1 m/s; about
-100 CPU s).  Seen: the rule's return to 10 % of the offset 2.40 s (tau 1.04 s), the run's
+50 mm pulleys crowned 1 mm, every face 2 mm off the laid belt, at v = 1 m/s: 3 s here,
+7 s in the chapter, whose stored rows the acceptance reads).  Seen: the rule's return to 10 % of the offset 2.40 s (tau 1.04 s), the run's
 6.30 s and 6.43 s (tau 2.74 s and 2.71 s): the belt centres, exponentially as the rule
 says, about 2.7 times slower (a miss, kept as a strict xfail)."""
+import csv
+
 import numpy as np
 import pytest
 
@@ -48,31 +50,54 @@ def test_crown_rule_scales_as_eq_c5():
     assert H == pytest.approx(1 / (k * k * L), rel=1e-12)
 
 
+#: the chapter's run (7 s, reports/data/belt3d_crown_span.csv, written by
+#: ``python -m ancf.reports --chapter belt3d.md``) and the shorter run computed here, s
+STORED = REPO / "reports" / "data" / "belt3d_crown_span.csv"
+SHORT_T_END = 3.0
+
+
+def _stored() -> list[dict]:
+    with open(STORED, encoding="utf-8") as f:
+        return [{k: (v if k == "pulley" else float(v)) for k, v in r.items()}
+                for r in csv.DictReader(f)]
+
+
 @pytest.mark.slow
 def test_crowned_pulleys_centre_the_belt():
-    """The run: both crowned pulleys' lateral_position_m come back within 10 % of the 2 mm
-    offset, the whole belt moving as one (their time constants within 5 %), each 4-sample
-    mean at most 1 % of y0 above the one 0.5 s before (a monotone return past 0.5 s); the
-    rule is the faster (its t10 below the run's)."""
-    rows = bt.crown_rows()
-    assert [r["pulley"] for r in rows] == ["driver", "driven"]
-    assert all(np.isfinite(r["run_t10_s"]) for r in rows), rows
-    assert rows[0]["run_tau_s"] == pytest.approx(rows[1]["run_tau_s"], rel=0.05)
-    out, _, desc = bt.crown_run()
-    t = bt.mean4(np.array(out["results"]["times"]))
-    y0 = desc.pulleys[2].params["face_offset_m"]
-    for k in (0, 2):
-        e = np.abs(bt.mean4(np.array(out["results"]["pulleys"][k]["lateral_position_m"])))
-        e = e[t >= 0.5]
+    """A 3 s run of the chapter's drive (about 55 CPU s against the chapter's 7 s, 150 s):
+    both crowned pulleys' lateral_position_m fall below 40 % of the 2 mm offset (seen
+    33 % and 35 %; uncrowned, the belt stays off-centre), the whole belt moving as one
+    (their time constants within 5 %), each 4-sample mean at most 1 % of y0 above the one
+    0.5 s before (a monotone return past 0.5 s); each time constant within 3 % of the
+    chapter's 7 s run (seen 0.5 %: the return is exponential, and the stored rows are
+    this code's), and the rule (Eq. C5) the faster."""
+    out, v, desc = bt.crown_run(t_end=SHORT_T_END)
+    rule = bt.crown_rule(desc, v)
+    times = np.array(out["results"]["times"])
+    t = bt.mean4(times)
+    stored = _stored()
+    assert [r["pulley"] for r in stored] == ["driver", "driven"]
+    taus = []
+    for k, row in zip((0, 2), stored):
+        y0 = desc.pulleys[k].params["face_offset_m"]
+        lateral = np.array(out["results"]["pulleys"][k]["lateral_position_m"], float)
+        e = np.abs(bt.mean4(lateral))[t >= 0.5]
+        assert e[-1] <= 0.4 * y0, (k, e[-1] / y0)
         assert np.all(e[50:] <= e[:-50] + 0.01 * y0)
-    assert all(r["t10_ratio"] > 1 for r in rows), rows
+        tau = bt.return_time(times, lateral, y0)["tau_s"]
+        assert tau == pytest.approx(row["run_tau_s"], rel=0.03)
+        assert rule["tau_s"] < tau
+        taus.append(tau)
+    assert taus[0] == pytest.approx(taus[1], rel=0.05)
 
 
-@pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason="the run returns about 2.7 times slower than the "
                    "tensioned-span rule (Eq. C5): 6.3 s against 2.4 s")
 def test_return_time_within_10_percent_of_the_rule():
-    """The acceptance: the simulated return to 10 % of the offset within 10 % of the
-    rule's time (:data:`ancf.checks.belt_tracking3d.CROWN`)."""
-    check = bt.crown_check(bt.crown_rows())
+    """The acceptance on the chapter's 7 s run (its stored rows, tied to this code by the
+    test above): the simulated return to 10 % of the offset within 10 % of the rule's time
+    (:data:`ancf.checks.belt_tracking3d.CROWN`); a run that never got there (NaN) fails too."""
+    rows = _stored()
+    assert all(np.isfinite(r["run_t10_s"]) for r in rows), rows
+    check = bt.crown_check(rows)
     assert check.passed, (check.value, check.tolerance)
