@@ -2,8 +2,8 @@
 span rule of :func:`ancf.checks.belt_tracking3d.crown_rule` (Eq. C5): the keys' defaults,
 the rule's scaling, and the run of :data:`ancf.checks.belt_tracking3d.CROWN_SETS` (both
 50 mm pulleys crowned 1 mm, every face 2 mm off the laid belt, at v = 1 m/s: 3 s here,
-7 s in the chapter, whose stored rows the acceptance reads).  Seen: the rule's return to 10 % of the offset 2.40 s (tau 1.04 s), the run's
-6.30 s and 6.43 s (tau 2.74 s and 2.71 s): the belt centres, exponentially as the rule
+7 s in the chapter, whose stored rows the acceptance reads).  Seen: the rule's return to
+10 % of the offset 2.40 s (tau 1.04 s), the run's 6.30 s and 6.43 s (tau 2.74 s and 2.71 s): the belt centres, exponentially as the rule
 says, about 2.7 times slower (a miss, kept as a strict xfail)."""
 import csv
 
@@ -64,7 +64,7 @@ def _stored() -> list[dict]:
 
 @pytest.mark.slow
 def test_crowned_pulleys_centre_the_belt():
-    """A 3 s run of the chapter's drive (about 55 CPU s against the chapter's 7 s, 150 s):
+    """A 3 s run of the chapter's drive (about 55 CPU s warm against the chapter's 7 s, 150 s):
     both crowned pulleys' lateral_position_m fall below 40 % of the 2 mm offset (seen
     33 % and 35 %; uncrowned, the belt stays off-centre), the whole belt moving as one
     (their time constants within 5 %), each 4-sample mean at most 1 % of y0 above the one
