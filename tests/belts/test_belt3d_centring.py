@@ -3,8 +3,9 @@ span rule of :func:`ancf.checks.belt_tracking3d.crown_rule` (Eq. C5): the keys' 
 the rule's scaling, and the run of :data:`ancf.checks.belt_tracking3d.CROWN_SETS` (both
 50 mm pulleys crowned 1 mm, every face 2 mm off the laid belt, at v = 1 m/s: 3 s here,
 7 s in the chapter, whose stored rows the acceptance reads).  Seen: the rule's return to
-10 % of the offset 2.40 s (tau 1.04 s), the run's 6.30 s and 6.43 s (tau 2.74 s and 2.71 s): the belt centres, exponentially as the rule
-says, about 2.7 times slower (a miss, kept as a strict xfail)."""
+10 % of the offset 2.40 s (tau 1.04 s), the run's 6.30 s and 6.43 s (tau 2.74 s and
+2.71 s): the belt centres, exponentially as the rule says, about 2.7 times slower (a miss,
+kept as a strict xfail)."""
 import csv
 
 import numpy as np
