@@ -14,6 +14,8 @@ Families (thesis equation numbers):
 * ``linear3d``     Eq. 4.22 (3D linear beam, 18 DOF)
 * ``cubic3d``      Eq. 4.25 (Dufva 3D belt element, 24 DOF: cubic in x, linear in y, z)
 * ``plate36``      Eqs 4.14-4.15 (thin plate, 36 DOF, incomplete cubic of Dmitrochenko)
+* ``cable3d``      the gradient-deficient cable of Gerstmayr and Shabana (2006), Chrono's
+  ``ChElementCableANCF`` (12 DOF: r, r_x per node, cubic in x)
 
 The numeric code used at run time is generated from these derivations into
 ``ancf/elements/_generated.py`` (``python -m analytic.shape_functions --write``);
@@ -74,6 +76,10 @@ FAMILIES = {
         (1, x, y, x**2, x * y, y**2, x**3, x**2 * y, x * y**2, y**3, x**3 * y, x * y**3),
         nodes=((0, 0), (a, 0), (a, b), (0, b)), node_dofs=((), (x,), (y,)),
         axial=((x, 0, a), (y, 0, b)), section=()),
+    "cable3d": Family(
+        "cable3d", 3, (x, y, z), (1, x, x**2, x**3),
+        nodes=((0, 0, 0), (l, 0, 0)), node_dofs=((), (x,)),
+        axial=((x, 0, l),), section=(y, z)),
 }
 
 
@@ -128,7 +134,8 @@ def mass_scalar(family: Family) -> sp.Matrix:
 
 # ----------------------------------------------------------------- code generation
 _DERIVS = {2: ("", "x", "y", "xx", "xy", "yy"), 3: ("", "x", "y", "z")}
-_EXTRA = {"cubic3d": ("xx",)}  # the belt element's centre-line curvature r_c,xx
+#: r_xx: the belt element's centre-line curvature r_c,xx, the cable's curvature
+_EXTRA = {"cubic3d": ("xx",), "cable3d": ("xx",)}
 
 
 def _lengths(family: Family) -> tuple:

@@ -187,4 +187,35 @@ def plate36_mass(a, b):
         [-137/12600*a*b**2, -1/600*a**2*b**2, -1/420*a*b**3, -29/6300*a*b**2, (1/900)*a**2*b**2, -1/840*a*b**3, -199/25200*a*b**2, (1/600)*a**2*b**2, (1/630)*a*b**3, -461/25200*a*b**2, -1/400*a**2*b**2, (1/315)*a*b**3]])
 
 PLATE36_MASS_ARGS = ('a', 'b')
-# generator stamp (sha256 of generator sources, SymPy version, text): a4cf77acdac1195ccd87bc05908687c101653062e2a1d008af675675bc50768b
+
+
+def cable3d_S(x, y, z, l):
+    _b = _broadcaster(x, y, z, l)
+    return np.stack([_b((l**3 - 3*l*x**2 + 2*x**3)/l**3), _b(x - 2*x**2/l + x**3/l**2), _b(x**2*(3*l - 2*x)/l**3), _b(x**2*(-l + x)/l**2)], axis=-1)
+
+def cable3d_x(x, y, z, l):
+    _b = _broadcaster(x, y, z, l)
+    return np.stack([_b((-6*l*x + 6*x**2)/l**3), _b(1 - 4*x/l + 3*x**2/l**2), _b(-2*x**2/l**3 + 2*x*(3*l - 2*x)/l**3), _b(x**2/l**2 + 2*x*(-l + x)/l**2)], axis=-1)
+
+def cable3d_y(x, y, z, l):
+    _b = _broadcaster(x, y, z, l)
+    return np.stack([_b(0), _b(0), _b(0), _b(0)], axis=-1)
+
+def cable3d_z(x, y, z, l):
+    _b = _broadcaster(x, y, z, l)
+    return np.stack([_b(0), _b(0), _b(0), _b(0)], axis=-1)
+
+def cable3d_xx(x, y, z, l):
+    _b = _broadcaster(x, y, z, l)
+    return np.stack([_b(-6*(l - 2*x)/l**3), _b(2*(-2 + 3*x/l)/l), _b(2*(3*l - 6*x)/l**3), _b(2*(-l + 3*x)/l**2)], axis=-1)
+
+def cable3d_mass(Q0_0, l):
+    """Exact scalar mass integrals m_ij = int S_i S_j dV (multiply by rho)."""
+    return np.array([
+        [(13/35)*Q0_0*l, (11/210)*Q0_0*l**2, (9/70)*Q0_0*l, -13/420*Q0_0*l**2],
+        [(11/210)*Q0_0*l**2, (1/105)*Q0_0*l**3, (13/420)*Q0_0*l**2, -1/140*Q0_0*l**3],
+        [(9/70)*Q0_0*l, (13/420)*Q0_0*l**2, (13/35)*Q0_0*l, -11/210*Q0_0*l**2],
+        [-13/420*Q0_0*l**2, -1/140*Q0_0*l**3, -11/210*Q0_0*l**2, (1/105)*Q0_0*l**3]])
+
+CABLE3D_MASS_ARGS = ('Q0_0', 'l')
+# generator stamp (sha256 of generator sources, SymPy version, text): f595b8d28c3cb90ef8d7fc4f3e398844bc22e9ad996dd4945e6426d886bb47dd
