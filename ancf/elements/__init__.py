@@ -7,7 +7,8 @@ beam (``linear3d``) and the thin plate (``plate36``); Chrono's ANCF family
 (``ancf3243``, ``ancf3333`` beams, ``ancf3443``, ``ancf3833`` shells, ``ancf3843`` brick:
 their shape functions on ``continuum3d``'s Green-Lagrange continuum, mass, gravity,
 internal force and its Jacobians checked against Chrono's stored matrices,
-``tests/data/chrono``; in the registry through ``chrono_element``); ``registry`` the one
+``tests/data/chrono``; in the registry through ``chrono_element``) and its gradient-deficient
+cable (``cable3d``); ``registry`` the one
 table of them (with the field at points), ``catalogue`` its views by use, ``contract`` what every
 element provides.  ``_*generated.py`` are written by the generators in ``analytic/``
 and imported only here.

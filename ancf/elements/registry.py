@@ -26,7 +26,7 @@ import numpy as np
 from ancf.elements import basis
 from ancf.elements.basis import family_shapes
 
-KINDS = ("beam", "plate", "belt", "shell", "solid")
+KINDS = ("beam", "plate", "belt", "shell", "solid", "cable")
 
 #: the physics an element can model; ``ancf recommend`` proposes only models providing the
 #: physics a question needs (``ancf.study.references.model_physics``)
@@ -114,8 +114,9 @@ class ElementType:
         return {k: p[k] for k in self.knobs if k in p}
 
     def directions(self) -> str:
-        """The family's reference directions: x, y of a plate, x, y[, z] of a beam."""
-        return "xy" if self.kind == "plate" else "xyz"[:self.dim]
+        """The family's reference directions: x, y of a plate, x of a cable (its one
+        slope), x, y[, z] of a beam."""
+        return {"plate": "xy", "cable": "x"}.get(self.kind, "xyz"[:self.dim])
 
     def _points(self, size, xi, eta, zeta) -> tuple:
         """Arguments of the evaluators at xi (and eta, zeta) in [0, 1]: beams on the
@@ -232,6 +233,13 @@ ELEMENTS = {t.name: t for t in (
                 physics=frozenset({"axial", "bending", "large-rotation", "inertia", "3D"}),
                 doc="Dufva and Shabana's thin plate, 36 coordinates"),
     *_CHRONO,
+    ElementType(name="cable3d", dim=3, kind="cable", family="cable3d", nodes=2,
+                strain="ancf.elements.cable3d",
+                material="E A on the Green axial strain, E I on the curvature |r_x x r_xx| / "
+                         "|r_x|^3 (Gerstmayr and Shabana 2006)",
+                path="ancf.elements.cable3d:Cable3D", variants=(),
+                physics=frozenset({"axial", "bending", "large-rotation", "inertia", "3D"}),
+                doc="Chrono's gradient-deficient cable ChElementCableANCF, 12 coordinates"),
 )}
 
 

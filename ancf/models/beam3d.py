@@ -21,8 +21,9 @@ from ancf.solvers.static import NewtonOptions, solve_static
 
 
 #: element name -> (p -> (element class, extra keyword arguments)): the registry's 3D
-#: elements of a two-node (beam) mesh
-BUILDERS = {name: t.build for name, t in ELEMENTS.items() if t.dim == 3 and t.nodes == 2}
+#: elements of a two-node (beam) mesh with a section's three directions (not the cable)
+BUILDERS = {name: t.build for name, t in ELEMENTS.items()
+            if t.dim == 3 and t.nodes == 2 and t.kind != "cable"}
 
 
 def model(p: dict):
