@@ -6,5 +6,6 @@ test pins: the belt element on its own (``belt_element``), the 2D belt drive
 (``chrono_matrices``), its textbook static cases and the shells' square plate
 (``chrono_elements``), the Princeton beam on its 3243/3333 beams against ANSYS
 (``chrono_princeton``), why the beams' u_z and the 3443's f4-f6 miss at the acceptance
-mesh (``chrono_locking``).
+mesh (``chrono_locking``), its stored time histories of the 3423 plate
+(``chrono_shell3423``) and of the spinning cable (``chrono_cable``).
 """
