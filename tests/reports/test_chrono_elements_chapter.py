@@ -9,6 +9,7 @@ from functools import lru_cache
 
 import pytest
 
+from ancf.checks import chrono_cable as ccb
 from ancf.checks import chrono_elements as ce
 from ancf.checks import chrono_locking as cl
 from ancf.checks import chrono_matrices as cm
@@ -144,8 +145,10 @@ def test_the_chapter_renders_its_rows_and_quick_names_its_checks(tmp_path):
     finally:
         output.configure(before.root, before.quick)
     assert set(status.values()) == {"PASS"}
-    assert list(quick) == list(status) + list(c34.NAMES)  # the 3423 history: not given here
-    solved = dict.fromkeys((*ce.solved_names(), *cl.NAMES, *cl.ANS_NAMES, *c34.NAMES),
+    # the 3423 and cable histories: not given here
+    assert list(quick) == list(status) + list(c34.NAMES) + list(ccb.NAMES)
+    solved = dict.fromkeys((*ce.solved_names(), *cl.NAMES, *cl.ANS_NAMES, *c34.NAMES,
+                            *ccb.NAMES),
                            QUICK_SKIPPED)
     assert {k: v for k, v in quick.items() if v == QUICK_SKIPPED} == solved
     assert {k: v for k, v in quick.items() if k not in solved} == {

@@ -20,6 +20,7 @@ from ancf.checks.thread_plate import NAME as THREAD_PLATE
 from ancf.checks.serpentine_3d import NAMES as SERPENTINE_3D
 from ancf.checks.belt_tracking3d import ALIGNED as TRACK_ALIGNED, NAMES as TRACK_NAMES
 from ancf.checks.belt2d import GAUSS_CHECK
+from ancf.checks.chrono_cable import NAMES as CABLE_NAMES
 from ancf.checks.chrono_shell3423 import NAMES as C3423_NAMES
 from ancf.checks.chrono_locking import ANS_NAMES
 from ancf.checks.belt_drives import SERPENTINE_NAMES
@@ -73,6 +74,10 @@ AGREES = {
     **{name: (("test_chrono_3423_history", test), QUICK_SKIPPED) for name, test in zip(
         C3423_NAMES, ("test_first_steps_within_chronos_tolerance",
                       "test_whole_history_misses_chronos_tolerance_but_not_the_bound"))},
+    # the spinning cable pendulum's history: skipped by --quick; the slow test file solves it
+    **{name: (("test_chrono_cable", test), QUICK_SKIPPED) for name, test in zip(
+        CABLE_NAMES, ("test_first_steps_within_chronos_tolerance_and_the_files_rounding",
+                      "test_whole_history_within_chronos_tolerance"))},
     "Princeton beam, 16 elements: every u_y within 1 % of ANSYS": (
         ("test_chrono_princeton", "test_princeton_against_ansys"), QUICK_SKIPPED),
     "Princeton beam, 2 Gauss points along the axis: every u_z within 0.5 % of ANSYS at 16 "
