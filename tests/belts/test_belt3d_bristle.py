@@ -285,6 +285,7 @@ def _balance(drive, desc, res, load):
     return T[:, 1].mean() - T[:, 2].mean(), moment / drive.radii[2]
 
 
+@pytest.mark.slow
 def test_span_tensions_balance_the_driven_pulley(runs):
     """With the bristle law the driven pulley's span tensions differ by its mean moment
     (load, bearing damping, inertia) over its radius within 3 % (seen 1.4 %; 12 plates
@@ -296,6 +297,7 @@ def test_span_tensions_balance_the_driven_pulley(runs):
     assert abs(abs(diff) - _balance(drive, desc, res, 1.1 * load)[1]) > 0.03 * balance
 
 
+@pytest.mark.slow
 def test_the_law_matters(runs):
     """The bristle run carries a deflection (its friction state) and its belt ends more than
     1 mm from the creep-rate run's (seen 2.2 mm); the creep-rate run balances the pulley too
@@ -308,6 +310,7 @@ def test_the_law_matters(runs):
     assert abs(abs(diff) - balance) <= 0.03 * balance, (diff, balance)
 
 
+@pytest.mark.slow
 def test_scene_reports_the_stateful_contact(runs, tmp_path):
     """``ancf run belt-drive`` on a plate36 file with the bristle law: its post-processing
     evaluates the contact on the march's friction state (post3d.pulley_moments,

@@ -249,6 +249,7 @@ def test_the_miss_is_the_belts_stretch(centring):
     assert all(np.isnan(r["simulated_s"]) for r in centring)
 
 
+@pytest.mark.slow
 def test_a_centred_belt_stays_on_the_crowns_top():
     """The example with face_offset_m = 0 (the belt centred on the crown; 0.2 s): by
     symmetry every pulley's lateral position and the crowned pulley's axial force stay

@@ -47,6 +47,7 @@ def _last_third(results, key: str) -> np.ndarray:
     return np.array(results["pulleys"][2][key], float)[t >= 2 * T_END / 3]
 
 
+@pytest.mark.slow
 def test_flanges_hold_the_walking_belt(runs):
     """Over the last third of the run the flanged belt's mean lateral position moves less
     than 10 % of the free belt's walk, and ends within half the free belt's offset."""
@@ -55,6 +56,7 @@ def test_flanges_hold_the_walking_belt(runs):
     assert abs(held[-1]) < 0.5 * abs(free[-1]), (held[-1], free[-1])
 
 
+@pytest.mark.slow
 def test_axial_force_picks_up_the_flange_force(runs):
     """The flanges push the belt back toward +p (it walks toward -p), and the pulley's
     axial force is its rim's friction along p (recomputed here from the contact points)

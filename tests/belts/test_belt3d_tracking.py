@@ -54,6 +54,7 @@ def test_axes_turn_as_defined(tilt, roll):
     assert np.array_equal(p[:2], [[0.0, 0.0, 1.0]] * 2)
 
 
+@pytest.mark.slow
 def test_aligned_drive_does_not_walk(runs):
     """Every pulley's drift below 1e-6 m per belt revolution (P / v); the output is valid
     JSON of the scene's schema.  A tilted pulley's drift is thousands of times that."""
@@ -64,6 +65,7 @@ def test_aligned_drive_does_not_walk(runs):
     assert abs(runs[0.5][2][2]) * period > 1e3 * 1e-6
 
 
+@pytest.mark.slow
 def test_tilted_pulley_walks_by_the_tracking_rule(runs):
     """Eq. 2 of ancf.belts.tracking3d: a positive tilt walks the belt toward -p, and no
     faster than v tan(tilt) (the rate while the entering span is straight; its turning only
@@ -78,6 +80,7 @@ def test_tilted_pulley_walks_by_the_tracking_rule(runs):
     assert rate[-1.0] == pytest.approx(-rate[1.0], rel=0.05)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("tilt", [0.5, 1.0])
 def test_entry_walks_by_the_tracking_rule(runs, tilt):
     """Eq. 2 at the entry: the entry point's drift speed is -v e . p averaged over the
@@ -96,6 +99,7 @@ def test_entry_walks_by_the_tracking_rule(runs, tilt):
     assert ep[0] == pytest.approx(np.sin(np.radians(tilt)), rel=1e-4)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("tilt", [0.5, 1.0])
 def test_entry_walk_follows_the_held_span_reference(tilt):
     """analytic/belt_tracking.py Eq. 3, the entering span (idler -> driven, L = 0.109 m on
@@ -115,6 +119,7 @@ def test_entry_walk_follows_the_held_span_reference(tilt):
     assert bt.LONG > bt.WINDOW[1]
 
 
+@pytest.mark.slow
 def test_roll_meets_the_belt_square(runs):
     """A 1 deg roll leaves d . p = 0: its entry point walks below 5 % of a 1 deg tilt's
     (seen 3 %)."""
@@ -124,6 +129,7 @@ def test_roll_meets_the_belt_square(runs):
     assert walk[0] < 0.05 * walk[1], walk
 
 
+@pytest.mark.slow
 def test_axial_force_is_reported_per_pulley(runs):
     """The aligned belt's axial contact force on each pulley vanishes against the tilted
     one's (the friction holding the belt on its walk)."""

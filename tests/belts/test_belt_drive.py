@@ -49,6 +49,7 @@ def test_smaller_creep_rate_factor_slips_more_at_120_rad_s():
     assert c.passed, c
 
 
+@pytest.mark.slow
 def test_span_tensions_carry_the_driven_torque():
     c = bc.torque_balance()
     assert c.passed, c

@@ -129,6 +129,7 @@ def test_hubloads_are_the_span_tensions_summed(serpentine):
     assert xy.shape[0] == len(r["axial_force_N"])
 
 
+@pytest.mark.slow
 def test_load_changes_the_state(serpentine, cli):
     """The alternator's load torque reaches its speed and its moment (a key that matters),
     and the largest load exceeds the file's."""
@@ -186,6 +187,7 @@ def test_running_modes_bad_input(cli, args, field):
     assert rc == 2 and err.startswith(f"error: {field}") and err.count("\n") == 1, err
 
 
+@pytest.mark.slow
 def test_friction_keys_change_the_answer(serpentine, cli):
     """mu sets the largest load (a wrap's capacity), nu_s the creep (the slip)."""
     import json
@@ -209,6 +211,7 @@ def test_steady_route_of_recommend():
     assert not no["applies"] and no["why"].startswith("friction.law")
 
 
+@pytest.mark.slow
 def test_a_centre_motion_is_done_before_the_belt_is_laid(serpentine, cli):
     """A pulley moved by ``centre_shift`` has its steady state on the moved drive: the belt
     is laid and pre-tensioned there (a shift laid on the unmoved path sank the belt into

@@ -63,6 +63,7 @@ def test_spectrum_finds_a_known_tone_between_bins():
     assert abs(fq.spectrum(t, y)[2] - 147.3) < 0.3
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("span", ["tight", "slack"])
 def test_belt_span_frequency_within_5_percent_of_the_moving_string(span):
     """belt2d's 120 rad/s case (1 s simulated, about 6 s CPU): the mid-span peak over

@@ -13,6 +13,8 @@ import sys
 import textwrap
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[2]
 
 #: a cached kernel using an NRT array, a reduction (numba.np) and a string hash, and an
@@ -88,6 +90,7 @@ def _expected(values) -> float:
     return sum(x * x for x in values) + 1.0
 
 
+@pytest.mark.slow
 def test_lean_load_reuses_the_cache_and_a_miss_compiles(tmp_path):
     """Rows (value, cache hits so far, misses so far, compiler tables loaded, inlined
     module imported, extensions scanned, runtime loaded from the cache, LLVM lock events

@@ -214,7 +214,13 @@ PAGES = {"thesis-table.md": check_thesis_table,
          "dask-sweep.md": check_dask_sweep}
 
 
-@pytest.mark.parametrize("page", list(PAGES))
+#: the pages whose run takes 5 s or more (own-drive 14 s, dask-sweep 11 s, cheapest-model 7 s
+#: warm): in the full tier only
+LONG_PAGES = ("own-drive.md", "cheapest-model.md", "dask-sweep.md")
+
+
+@pytest.mark.parametrize("page", [pytest.param(p, marks=pytest.mark.slow) if p in LONG_PAGES
+                                  else p for p in PAGES])
 def test_tutorial_runs_and_prints_what_it_says(page, tmp_path):
     out = run_page(page, tmp_path)
     PAGES[page](out, tmp_path)
