@@ -302,12 +302,18 @@ def _shell3423_figure(rows: dict) -> str:
     ax.set_ylabel("tip z [m]")
     ax.legend(fontsize=8)
     bx.plot(rows["t"], rows["paper"] - rows["file"], "C0-", lw=1)
-    for y in (c34.TOL, -c34.TOL):
+    return _save_history(fig, bx, c34.TOL, "chrono_elements_shell3423_history")
+
+
+def _save_history(fig, bx, tol: float, stem: str) -> str:
+    """Chrono's tolerance ±tol (m) on the difference axes bx, their labels; the figure saved
+    as ``stem`` (its path from the chapter)."""
+    for y in (tol, -tol):
         bx.axhline(y, color="k", ls="--", lw=0.8)
     bx.set_xlabel("t [s]")
     bx.set_ylabel("ours − Chrono [m]")
-    save_figure(fig, "chrono_elements_shell3423_history")
-    return "figures/chrono_elements_shell3423_history.png"
+    save_figure(fig, stem)
+    return f"figures/{stem}.png"
 
 
 def _shell3423_section(rows: dict) -> list:
@@ -372,13 +378,8 @@ def _cable_figure(rows: dict) -> str:
                 label=name)
     ax.set_ylabel("position [m] (grey: Chrono)")
     ax.legend(fontsize=8)
-    for y in (ccb.TOL, -ccb.TOL):
-        bx.axhline(y, color="k", ls="--", lw=0.8)
-    bx.set_xlabel("t [s]")
-    bx.set_ylabel("ours − Chrono [m]")
     bx.legend(fontsize=8)
-    save_figure(fig, "chrono_elements_cable_history")
-    return "figures/chrono_elements_cable_history.png"
+    return _save_history(fig, bx, ccb.TOL, "chrono_elements_cable_history")
 
 
 def _cable_section(rows: dict) -> list:
