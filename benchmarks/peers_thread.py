@@ -13,8 +13,8 @@ contact, against the file's 5 and 5: Exudyn's example integrates its cables with
 ``useReducedOrderIntegration=2`` and its contact over 2 segments per element; at 240
 elements the driven speed agrees with the file's quadrature to 5 digits and the span
 forces within 0.1 %) and the solver settings :data:`SOLVER` (``run.newton_accept=evaluated``,
-``run.damping_jacobian=rate``, ``run.refresh_ratio=0.2``, ``run.refresh=once``: the same
-equations, a cheaper Newton iteration).
+``run.damping_jacobian=rate``, ``run.refresh_ratio=0.2``, ``run.refresh=once``,
+``run.give_up=3``: the same equations, a cheaper Newton iteration).
 
 Measurement as in :mod:`benchmarks.peers`: one BLAS thread, OPENBLAS_CORETYPE /
 OPENBLAS_L2_SIZE unset, each side in a fresh process, one run each, ours first then
@@ -55,10 +55,11 @@ FILE = peers.ROOT / "examples" / "thread_benchmark.toml"
 #: our solver settings of the race: modified Newton accepting the last evaluated iterate,
 #: refactoring when an increment exceeds 0.2 of the one before, at most once per step
 #: unless an increment grows or is damped, the belt damping's strain-rate part of the iteration
-#: matrix only (the residual, the physics, are the file's; ancf.solvers.alpha_march,
+#: matrix only, a step cycling at a contact point's entry given up and halved at its third
+#: damped increment (the residual, the physics, are the file's; ancf.solvers.alpha_march,
 #: ancf.belts.forces)
 SOLVER = ("run.newton_accept=evaluated", "run.damping_jacobian=rate", "run.refresh_ratio=0.2",
-          "run.refresh=once")
+          "run.refresh=once", "run.give_up=3")
 #: our quadrature of the race: Gauss points per element of the elastic forces and of the contact
 QUADRATURE = ("belt.elastic_points=3", "contact.gauss_points=4")
 OURS = ("belt.n_elements=%d" % N_ELEMENTS, "run.dt=%g" % STEP, *QUADRATURE, *SOLVER)
@@ -71,7 +72,8 @@ SETTINGS = {
             "its factors across steps, refactored when an increment exceeds 0.2 of the one "
             "before, at most once per step unless an increment grows or is damped, the last "
             "evaluated iterate accepted, the damping's strain-rate Jacobian only in the "
-            "iteration matrix; frictionless settling first)",
+            "iteration matrix, a step cycling at a contact point's entry given up and "
+            "halved at its third damped increment; frictionless settling first)",
     "exudyn": f"benchmarks/peers_thread_exudyn.py: beltDriveReevingSystem.py's model, "
               f"{N_ELEMENTS} ANCFCable2D elements, {SEGMENTS} contact segments per element, "
               f"TrapezoidalIndex2 h = {STEP:g} s, modified Newton, EigenSparse, one thread, "

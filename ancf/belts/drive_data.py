@@ -75,7 +75,8 @@ A drive file (TOML) has a top-level ``gravity = [g_x, g_y]`` (m/s^2) and these t
 * ``[contact]``: the penalty ``k_p`` (N/m^2), ``c_p`` (N s/m^2) and ``gauss_points``.
 * ``[run]``: ``t_end``, ``dt``, ``output_dt``, ``steady_window`` (s: the averaging window
   before t_end), ``start`` (``settled`` or ``laid``), ``rho_inf``, ``newton_tol``,
-  ``max_steps``, modified Newton's ``refresh_ratio``, ``newton_accept`` and ``refresh``
+  ``max_steps``, modified Newton's ``refresh_ratio``, ``newton_accept``, ``refresh`` and
+  ``give_up``
   (:mod:`ancf.solvers.alpha_march`; their defaults are the march's defaults) and the belt
   damping's part of the iteration matrix ``damping_jacobian``
   (:data:`ancf.belts.forces.DAMPING_JACOBIANS`).
@@ -430,6 +431,10 @@ RUN = _keys(
           "refresh_ratio of the one before refactors the iteration matrix; 'once', only if it "
           "was not refactored within the step yet (a growing or damped increment always does)",
           choices=REFRESH),
+    Param("give_up", 0, int, doc="modified Newton: a step whose residual has not halved by "
+          "its give_up-th damped increment (a contact point cycling across the jump of its "
+          "damping force) is given up and halved at once; 0: never (it iterates to its "
+          "limit); the Lagrangian march's", lo=0, hi=12),
     Param("damping_jacobian", DAMPING_JACOBIANS[0], str, doc="the belt damping's part of the "
           "iteration matrix: 'exact', or 'rate' (dQ_d/dz' only, dQ_d/dz left out: the same "
           "residual, a cheaper matrix)", choices=DAMPING_JACOBIANS),

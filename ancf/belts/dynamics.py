@@ -39,8 +39,9 @@ class BeltOptions:
     refresh_ratio: float = REFRESH_RATIO  # modified Newton: refactor when |d_k| > it |d_k-1|
     newton_accept: str = "applied"  # the converged state (ancf.solvers.alpha_march.ACCEPT)
     refresh: str = "contraction"  # when it refactors (ancf.solvers.alpha_march.REFRESH)
+    give_up: int = 0             # damped increments before a cycling step gives up (0: never)
     max_iter: int = 12
-    max_halvings: int = 4
+    max_halvings: int = 5
     max_steps: int = 400_000
     q_limit: float = 1e3         # blow-up: |z|_inf above q_limit (1 + |z0|_inf)
 
@@ -78,7 +79,8 @@ class _March:
 
     def run(self, st, k, k_stop, slot, out_x, out_v, limit):
         o = self.opt
-        newton = newton_settings(o.newton_tol, o.refresh_ratio, o.newton_accept, o.refresh)
+        newton = newton_settings(o.newton_tol, o.refresh_ratio, o.newton_accept, o.refresh,
+                                 o.give_up)
         return march(self.ts, k, k_stop, st, self.system, self.hf, self.cf, self.count, newton,
                      o.max_iter, limit, o.max_steps, slot, out_x, out_v)
 

@@ -207,7 +207,7 @@ def run(p: dict) -> SceneResult:
     x0, pre = settle(drive) if r["start"] == "settled" else (None, None)
     opt = BeltOptions(dt=r["dt"], rho_inf=r["rho_inf"], newton_tol=r["newton_tol"],
                       refresh_ratio=r["refresh_ratio"], newton_accept=r["newton_accept"],
-                      refresh=r["refresh"],
+                      refresh=r["refresh"], give_up=r["give_up"],
                       max_steps=r["max_steps"])
     march = simulate if desc.belt["formulation"] == "lagrangian" else _ale
     res = march(drive, bc.times(r), opt, x0=x0 if pre is None or pre.converged else None,

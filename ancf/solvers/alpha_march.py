@@ -14,7 +14,9 @@ with beta' = h^2 beta (1 - alpha_f) / (1 - alpha_m), gamma' = h gamma (1 - alpha
 residual r(acc1) = M acc1 + f(q_{n+1}, q'_{n+1}, t_{n+1}):
 
 * the iteration matrix and its factors are kept across iterations and steps; they are
-  refreshed (new matrix, new factors) when there are none, the step size changed, an
+  refreshed (new matrix, new factors) when there are none, the step size changed (by
+  more than the system's relative ``step_rtol`` where it has that field, :func:`step_rtol`;
+  exactly otherwise), an
   increment fails to contract (|d_k| > refresh_ratio |d_{k-1}|, :data:`REFRESH_RATIO`
   unless the settings say otherwise) or was damped; with ``refresh`` ``once``
   (:data:`REFRESH`) an increment that contracts too slowly refreshes them only if they
@@ -31,7 +33,12 @@ residual r(acc1) = M acc1 + f(q_{n+1}, q'_{n+1}, t_{n+1}):
   differ by that increment, within the tolerance;
 * a step that fails with kept factors is retried once with fresh ones (pivoted); one
   that fails with fresh factors ends the march with NEWTON_FAILED, the state at the
-  step's start and no factors, and the caller takes it with smaller steps;
+  step's start and no factors, and the caller takes it with smaller steps.  With
+  ``give_up`` = g > 0 (:func:`newton_settings`; 0, never, the default) a step gives up
+  sooner: at its g-th damped increment if |r| is still above half its value after the
+  first (a contact point switching back and forth across a jump of its force, a cycle
+  no damping breaks at this step size: the 2D belt's entry damping c_p d'), and
+  without the pivoted retry once it had refactored unpivoted and still failed;
 * the march also ends on the step budget (BUDGET), non-finite coordinates
   (NON_FINITE) or coordinates above ``limit`` (BLOW_UP), and stores the states after
   the steps it is asked to keep (``slot``).
@@ -58,6 +65,7 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit
+from numba.extending import overload
 
 from ancf.common.dispatch import as_struct
 from ancf.common.leaf import leaf
@@ -66,6 +74,7 @@ DONE, NEWTON_FAILED, NON_FINITE, BLOW_UP, BUDGET = 0, 1, 2, 3, 4
 #: contraction ratio above which the kept iteration matrix is refreshed (the default)
 REFRESH_RATIO = 0.5
 MAX_BACKTRACKS = 8  # trial lengths 1, 1/2, ... 1/128 of a Newton increment
+CONVERGED, FAILED, GIVEN_UP = 0, 1, 2  # a step's outcome (_step)
 #: the state a converged step takes (module docstring), the first the default
 ACCEPT = ("applied", "evaluated")
 #: when an increment that contracts too slowly refreshes the kept matrix (module
@@ -74,17 +83,36 @@ REFRESH = ("contraction", "once")
 
 
 def newton_settings(tol: float, refresh_ratio: float = REFRESH_RATIO,
-                    accept: str = ACCEPT[0], refresh: str = REFRESH[0]) -> np.ndarray:
+                    accept: str = ACCEPT[0], refresh: str = REFRESH[0],
+                    give_up: int = 0) -> np.ndarray:
     """The march's Newton settings [tol, refresh_ratio, accept's index in ACCEPT,
-    refresh's index in REFRESH] (module docstring); ValueError naming a setting out of its
-    range."""
+    refresh's index in REFRESH, give_up] (module docstring); ValueError naming a setting
+    out of its range."""
     if not 0.0 < refresh_ratio < 1.0:
         raise ValueError(f"refresh_ratio must be in (0, 1) (got {refresh_ratio!r})")
+    if not 0 <= give_up <= 12:
+        raise ValueError(f"give_up must be in [0, 12] (got {give_up!r})")
     for name, value, allowed in (("accept", accept, ACCEPT), ("refresh", refresh, REFRESH)):
         if value not in allowed:
             raise ValueError(f"{name} must be one of {', '.join(allowed)} (got {value!r})")
     return np.array([tol, refresh_ratio, float(ACCEPT.index(accept)),
-                     float(REFRESH.index(refresh))])
+                     float(REFRESH.index(refresh)), float(give_up)])
+
+
+def step_rtol(system) -> float:
+    """The relative change of the step size (-) up to which the kept factors still belong
+    to it: the system's field ``step_rtol`` where it has one (step times that are sums of
+    equal steps differ from them by rounding, by far less than any halving), else 0 (any
+    change refreshes them)."""
+    raise NotImplementedError("compiled code only")
+
+
+@overload(step_rtol, inline="always")
+def _step_rtol(system):
+    names = getattr(system, "field_dict", None) or getattr(system, "fields", ())
+    if "step_rtol" in names:
+        return lambda system: system.step_rtol
+    return lambda system: 0.0
 
 
 def system_prepare(system, k):
@@ -188,10 +216,12 @@ def _take(acc1, st, h, cf, x1, v1, a1):
 
 @njit(cache=True)
 def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
-    """One step of size h ending at step time index k; True on convergence."""
+    """One step of size h ending at step time index k: CONVERGED, FAILED, or GIVEN_UP (a
+    failure that fresh factors would repeat: ``give_up``, module docstring)."""
     x, v, acc, a = st
     am, af, gamma, beta = cf
     tol, ratio, evaluated, once = newton[0], newton[1], newton[2] == 1.0, newton[3] == 1.0
+    give_up = int(newton[4])
     bp = h * h * beta * (1 - af) / (1 - am)
     gp = h * gamma * (1 - af) / (1 - am)
     system_prepare(system, k)
@@ -199,9 +229,9 @@ def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
     r, rt = np.zeros(acc.size), np.zeros(acc.size)
     m, from_start, damped, moving = system_tests(system)
     evaluated = evaluated and damped
-    refresh = fresh or hf[0] != h
+    refresh = fresh or not abs(hf[0] - h) <= step_rtol(system) * h  # nan: no factors
     x1, v1, a1 = np.empty(acc.size), v.copy(), np.empty(acc.size)  # at the last evaluation
-    have_r, d_prev, refreshed = False, np.inf, False
+    have_r, d_prev, refreshed, damped_n, r_first = False, np.inf, False, 0, np.inf
     for _ in range(max_iter):
         if not have_r:
             _evaluate(system, acc1, st, h, k, cf, bp, gp, refresh, count, r, moving, x1, v1, a1)
@@ -210,7 +240,7 @@ def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
             count[2] += 1
             if not system_factor(system, bp, fresh):
                 hf[0] = np.nan
-                return False
+                return FAILED
             hf[0] = h
             refresh, refreshed = False, True
         d = -r
@@ -219,31 +249,37 @@ def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
         if evaluated and _converged(bp, np.max(np.abs(d[:m])), 1.0, d, x if from_start else x1,
                                     m, tol):
             _take(acc1, st, h, cf, x1, v1, a1)  # the evaluated iterate, r its residual
-            return True
+            return CONVERGED
         lam = 1.0
         if damped:
             lam = _backtrack(system, acc1, d, st, h, k, cf, bp, gp, count, r, rt, moving, x1, v1, a1)
             r[:] = rt
             have_r = True
+            if lam < 1.0:
+                damped_n += 1
+                if damped_n == 1:
+                    r_first = np.sqrt(np.dot(r, r))
+            if 0 < give_up <= damped_n and np.sqrt(np.dot(r, r)) > 0.5 * r_first:
+                return GIVEN_UP if refreshed else FAILED
         if lam == 1.0:
             acc1 += d
         else:
             acc1 += lam * d
         dn = lam * np.max(np.abs(d[:m]))
         if not np.isfinite(dn):
-            return False
+            return FAILED
         if not evaluated and _converged(bp, dn, lam, d, x if from_start else x1, m, tol):
             if lam == 0.5 ** MAX_BACKTRACKS:  # backtracking ran out: last residual elsewhere
                 _evaluate(system, acc1, st, h, k, cf, bp, gp, False, count, rt, moving, x1, v1,
                           a1)
             _take(acc1, st, h, cf, x1, v1, a1)
-            return True
+            return CONVERGED
         if (dn > ratio * d_prev and not (once and refreshed and dn <= d_prev)) or lam < 1.0:
             refresh = True
             if have_r:
                 _evaluate(system, acc1, st, h, k, cf, bp, gp, True, count, r, moving, x1, v1, a1)
         d_prev = dn
-    return False
+    return GIVEN_UP if give_up > 0 and refreshed else FAILED
 
 
 @njit(cache=True)
@@ -263,11 +299,14 @@ def march(ts, k, k_stop, st, system, hf, cf, count, newton, max_iter, limit, max
             backup[i][:] = st[i]
         ok = False
         for attempt in range(2):  # kept factors, then fresh ones: one _step compilation
-            ok = _step(h, k + 1, st, system, hf, cf, count, newton, max_iter, attempt == 1)
+            outcome = _step(h, k + 1, st, system, hf, cf, count, newton, max_iter, attempt == 1)
+            ok = outcome == CONVERGED
             if ok:
                 break
             for i in range(4):
                 st[i][:] = backup[i]
+            if outcome == GIVEN_UP:
+                break
         if not ok:
             hf[0] = np.nan
             return NEWTON_FAILED, k

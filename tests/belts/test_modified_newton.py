@@ -22,13 +22,15 @@ import pytest
 
 from ancf.belts.drive_file import load
 from ancf.belts.drive_model import build
-from ancf.belts.dynamics import BeltOptions, _March
+from ancf.belts.dynamics import BeltOptions, _halved, _March
 from ancf.belts.forces import gather
 from ancf.belts.pretension import settle
+from ancf.belts.system import STEP_RTOL
 from ancf.elements.dufva2d import damping_forces, damping_forces_rate
 from ancf.common.params import InputError
 from ancf.common.paths import REPO
-from ancf.solvers.alpha_march import ACCEPT, DONE, REFRESH, REFRESH_RATIO, newton_settings
+from ancf.solvers.alpha_march import (ACCEPT, DONE, NEWTON_FAILED, REFRESH, REFRESH_RATIO,
+                                      newton_settings)
 
 THREAD = REPO / "examples" / "thread_benchmark.toml"
 STEP, STEPS, TOL = 5e-5, 12, 1e-7
@@ -99,13 +101,15 @@ def test_defaults_are_the_marchs():
     assert (d.run["refresh_ratio"], d.run["newton_accept"]) == (REFRESH_RATIO, ACCEPT[0])
     assert (BeltOptions().refresh_ratio, BeltOptions().newton_accept) == (REFRESH_RATIO, ACCEPT[0])
     assert d.run["refresh"] == REFRESH[0] and BeltOptions().refresh == REFRESH[0]
-    assert newton_settings(1e-7).tolist() == [1e-7, REFRESH_RATIO, 0.0, 0.0]
+    assert d.run["give_up"] == 0 and BeltOptions().give_up == 0
+    assert newton_settings(1e-7).tolist() == [1e-7, REFRESH_RATIO, 0.0, 0.0, 0.0]
 
 
 @pytest.mark.parametrize("item, message", [
     ("run.refresh_ratio=1.0", r"run.refresh_ratio.*out of range.*\[0.1, 0.95\]"),
     ("run.refresh_ratio=0", r"run.refresh_ratio.*out of range"),
     ("run.newton_accept=last", r"run.newton_accept.*applied, evaluated"),
+    ("run.give_up=13", r"run.give_up.*out of range.*\[0, 12\]"),
     ("run.refresh=twice", r"run.refresh.*contraction, once"),
     ("run.damping_jacobian=none", r"run.damping_jacobian.*exact, rate")])
 def test_bad_settings_are_one_line(item, message):
@@ -146,3 +150,76 @@ def test_the_rate_damping_jacobian_is_the_exact_kernels_rate_part(bending):
     damping_forces(E, V, data, damping, False, g3, K, C)
     assert g3.tobytes() == g.tobytes()
     assert build(load(THREAD)).kernel().damping_jacobian == 0
+
+
+def test_steps_unequal_by_rounding_keep_the_factors():
+    """Step times k h differ from their neighbours by rounding (h = ts[k + 1] - ts[k] is not
+    one value): a 2D drive's march keeps its factors across them (BeltSystem.step_rtol,
+    ancf.belts.system.STEP_RTOL) where exact comparison refactors at most changes, and the
+    two runs stay within twice the setting's bound per step (each step within tol (1 + |z|)
+    / (1 - rho) of the exact one)."""
+    drive = build(load(THREAD, ["belt.n_elements=30"]))
+    ts = np.arange(STEPS + 1) * STEP
+    assert np.unique(np.diff(ts)).size > 1  # the rounding the rule is for
+    opt = BeltOptions(dt=STEP, newton_tol=TOL, **SETTINGS["once"])
+    kept, exact = _March(drive, opt, ts, 1), _March(drive, opt, ts, 1)
+    assert kept.system.step_rtol == STEP_RTOL > 0
+    exact.system = exact.system._replace(step_rtol=0.0)
+    x, pre = settle(drive)
+    assert pre.converged
+    v = np.zeros_like(x)
+    a = kept.initial_acceleration(x, v)
+    states = []
+    for m in (kept, exact):
+        st = (x.copy(), v.copy(), a.copy(), a.copy())
+        drive.z[:] = 0.0
+        dummy = np.zeros((1, x.size))
+        slot = np.full(ts.size, -1, dtype=np.int64)
+        assert m.run(st, 0, STEPS, slot, dummy, dummy, 1e9)[0] == DONE
+        states.append(st[0])
+    assert kept.count[2] < exact.count[2], (kept.count[2], exact.count[2])
+    scale = TOL * (1 + np.max(np.abs(x[: drive.n]))) / (1 - REFRESH_RATIO)
+    assert np.max(np.abs(states[0] - states[1])) <= 2 * STEPS * scale
+
+
+@pytest.mark.slow
+def test_give_up_halves_a_cycling_step_sooner_to_the_same_state():
+    """The THREAD race's drive (240 elements, 1e-4 s, the race's Newton settings): the first
+    step whose Newton iteration fails (a contact point entering a pulley, its force jumping by
+    c_p d') is taken again from the same state with ``give_up`` 3 and 0 (never): both end
+    by halving; giving up costs at most half the residuals, and the two states agree within
+    twice the setting's bound per substep (2^max_halvings of them)."""
+    drive = build(load(THREAD, ["belt.n_elements=240", "belt.elastic_points=3",
+                                "contact.gauss_points=4", "run.damping_jacobian=rate"]))
+    ts = np.arange(3001) * 1e-4
+    opts = [BeltOptions(dt=1e-4, newton_tol=TOL, give_up=g, **SETTINGS["once"]) for g in (3, 0)]
+    m = _March(drive, opts[0], ts, 1)
+    x, pre = settle(drive)
+    v = np.zeros_like(x)
+    a = m.initial_acceleration(x, v)
+    st, dummy = (x, v, a, a.copy()), np.zeros((1, x.size))
+    slot = np.full(ts.size, -1, dtype=np.int64)
+    drive.z[:] = 0.0
+    status, k = m.run(st, 0, ts.size - 1, slot, dummy, dummy, 1e9)
+    assert status == NEWTON_FAILED, "no cycling step in the first 0.3 s"
+    start, z0, h0 = tuple(c.copy() for c in st), drive.z.copy(), drive.h[0]
+    states, residuals = [], []
+    for opt in opts:
+        mq = _March(drive, opt, ts, 1)
+        s = tuple(c.copy() for c in start)
+        drive.z[:], drive.h[0] = z0, h0
+        status, _ = mq.run(s, k, k + 1, slot, dummy, dummy, 1e9)
+        assert status == NEWTON_FAILED
+        assert _halved(mq, s, ts[k], ts[k + 1], 1, 1e9)
+        states.append(s[0])
+        residuals.append(mq.count[0])
+    assert residuals[0] <= 0.5 * residuals[1], residuals
+    scale = TOL * (1 + np.max(np.abs(x[: drive.n]))) / (1 - REFRESH_RATIO)
+    assert np.max(np.abs(states[0] - states[1])) <= 2 * 2 ** opts[0].max_halvings * scale
+
+
+def test_give_up_is_a_drive_file_key_the_march_reads():
+    """``run.give_up`` reaches the march's settings (its range: the error-line cases)."""
+    assert load(THREAD).run["give_up"] == 0
+    assert load(THREAD, ["run.give_up=3"]).run["give_up"] == 3
+    assert newton_settings(1e-7, give_up=3)[4] == 3.0
