@@ -41,7 +41,7 @@ class BeltOptions:
     refresh: str = "contraction"  # when it refactors (ancf.solvers.alpha_march.REFRESH)
     give_up: int = 0             # damped increments before a cycling step gives up (0: never)
     max_iter: int = 12
-    max_halvings: int = 5
+    max_halvings: int = 4
     max_steps: int = 400_000
     q_limit: float = 1e3         # blow-up: |z|_inf above q_limit (1 + |z0|_inf)
 

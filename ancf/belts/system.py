@@ -45,7 +45,7 @@ import numpy as np
 from numba import njit
 
 from ancf.belts import friction
-from ancf.belts.forces import Drive2D, evaluate
+from ancf.belts.forces import evaluate
 from ancf.belts.pulleys import RESISTING, load_records
 from ancf.common.dispatch import as_struct, implements
 from ancf.solvers import banded
@@ -53,10 +53,6 @@ from ancf.solvers.alpha_march import (system_accept, system_factor, system_prepa
                                       system_residual, system_solve, system_tests)
 
 PAIRS = 5  # the counter of contact pairs
-#: a 2D drive's kept factors serve steps within this relative change of theirs: the step
-#: times' rounding (h = ts[k + 1] - ts[k] of equal steps differs from step to step by up to
-#: ~1e-11 h; 1850 of 3000 THREAD steps at 1e-4 s) no longer refreshes them, a halving does
-STEP_RTOL = 1e-6
 
 
 class BeltSystem(NamedTuple):
@@ -84,8 +80,6 @@ class BeltSystem(NamedTuple):
     corner: np.ndarray   # work: (k, k) the corner's force part
     schur: np.ndarray    # work: (k, k) the Schur complement, then its LU
     spiv: np.ndarray     # work: (k,) its pivots
-    step_rtol: float = 0.0  # relative change of the step that keeps the factors
-    #                      (ancf.solvers.alpha_march.step_rtol): STEP_RTOL for 2D drives
 
 
 def belt_system(drive, ts, nslots: int = 0, mean_from: float = np.inf) -> BeltSystem:
@@ -95,7 +89,6 @@ def belt_system(drive, ts, nslots: int = 0, mean_from: float = np.inf) -> BeltSy
     from ``mean_from`` (s; inf: none)."""
     n, k = drive.n, drive.k
     kernel = drive.kernel()
-    planar = isinstance(kernel, Drive2D)
     shape = (0, 0, 0, 0) if kernel.z is None else (nslots, *kernel.z.shape[1:])
     return BeltSystem(drive=kernel, Mb=drive.Mb, mass_rows=mass_rows(drive.Mb, drive.pattern.kl),
                       kl=drive.pattern.kl, tabs=drive.laws(ts), loads=loads_of(drive),
@@ -105,8 +98,7 @@ def belt_system(drive, ts, nslots: int = 0, mean_from: float = np.inf) -> BeltSy
                       sums=np.zeros((3, kernel.radii.size)), S=drive.pattern.zeros_matrix(),
                       piv=np.zeros(n, dtype=np.int64), U=np.zeros((k, n)), row=np.zeros((k, n)),
                       col=np.zeros((k, n)), corner=np.zeros((k, k)), schur=np.zeros((k, k)),
-                      spiv=np.zeros(k, dtype=np.int64),
-                      step_rtol=STEP_RTOL if planar else 0.0)
+                      spiv=np.zeros(k, dtype=np.int64))
 
 
 def loads_of(drive) -> np.ndarray:

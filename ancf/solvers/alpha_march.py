@@ -14,9 +14,7 @@ with beta' = h^2 beta (1 - alpha_f) / (1 - alpha_m), gamma' = h gamma (1 - alpha
 residual r(acc1) = M acc1 + f(q_{n+1}, q'_{n+1}, t_{n+1}):
 
 * the iteration matrix and its factors are kept across iterations and steps; they are
-  refreshed (new matrix, new factors) when there are none, the step size changed (by
-  more than the system's relative ``step_rtol`` where it has that field, :func:`step_rtol`;
-  exactly otherwise), an
+  refreshed (new matrix, new factors) when there are none, the step size changed, an
   increment fails to contract (|d_k| > refresh_ratio |d_{k-1}|, :data:`REFRESH_RATIO`
   unless the settings say otherwise) or was damped; with ``refresh`` ``once``
   (:data:`REFRESH`) an increment that contracts too slowly refreshes them only if they
@@ -65,7 +63,6 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit
-from numba.extending import overload
 
 from ancf.common.dispatch import as_struct
 from ancf.common.leaf import leaf
@@ -97,22 +94,6 @@ def newton_settings(tol: float, refresh_ratio: float = REFRESH_RATIO,
             raise ValueError(f"{name} must be one of {', '.join(allowed)} (got {value!r})")
     return np.array([tol, refresh_ratio, float(ACCEPT.index(accept)),
                      float(REFRESH.index(refresh)), float(give_up)])
-
-
-def step_rtol(system) -> float:
-    """The relative change of the step size (-) up to which the kept factors still belong
-    to it: the system's field ``step_rtol`` where it has one (step times that are sums of
-    equal steps differ from them by rounding, by far less than any halving), else 0 (any
-    change refreshes them)."""
-    raise NotImplementedError("compiled code only")
-
-
-@overload(step_rtol, inline="always")
-def _step_rtol(system):
-    names = getattr(system, "field_dict", None) or getattr(system, "fields", ())
-    if "step_rtol" in names:
-        return lambda system: system.step_rtol
-    return lambda system: 0.0
 
 
 def system_prepare(system, k):
@@ -229,7 +210,7 @@ def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
     r, rt = np.zeros(acc.size), np.zeros(acc.size)
     m, from_start, damped, moving = system_tests(system)
     evaluated = evaluated and damped
-    refresh = fresh or not abs(hf[0] - h) <= step_rtol(system) * h  # nan: no factors
+    refresh = fresh or hf[0] != h
     x1, v1, a1 = np.empty(acc.size), v.copy(), np.empty(acc.size)  # at the last evaluation
     have_r, d_prev, refreshed, damped_n, r_first = False, np.inf, False, 0, np.inf
     for _ in range(max_iter):

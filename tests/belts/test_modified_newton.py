@@ -25,7 +25,6 @@ from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, _halved, _March
 from ancf.belts.forces import gather
 from ancf.belts.pretension import settle
-from ancf.belts.system import STEP_RTOL
 from ancf.elements.dufva2d import damping_forces, damping_forces_rate
 from ancf.common.params import InputError
 from ancf.common.paths import REPO
@@ -150,36 +149,6 @@ def test_the_rate_damping_jacobian_is_the_exact_kernels_rate_part(bending):
     damping_forces(E, V, data, damping, False, g3, K, C)
     assert g3.tobytes() == g.tobytes()
     assert build(load(THREAD)).kernel().damping_jacobian == 0
-
-
-def test_steps_unequal_by_rounding_keep_the_factors():
-    """Step times k h differ from their neighbours by rounding (h = ts[k + 1] - ts[k] is not
-    one value): a 2D drive's march keeps its factors across them (BeltSystem.step_rtol,
-    ancf.belts.system.STEP_RTOL) where exact comparison refactors at most changes, and the
-    two runs stay within twice the setting's bound per step (each step within tol (1 + |z|)
-    / (1 - rho) of the exact one)."""
-    drive = build(load(THREAD, ["belt.n_elements=30"]))
-    ts = np.arange(STEPS + 1) * STEP
-    assert np.unique(np.diff(ts)).size > 1  # the rounding the rule is for
-    opt = BeltOptions(dt=STEP, newton_tol=TOL, **SETTINGS["once"])
-    kept, exact = _March(drive, opt, ts, 1), _March(drive, opt, ts, 1)
-    assert kept.system.step_rtol == STEP_RTOL > 0
-    exact.system = exact.system._replace(step_rtol=0.0)
-    x, pre = settle(drive)
-    assert pre.converged
-    v = np.zeros_like(x)
-    a = kept.initial_acceleration(x, v)
-    states = []
-    for m in (kept, exact):
-        st = (x.copy(), v.copy(), a.copy(), a.copy())
-        drive.z[:] = 0.0
-        dummy = np.zeros((1, x.size))
-        slot = np.full(ts.size, -1, dtype=np.int64)
-        assert m.run(st, 0, STEPS, slot, dummy, dummy, 1e9)[0] == DONE
-        states.append(st[0])
-    assert kept.count[2] < exact.count[2], (kept.count[2], exact.count[2])
-    scale = TOL * (1 + np.max(np.abs(x[: drive.n]))) / (1 - REFRESH_RATIO)
-    assert np.max(np.abs(states[0] - states[1])) <= 2 * STEPS * scale
 
 
 @pytest.mark.slow

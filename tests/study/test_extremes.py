@@ -123,10 +123,8 @@ def _belt_ends(workdir):
 def test_belt_contact_extremes_end_in_a_result_or_a_diagnosis(workdir):
     """Soft penalty (k_p = 1e4): the belt sinks into the pulleys by more than its
     pre-stretch per wrap and slips (today 83 %); tiny nu_s (1e2): slip (today 85 %);
-    k_p = 1e10 and nu_s = 1e7: not converged, with the reason: Newton fails even at dt/32
-    (nu_s = 1e7 today at t = 0.0595 s, during the ramp), or the march reaches t_end with
-    the belt off its path, a span's mean tension undefined (k_p = 1e10 today; with steps
-    down to dt/16 Newton failed at t = 0.257 s)."""
+    k_p = 1e10 and nu_s = 1e7: Newton fails even at dt/16 (today at t = 0.257 s and
+    0.0528 s, during the ramp)."""
     df = _belt_ends(workdir)
     soft, stiff = df[df["k_p"] == 1e4].iloc[0], df[df["k_p"] == 1e10].iloc[0]
     slow, sticky = df[df["nu_s"] == 1e2].iloc[0], df[df["nu_s"] == 1e7].iloc[0]
@@ -137,7 +135,7 @@ def test_belt_contact_extremes_end_in_a_result_or_a_diagnosis(workdir):
     assert slow["status"] == "ok" and slow["diagnosis"].startswith("slip") and slow["error"] > 0.5
     for r in (stiff, sticky):
         assert r["status"] == "not-converged" and math.isnan(r["error"])
-        assert r["diagnosis"].startswith(("Newton failed at t = ", "non-finite"))
+        assert r["diagnosis"].startswith("Newton failed at t = ")
 
 
 @pytest.mark.parametrize("message,status,expected", [
