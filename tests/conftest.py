@@ -62,23 +62,22 @@ def pytest_sessionstart(session):
         print(f"warm-up: {f}", file=sys.stderr)
 
 
-#: test files that run long: under ``--dist loadfile`` a file runs in one worker, and xdist
-#: hands the files out by test count, most first, so long files of few tests came late and
-#: the last of them ran on while the other worker idled (fresh clone, 4 December: the
-#: Chrono 3423 history's 47 s ended the run on one worker).  Under xdist without a marker
-#: selection (``make test``) these go out first, longest first, the others after them in
-#: xdist's order.  Seconds per file in that cold run (its kernels compiled in it), the
-#: quick-report fixture of test_reports in two processes of its own: 168, 94, 76, 74,
-#: 60, 58, 52, 47, 36, 35, 33, 32, 28, 27, 27, 27
-LONG = ("tests/reports/test_reports.py", "tests/interface/test_fuzz_cli_slow.py",
-        "tests/checks/test_thread_plate.py", "tests/reports/test_chrono_elements_chapter.py",
-        "tests/belts/test_belt3d_tensioner.py", "tests/belts/test_belt3d_crown.py",
-        "tests/belts/test_belt3d_centring.py", "tests/elements/test_chrono_3423_history.py",
-        "tests/study/test_sweep.py", "tests/belts/test_balance.py",
-        "tests/checks/test_belt3d_checks.py", "tests/belts/test_belt_drive.py",
-        "tests/docs/test_tutorials.py",
-        "tests/checks/test_serpentine_3d_checks.py", "tests/belts/test_belt_npulley.py",
-        "tests/study/test_recommend.py")
+#: test files of few tests that run long: under ``--dist loadfile`` a file runs in one
+#: worker, and xdist hands the files out by test count, most first, so these came late
+#: (of 126 files: test_reports.py 76th, test_thread_plate.py 117th) and the last of them
+#: ran on while the other worker idled.  Under xdist without a marker selection (``make
+#: test``) they go out first, in this order, the others after them in xdist's order.
+#: Each alone, CPU s with --durations (kernels loaded or compiled in it): test_reports
+#: 267 (its quick-report fixture 302 s wall), the chrono_elements chapter 80, the plate
+#: belt's module fixture 132 compiling (13 with its kernels cached), belt3d_checks 72
+#: (a Model 2 run), serpentine_modes 31 (its module fixture).  The Chrono 3423 history
+#: (3 tests, 47 s cold, its march compiled in it) was handed out last in a fresh clone and
+#: ran on alone; it goes out after them.  Handing out every file of 27 s or more first,
+#: longest first, was slower (pytest 645 -> 763 s cold): files that compile their own
+#: kernels early run longer than late, when the others have cached most of them
+LONG = ("tests/reports/test_reports.py", "tests/reports/test_chrono_elements_chapter.py",
+        "tests/checks/test_thread_plate.py", "tests/checks/test_belt3d_checks.py",
+        "tests/checks/test_serpentine_modes.py", "tests/elements/test_chrono_3423_history.py")
 
 
 def _long_first(config) -> bool:
