@@ -70,14 +70,14 @@ def pytest_sessionstart(session):
 #: Each alone, CPU s with --durations (kernels loaded or compiled in it): test_reports
 #: 267 (its quick-report fixture 302 s wall), the chrono_elements chapter 80, the plate
 #: belt's module fixture 132 compiling (13 with its kernels cached), belt3d_checks 72
-#: (a Model 2 run), serpentine_modes 31 (its module fixture).  The Chrono 3423 history
-#: (3 tests, 47 s cold, its march compiled in it) was handed out last in a fresh clone and
-#: ran on alone; it goes out after them.  Handing out every file of 27 s or more first,
-#: longest first, was slower (pytest 645 -> 763 s cold): files that compile their own
-#: kernels early run longer than late, when the others have cached most of them
+#: (a Model 2 run), serpentine_modes 31 (its module fixture).  Two other orders, measured
+#: cold in a fresh clone (4 December), were no faster: every file of 27 s or more first,
+#: longest first (pytest 763 s against 645 s: files that compile their kernels early run
+#: longer than late, when others have cached them), and the Chrono 3423 history sixth
+#: (776 s, the whole run about 15 % slower that hour)
 LONG = ("tests/reports/test_reports.py", "tests/reports/test_chrono_elements_chapter.py",
         "tests/checks/test_thread_plate.py", "tests/checks/test_belt3d_checks.py",
-        "tests/checks/test_serpentine_modes.py", "tests/elements/test_chrono_3423_history.py")
+        "tests/checks/test_serpentine_modes.py")
 
 
 def _long_first(config) -> bool:
