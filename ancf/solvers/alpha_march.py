@@ -236,7 +236,7 @@ def _step(h, k, st, system, hf, cf, count, newton, max_iter, fresh):
             lam = _backtrack(system, acc1, d, st, h, k, cf, bp, gp, count, r, rt, moving, x1, v1, a1)
             r[:] = rt
             have_r = True
-            if lam < 1.0:
+            if give_up > 0 and lam < 1.0:  # the bookkeeping of give_up only
                 damped_n += 1
                 if damped_n == 1:
                     r_first = np.sqrt(np.dot(r, r))
