@@ -18,9 +18,11 @@ dA/de, dA/dedot (the arm's row by the belt), dA/domega_p, dA/d(psi, psi'), the b
 contact forces' dQ/d(psi, psi') (the arm's column) and dT_p/d(psi, psi'), into the
 outputs of :func:`ancf.belts.forces._arm_arrays` (36 coordinates per element).
 
-:class:`Drive3DArms` is :class:`ancf.belts.forces.Drive3D` with tensioner arms: its
+:class:`Drive3DArms` is :class:`ancf.belts.forces.Drive3D` with tensioner arms, none
+included (the plate belt on cylinders without a friction state): its
 :func:`ancf.belts.forces.drive_forces` places each arm's pulley on its arm (its pivot
-carried by the pulley's prescribed centre motion) before the contact acts.
+carried by the pulley's prescribed centre motion) before the contact acts; without arms
+that is the centres moved by their laws, the flanges and the cylinders' contact.
 """
 from __future__ import annotations
 
@@ -38,8 +40,8 @@ from ancf.elements import plate36
 
 
 class Drive3DArms(Drive3D):
-    """The compiled data of a 3D belt drive with tensioner arms (fields as
-    :class:`ancf.belts.forces.Drive3D`; ``arms`` (na, ARM_COLUMNS) of
+    """The compiled data of a 3D belt drive on cylinders with na >= 0 tensioner arms
+    (fields as :class:`ancf.belts.forces.Drive3D`; ``arms`` (na, ARM_COLUMNS) of
     :mod:`ancf.belts.arm2d`, their angles coordinates past the free pulleys')."""
 
     __slots__ = ()

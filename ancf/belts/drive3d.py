@@ -204,14 +204,16 @@ class Belt3DDrive(PulleyDrive):
         return self.centres, self.axes, self.radii, np.zeros(npul), np.zeros((npul, 3))
 
     def kernel(self) -> Drive3D:
-        """The drive's compiled data (:mod:`ancf.belts.forces`; with tensioner arms a
-        :class:`ancf.belts.arm3d.Drive3DArms`; with a crowned pulley a
-        :class:`ancf.belts.contact3d_state.Drive3DCrown`)."""
+        """The drive's compiled data (:mod:`ancf.belts.forces`): with a friction state (and
+        no arms) a :class:`ancf.belts.contact3d_state.Drive3DState`; else with a crowned
+        pulley (and no arms) a :class:`ancf.belts.contact3d_state.Drive3DCrown`; else a
+        :class:`ancf.belts.arm3d.Drive3DArms`, arms or none (one compilation of the march
+        for both)."""
         r = self.rig
         moving, shift = self.motion_arrays()
-        record = (Drive3DArms if r.arms.shape[0] else
-                  Drive3DState if self.z is not None else
-                  Drive3DCrown if self.flanges.crowns.shape[0] else Drive3D)
+        special = (Drive3DState if self.z is not None else
+                   Drive3DCrown if self.flanges.crowns.shape[0] else None)
+        record = Drive3DArms if r.arms.shape[0] or special is None else special
         return record(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
                        S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
                        free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,

@@ -4,8 +4,12 @@ matrix of the march (:mod:`ancf.belts.system`).
 
 A drive reaches compiled code as named data, one record type per drive:
 :class:`Drive2D` (``kernel()`` of :class:`ancf.belts.drive2d.BeltDrive`: Dufva
-elements, :mod:`ancf.belts.contact2d`) and :class:`Drive3D` (of
-:class:`ancf.belts.drive3d.Belt3DDrive`: plate36 elements, :mod:`ancf.belts.contact3d`).
+elements, :mod:`ancf.belts.contact2d`) and the records of :class:`Drive3D`'s fields (of
+:class:`ancf.belts.drive3d.Belt3DDrive`: plate36 elements; the cylinders' contact of
+:mod:`ancf.belts.contact3d` with any number of tensioner arms, none included,
+:class:`ancf.belts.arm3d.Drive3DArms`; a friction state or crowned rims,
+:mod:`ancf.belts.contact3d_state`).  Each record type compiles the march once more (about
+a minute cold), so a drive without arms is a Drive3DArms too.
 :func:`evaluate` is written once; its element and contact kernels are chosen at
 compile time by the record's type (:func:`drive_forces`).
 
@@ -39,7 +43,6 @@ from numba import njit
 
 from ancf.belts.arm2d import COORD, PULLEY, PRELOAD, STIFFNESS, arm_geometry, arm_terms
 from ancf.belts.contact2d import contact_forces_moving
-from ancf.belts.contact3d import contact_forces3d
 from ancf.belts.flange3d import NO_FLANGES, Flanges, add_flanges
 from ancf.common.dispatch import implements
 from ancf.core.pattern import scatter
@@ -80,7 +83,8 @@ class Drive2D(NamedTuple):
 
 
 class Drive3D(NamedTuple):
-    """The compiled data of a 3D belt drive (SI units; fields as :class:`Drive2D`)."""
+    """The fields of a 3D belt drive's compiled data (SI units; as :class:`Drive2D`); its
+    records are its subclasses' (module docstring), each with its :func:`drive_forces`."""
 
     vidx: np.ndarray     # (nel, 36)
     midx: np.ndarray     # (nel, 36, 36)
@@ -175,17 +179,6 @@ def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
                   drive.h[0], a, p, u, v[j], want_J, arm)
     return contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, omegas,
                                  drive.prm, drive.z, drive.h[0], want_J, *c)
-
-
-@implements(drive_forces, Drive3D)
-def _forces3d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
-    """The centres moved by their laws (:func:`moved_centres`); the flanges'
-    walls (:mod:`ancf.belts.flange3d`) where a pulley has them."""
-    plate36.gradient_tangent(E, drive.element, want_J, g, K)
-    o, odot = moved_centres(drive, laws)
-    add_flanges(E, V, drive.flanges, o, odot, drive.axes, drive.radii, want_J, c)
-    return contact_forces3d(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas, odot,
-                            drive.prm, want_J, *c)
 
 
 @njit(cache=True)

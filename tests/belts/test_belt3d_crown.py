@@ -186,11 +186,11 @@ def _coarse(sets: list, t_end: float = 0.05) -> tuple:
 
 def test_crown_zero_is_the_drive_without_the_key():
     """``crown_m = 0`` (and ``face_offset_m = 0``) runs bit for bit the drive that does not
-    name the keys, on a 1 deg tilted driven pulley (contact3d's kernel, the Drive3D
-    record: the crowned kernel is not called)."""
+    name the keys, on a 1 deg tilted driven pulley (contact3d's kernel, the Drive3DArms
+    record without arms: the crowned kernel is not called)."""
     (a, ra), (b, rb) = (_coarse(["pulleys.driven.axis_tilt_deg=1"] + extra) for extra in (
         ["pulleys.driven.crown_m=0", "pulleys.driven.face_offset_m=0"], []))
-    assert type(ra.extra["drive"].kernel()).__name__ == "Drive3D"
+    assert type(ra.extra["drive"].kernel()).__name__ == "Drive3DArms"
     assert a["times"] == b["times"] and a["pulleys"] == b["pulleys"]
     assert np.array_equal(ra.extra["result"].q, rb.extra["result"].q)
     assert np.array_equal(ra.extra["result"].v, rb.extra["result"].v)
