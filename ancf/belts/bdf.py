@@ -6,10 +6,10 @@ First-order form y = (x, v) of the equations of :mod:`ancf.belts.system`:
 
     x' = v,    v' = -Mt^-1 f(x, v, t),    Mt = diag(M, I_1, ..., I_k)
 
-with the same compiled forces (:func:`ancf.belts.forces.evaluate`; the mass
-matrix is factored once).  The Jacobian is exact and dense,
-``[[0, I], [-Mt^-1 df/dx, -Mt^-1 df/dv]]``, its two blocks from two evaluations of
-the iteration-matrix assembly (beta' = 1, gamma' = 0 and the reverse).
+with the same compiled forces (:func:`ancf.belts.forces.evaluate`, called by
+:func:`~ancf.belts.forces.evaluate_record`; the mass matrix is factored once).  The
+Jacobian is exact and dense, ``[[0, I], [-Mt^-1 df/dx, -Mt^-1 df/dv]]``, its two blocks
+from two evaluations of the iteration-matrix assembly (beta' = 1, gamma' = 0 and the reverse).
 """
 from __future__ import annotations
 
@@ -20,7 +20,7 @@ from scipy.integrate import BDF
 
 from ancf.solvers import banded
 from ancf.belts import friction
-from ancf.belts.forces import evaluate
+from ancf.belts.forces import evaluate_record
 from ancf.solvers.result import DynamicResult
 
 
@@ -54,8 +54,8 @@ class _FirstOrder:
         n, k = self.n, self.k
         m = n + k
         f = np.zeros(m)
-        evaluate(y[:m], y[m:], self._laws(t), self.drive, False, 0.0, 0.0, f, np.zeros((1, 1)),
-                 np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)))
+        evaluate_record(y[:m], y[m:], self._laws(t), self.drive, False, 0.0, 0.0, f,
+                        np.zeros((1, 1)), np.zeros((k, n)), np.zeros((k, n)), np.zeros((k, k)))
         self.nfev += 1
         return np.concatenate([y[m:], -self._inv_mass(f)])
 
@@ -65,8 +65,8 @@ class _FirstOrder:
         m = n + k
         mat, col, row = self.d.pattern.zeros_matrix(), np.zeros((k, n)), np.zeros((k, n))
         corner = np.zeros((k, k))
-        evaluate(y[:m], y[m:], self._laws(t), self.drive, True, bp, gp, np.zeros(m), mat, col,
-                 row, corner)
+        evaluate_record(y[:m], y[m:], self._laws(t), self.drive, True, bp, gp, np.zeros(m), mat,
+                        col, row, corner)
         D = np.zeros((m, m))
         D[:n, :n] = self.d.pattern.as_csr(mat).toarray()
         D[:n, n:], D[n:, :n], D[n:, n:] = col.T, row, corner
