@@ -14,7 +14,7 @@ from ancf.belts.arm2d import BETA0, COORD, LENGTH, PIVOT_X, PIVOT_Y
 from ancf.belts.arm3d import Drive3DArms
 from ancf.belts.drive_file import load
 from ancf.belts.drive_model import build
-from ancf.belts.forces import evaluate
+from ancf.belts.forces import evaluate_record
 from ancf.cli import main
 from ancf.common.paths import REPO
 from ancf.scenes import SCENES
@@ -48,8 +48,8 @@ def _state(drive):
 
 def _residual(kd, laws, x, v, n, k):
     out = np.zeros(n + k)
-    evaluate(x, v, laws, kd, False, 0.0, 0.0, out, np.zeros((1, 1)), np.zeros((k, n)),
-             np.zeros((k, n)), np.zeros((k, k)))
+    evaluate_record(x, v, laws, kd, False, 0.0, 0.0, out, np.zeros((1, 1)), np.zeros((k, n)),
+                    np.zeros((k, n)), np.zeros((k, k)))
     return out
 
 
@@ -57,7 +57,7 @@ def _jacobian(drive, kd, laws, x, v, bp, gp):
     n, k = drive.n, drive.k
     mat, col, row, corner = (drive.pattern.zeros_matrix(), np.zeros((k, n)), np.zeros((k, n)),
                              np.zeros((k, k)))
-    evaluate(x, v, laws, kd, True, bp, gp, np.zeros(n + k), mat, col, row, corner)
+    evaluate_record(x, v, laws, kd, True, bp, gp, np.zeros(n + k), mat, col, row, corner)
     D = np.zeros((n + k, n + k))
     D[:n, :n] = drive.pattern.as_csr(mat).toarray()
     D[:n, n:], D[n:, :n], D[n:, n:] = col.T, row, corner

@@ -12,7 +12,7 @@ from ancf.belts.drive2d import Belt2DSpec, BeltDrive, Rig
 from ancf.belts.drive_file import load
 from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, simulate
-from ancf.belts.forces import evaluate
+from ancf.belts.forces import evaluate_record
 from ancf.belts.friction import LAW
 from ancf.common.paths import REPO
 from ancf.core.mesh import BeamMesh
@@ -232,7 +232,7 @@ def _drive_terms(drive, x, v, bp, gp):
     mat, col, row, corner = (drive.pattern.zeros_matrix(), np.zeros((k, n)), np.zeros((k, n)),
                              np.zeros((k, k)))
     r = np.zeros(n + k)
-    evaluate(x, v, laws, kd, True, bp, gp, r, mat, col, row, corner)
+    evaluate_record(x, v, laws, kd, True, bp, gp, r, mat, col, row, corner)
     D = np.zeros((n + k, n + k))
     D[:n, :n] = drive.pattern.as_csr(mat).toarray()
     D[:n, n:], D[n:, :n], D[n:, n:] = col.T, row, corner

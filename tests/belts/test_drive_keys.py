@@ -16,7 +16,7 @@ from ancf.belts import drive_data as dd
 from ancf.belts.drive_file import describe
 from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, _March
-from ancf.belts.forces import evaluate
+from ancf.belts.forces import evaluate_record
 from ancf.belts.pulleys import LOAD_LAWS, resisting, signed
 from ancf.scenes.belt_drive import pulley_moments
 
@@ -143,8 +143,8 @@ def _arm_terms(data: dict, psi: float = 0.0, psid: float = 0.0):
     s = m.system
     f = np.zeros(x.size)
     k = drive.k
-    evaluate(x, v, s.tabs[:, 0].copy(), s.drive, False, 0.0, 0.0, f, np.zeros((1, 1)),
-             np.zeros((k, drive.n)), np.zeros((k, drive.n)), np.zeros((k, k)))
+    evaluate_record(x, v, s.tabs[:, 0].copy(), s.drive, False, 0.0, 0.0, f, np.zeros((1, 1)),
+                    np.zeros((k, drive.n)), np.zeros((k, drive.n)), np.zeros((k, k)))
     return f[j], m.initial_acceleration(x, v)[j], drive
 
 
