@@ -211,9 +211,9 @@ class Belt3DDrive(PulleyDrive):
         for both)."""
         r = self.rig
         moving, shift = self.motion_arrays()
-        special = (Drive3DState if self.z is not None else
-                   Drive3DCrown if self.flanges.crowns.shape[0] else None)
-        record = Drive3DArms if r.arms.shape[0] or special is None else special
+        record = (Drive3DArms if r.arms.shape[0] else
+                  Drive3DState if self.z is not None else
+                  Drive3DCrown if self.flanges.crowns.shape[0] else Drive3DArms)
         return record(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
                        S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
                        free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,
