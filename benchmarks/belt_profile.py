@@ -68,8 +68,8 @@ def kernel_costs(drive, x, v, omegas) -> dict:
 
     def elastic(J):
         def fn():  # as the march (ancf.belts.forces._forces2d)
-            if damping[0] != 0.0 and damping[1] == 0.0 and (rate or not J):
-                gradient_tangent_damped(E, V, eld, damping[0], J, J, g, K, Cv)
+            if damping[0] != 0.0 and damping[1] == 0.0:
+                gradient_tangent_damped(E, V, eld, damping[0], J, J and not rate, J, g, K, Cv)
                 return
             gradient_tangent(E, eld, J, g, K)
             if damping.any():

@@ -156,13 +156,15 @@ def _belt_damping(E, V, drive, want_J, g, K, Cv):
 def _forces2d(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
     """The centres moved by their laws (:func:`moved_centres`), the tensioners' pulleys at
     their arms' angles (:mod:`ancf.belts.arm2d`, their pivots moved alike); the belt's
-    strain-rate damping only if it has any, an axial one without dQ_d/dz in the elastic
+    strain-rate damping only if it has any, an axial one alone in the elastic
     forces' pass (:func:`ancf.elements.dufva2d.gradient_tangent_damped`)."""
     d = drive.strain_damping
-    if d[0] != 0.0 and d[1] == 0.0 and (not want_J or drive.damping_jacobian == 1):
+    if d[0] != 0.0 and d[1] == 0.0:
         Cv = c[2]
-        C = np.zeros_like(Cv)  # the axial damping without dQ_d/dz: with the elastic pass
-        dufva2d.gradient_tangent_damped(E, V, drive.element, d[0], want_J, want_J, g, K, C)
+        C = np.zeros_like(Cv)  # an axial damping alone: with the elastic pass
+        want_Kd = want_J and drive.damping_jacobian != 1
+        dufva2d.gradient_tangent_damped(E, V, drive.element, d[0], want_J, want_Kd, want_J,
+                                        g, K, C)
         Cv -= C
     else:
         dufva2d.gradient_tangent(E, drive.element, want_J, g, K)

@@ -50,7 +50,7 @@ s_x`` (SymPy: ``analytic/dufva_belt.py``), their rates ``eps' = deps/de e'`` and
 same Gauss points as the elastic forces; the exact Jacobians are dQ_d/de = int dEA
 (deps/de (d2eps/de2 e')^T + eps' d2eps/de2) dx + (the same for kappa) and dQ_d/de' =
 int (dEA deps/de deps/de^T + dEI dkappa/de dkappa/de^T) dx.  An axial damping alone (dEI =
-0) without dQ_d/de also comes with the elastic forces in one pass
+0), with or without dQ_d/de, also comes with the elastic forces in one pass
 (:func:`gradient_tangent_damped`).
 """
 from __future__ import annotations
@@ -170,21 +170,21 @@ def _nodal_shear_sine(x, y, want_K, grad, hess):
 def gradient_tangent(E, data, want_K, g, K):
     """Add dU/de (nel, 12) to ``g`` (N or N m) and, if ``want_K``, d2U/de2 (nel, 12, 12)
     to ``K``.  E: (nel, 6, 2) C-contiguous; data: ``DufvaBelt2D.kernel_data()``."""
-    _elastic(E, E, data, 0.0, want_K, False, g, K, K)
+    _elastic(E, E, data, 0.0, want_K, False, False, g, K, K)
 
 
 @njit(cache=True)
-def gradient_tangent_damped(E, V, data, dEA, want_K, want_C, g, K, C):
-    """:func:`gradient_tangent` and the axial strain-rate damping of dEA (N s; dEI = 0, no
-    dQ_d/de) of ``damping_parts(E, V, data, (dEA, 0), False, want_C, g, K, C)`` in one pass:
-    each element's elastic terms, then its damping's, with the slopes and their axial
-    strain's gradient formed once per point; both kernels' sums bit for bit (each g[e]
-    gets its terms in the same order)."""
-    _elastic(E, V, data, dEA, want_K, want_C, g, K, C)
+def gradient_tangent_damped(E, V, data, dEA, want_K, want_Kd, want_C, g, K, C):
+    """:func:`gradient_tangent` and the axial strain-rate damping of dEA (N s; dEI = 0) of
+    ``damping_parts(E, V, data, (dEA, 0), want_Kd, want_C, g, K, C)`` in one pass: each
+    element's elastic terms, then its damping's (dQ_d/de into K if ``want_Kd``), with the
+    slopes and their axial strain's derivatives formed once per point; both kernels' sums
+    bit for bit (each g[e], K[e] gets its terms in the same order)."""
+    _elastic(E, V, data, dEA, want_K, want_Kd, want_C, g, K, C)
 
 
 @njit(cache=True)
-def _elastic(E, V, data, dEA, want_K, want_C, g, K, C):
+def _elastic(E, V, data, dEA, want_K, want_Kd, want_C, g, K, C):
     """:func:`gradient_tangent_damped` (dEA = 0: :func:`gradient_tangent`; V, C unread)."""
     BX, BXX, xi, wq, lengths, k = data
     nel, nq = wq.shape
@@ -194,7 +194,8 @@ def _elastic(E, V, data, dEA, want_K, want_C, g, K, C):
     Jv, HJ = np.empty((7, nd)), np.empty((7, nd))
     Ke = np.empty((nd, nd))
     ge, He = np.empty(2), np.empty((2, 2))
-    ax, G = np.empty((nq, 2)), np.empty(nd)
+    ax, hx, G, Hs = np.empty((nq, 2)), np.empty((nq, 2, 2)), np.empty(nd), np.empty((nd, nd))
+    W = np.empty((2, nd))
     for e in range(nel):
         sI = _nodal_shear_sine(E[e, 1], E[e, 2], want_K, gI, hI)
         sJ = _nodal_shear_sine(E[e, 4], E[e, 5], want_K, gJ, hJ)
@@ -216,6 +217,8 @@ def _elastic(E, V, data, dEA, want_K, want_C, g, K, C):
             elif dEA != 0.0:
                 gen.axial_slope_grad(a0, a1, ge)
             ax[q, 0], ax[q, 1] = ge[0], ge[1]
+            if want_Kd:
+                gen.axial_slope_hess(a0, a1, ge, hx[q])
             _add_point_gradient(g, e, q, ww, z, inv_l, BX, BXX, gI, gJ, E, gw)
             if want_K:
                 _point_jacobian(BX, BXX, e, q, z, inv_l, gI, gJ, E, Jv)
@@ -234,6 +237,8 @@ def _elastic(E, V, data, dEA, want_K, want_C, g, K, C):
                     K[e, a, b] += Ke[a, b]
         if dEA != 0.0:
             _element_axial_damping(e, V, BX, wq, dEA, ax, want_C, g, C, G)
+            if want_Kd:
+                _element_axial_damping_tangent(e, V, BX, wq, dEA, ax, hx, K, G, Hs, W)
 
 
 @njit(cache=True)
@@ -388,10 +393,18 @@ def _point_measure(m, want_J, a0, a1, c0, c1, s, sx, gm, Hm):
 def damping_parts(E, V, data, d, want_K, want_C, g, K, C):
     """:func:`damping_forces` with dQ_d/de (want_K) and dQ_d/de' (want_C) apart (runtime
     flags: called with constant ones, as by :func:`damping_forces_rate`, numba compiles
-    it once per constant)."""
-    if d[1] == 0.0 and not want_K:
-        _axial_damping(E, V, data, d[0], want_C, g, C)
-        return
+    it once per constant); an axial damping alone (dEI = 0) by :func:`_axial_damping`."""
+    if d[1] == 0.0:
+        _axial_damping(E, V, data, d[0], want_K, want_C, g, K, C)
+    else:
+        measures_damping(E, V, data, d, want_K, want_C, g, K, C)
+
+
+@njit(cache=True)
+def measures_damping(E, V, data, d, want_K, want_C, g, K, C):
+    """:func:`damping_parts` through each point's Jacobian of the point variables and the
+    strain measures' derivatives in them (any dEA, dEI; :func:`_axial_damping` gives its
+    sums for dEI = 0 in fewer operations)."""
     BX, BXX, xi, wq, lengths, k = data
     nel, nq = wq.shape
     nd = 2 * E.shape[1]
@@ -418,20 +431,27 @@ def damping_parts(E, V, data, d, want_K, want_C, g, K, C):
 
 
 @njit(cache=True)
-def _axial_damping(E, V, data, dEA, want_C, g, C):
-    """:func:`damping_parts` of the axial strain alone (dEI = 0) without dQ_d/de: its gradient
-    deps/de = Jv^T deps/dv has a (Jv's rows 0, 1) alone, so dm/de[2 k + d] = BX_k deps/da_d,
-    the sums of :func:`_add_damping` bit for bit (they add exact zeros besides) without the
-    point Jacobian and the nodal shear sines."""
+def _axial_damping(E, V, data, dEA, want_K, want_C, g, K, C):
+    """:func:`damping_parts` of the axial strain alone (dEI = 0): its gradient deps/de = Jv^T
+    deps/dv has a (Jv's rows 0, 1) alone, so dm/de[2 k + d] = BX_k deps/da_d, and its
+    Hessian so (:func:`_slope_hessian`): the sums of :func:`_add_damping` bit for bit (they
+    add exact zeros besides) without the point Jacobian and the nodal shear sines."""
     BX, BXX, xi, wq, lengths, k = data
     nel, nq = wq.shape
-    ge, ax, G = np.empty(2), np.empty((nq, 2)), np.empty(2 * E.shape[1])
+    nd = 2 * E.shape[1]
+    ge, ax, hx = np.empty(2), np.empty((nq, 2)), np.empty((nq, 2, 2))
+    G, Hs, W = np.empty(nd), np.empty((nd, nd)), np.empty((2, nd))
     for e in range(nel):
         for q in range(nq):
             a0, a1, c0, c1 = _centre_line(E, BX, BXX, e, q)
-            gen.axial_slope_grad(a0, a1, ge)
+            if want_K:
+                gen.axial_slope_hess(a0, a1, ge, hx[q])
+            else:
+                gen.axial_slope_grad(a0, a1, ge)
             ax[q, 0], ax[q, 1] = ge[0], ge[1]
         _element_axial_damping(e, V, BX, wq, dEA, ax, want_C, g, C, G)
+        if want_K:
+            _element_axial_damping_tangent(e, V, BX, wq, dEA, ax, hx, K, G, Hs, W)
 
 
 @njit(cache=True)
@@ -452,6 +472,45 @@ def _element_axial_damping(e, V, BX, wq, dEA, ax, want_C, g, C, G):
             for a in range(2 * ns):
                 for b in range(2 * ns):
                     C[e, a, b] += f * G[a] * G[b]
+
+
+@njit(cache=True)
+def _element_axial_damping_tangent(e, V, BX, wq, dEA, ax, hx, K, G, Hs, W):
+    """Element e's dQ_d/de of its axial damping into K[e], from the axial strain's gradient
+    ax[q] (2,) and Hessian hx[q] (2, 2) by the slopes at its points (G, Hs, W (2, nd):
+    work): per point f (G u^T + m' Hs) with G = dm/de, m' = G.e', Hs = d2m/de2
+    (:func:`_slope_hessian`), u = Hs e', the sums of :func:`_add_damping` bit for bit."""
+    ns = V.shape[1]
+    ve, u = W[0], W[1]
+    for a in range(2 * ns):
+        ve[a] = V[e, a // 2, a % 2]
+    for q in range(wq.shape[1]):
+        rate = 0.0
+        for a in range(2 * ns):
+            G[a] = 0.0 + BX[e, q, a // 2] * ax[q, a % 2]
+            rate += G[a] * ve[a]
+        f = wq[e, q] * dEA
+        _slope_hessian(BX, e, q, hx[q], Hs)
+        np.dot(Hs, ve, u)
+        for a in range(2 * ns):
+            for b in range(2 * ns):
+                K[e, a, b] += f * (G[a] * u[b] + rate * Hs[a, b])
+
+
+@njit(cache=True)
+def _slope_hessian(BX, e, q, h, Hs):
+    """Hs = d2m/de2 (nd, nd) of a point measure m of the slopes alone with Hessian h (2, 2)
+    by them: Hs[2 k + d, 2 m + f] = BX_k (h_df BX_m), the upper triangle's products of
+    :func:`_measure_hessian` (its other terms are exact zeros) mirrored as there."""
+    ns = BX.shape[2]
+    for k in range(ns):
+        for d in range(2):
+            a = 2 * k + d
+            for b in range(a, 2 * ns):
+                Hs[a, b] = BX[e, q, k] * (h[d, b % 2] * BX[e, q, b // 2])
+    for a in range(2 * ns):
+        for b in range(a + 1, 2 * ns):
+            Hs[b, a] = Hs[a, b]
 
 
 @njit(cache=True)

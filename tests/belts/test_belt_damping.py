@@ -18,7 +18,9 @@ from ancf.common.paths import REPO
 from ancf.core.mesh import BeamMesh
 from ancf.core.quadrature import RectangularSection, gauss01
 from ancf.elements import _generated as shape_gen
-from ancf.elements.dufva2d import DufvaBelt2D, damping_forces
+from ancf.elements.dufva2d import (DufvaBelt2D, damping_forces, damping_parts,
+                                   gradient_tangent, gradient_tangent_damped,
+                                   measures_damping)
 
 EXAMPLES = REPO / "examples"
 SECTION = RectangularSection(0.02, 0.005)
@@ -152,6 +154,32 @@ def test_damping_jacobians_match_central_differences(d):
         assert np.abs(FD - J).max() <= 1e-7 * np.abs(J).max(), by
     CV = np.einsum("eab,eb->ea", C, V.reshape(-1, 12))
     assert np.abs(CV - g).max() <= 1e-12 * np.abs(g).max()
+
+
+@pytest.mark.parametrize("axial", ["green", "engineering"])
+def test_axial_damping_loops_are_the_general_kernels_bit_for_bit(axial):
+    """An axial damping alone (dEI = 0) goes by the axial strain's own loops: its forces,
+    dQ_d/de and dQ_d/de' (damping_parts) and those with the elastic forces in one pass
+    (gradient_tangent_damped) are, sum for sum, the general kernel's (measures_damping,
+    through the point Jacobians) after the elastic kernel's, for every choice of the
+    Jacobians asked for."""
+    m, q0, el = _element(n=4)
+    el = DufvaBelt2D(m.lengths, q0[m.dofmap], SECTION, E=2e8, nu=0.3, rho=1200.0,
+                     alpha2=0.02, nx=5, axial=axial)
+    E, V = _state(m, q0, np.random.default_rng(5))
+    data, d = el.kernel_data(), np.array([0.7, 0.0])
+    for want_K, want_Kd, want_C in [(True, True, True), (False, True, True),
+                                    (True, False, True), (False, False, False)]:
+        out = [[np.zeros((4, 12)), np.zeros((4, 12, 12)), np.zeros((4, 12, 12))]
+               for _ in range(3)]
+        for i, damping in enumerate((measures_damping, damping_parts)):
+            gradient_tangent(E, data, want_K, out[i][0], out[i][1])
+            damping(E, V, data, d, want_Kd, want_C, *out[i])
+        gradient_tangent_damped(E, V, data, d[0], want_K, want_Kd, want_C, *out[2])
+        assert np.abs(out[0][1]).max() > 0 or not (want_K or want_Kd)
+        for ours in out[1:]:
+            for a, b in zip(ours, out[0]):
+                assert a.tobytes() == b.tobytes(), (want_K, want_Kd, want_C)
 
 
 def test_zero_damping_adds_nothing():

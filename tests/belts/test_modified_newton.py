@@ -128,8 +128,9 @@ def test_the_march_refuses_settings_out_of_range():
 
 @pytest.mark.parametrize("bending", ["1e-3", "0"])
 def test_the_rate_damping_jacobian_is_the_exact_kernels_rate_part(bending):
-    """With dEI = 0 the forces and dQ_d/de' come from the axial strain's own loop
-    (dufva2d._axial_damping), the exact kernel's general one's bit for bit."""
+    """The rate kernel's forces and dQ_d/de' are the exact kernel's bit for bit (with dEI =
+    0 both from the axial strain's own loop, dufva2d._axial_damping, whose sums are the
+    general kernel's: tests/belts/test_belt_damping.py)."""
     d = load(THREAD, ["belt.n_elements=12", f"belt.damping_bending={bending}",
                       "run.damping_jacobian=rate"])
     drive = build(d)
