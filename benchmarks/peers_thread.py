@@ -1,7 +1,7 @@
 """The THREAD belt drive side by side with Exudyn on Exudyn's own example.
 
-    python -m benchmarks.peers_thread [--t-end 2.45] [--file drive.toml] [--set k=v ...]
-                                      [--out reports/benchmarks] [--stem NAME]
+    python -m benchmarks.peers_thread [--t-end 2.45] [--file drive.toml] [--own]
+                                      [--set k=v ...] [--out reports/benchmarks] [--stem NAME]
 
 Exudyn: :mod:`benchmarks.peers_thread_exudyn` (its ``beltDriveReevingSystem.py`` as
 shipped: 240 elements, 2 contact segments, step 1e-4 s, TrapezoidalIndex2, 2.45 s).
@@ -24,7 +24,9 @@ Exudyn's ``time.process_time`` around build, static equilibrium and dynamic solv
 ``--t-end`` shortens both runs (the means are then over the last half of the run).
 ``--set`` overrides ours further, a key of :data:`OURS` included (the file's own
 quadrature: ``--set belt.elastic_points=5 --set contact.gauss_points=5 --stem
-peers_thread_file``).
+peers_thread_file``).  ``--own`` runs ours at Exudyn's element count and step alone
+(:data:`OWN`), with the file's own quadrature and every Newton setting at its drive-file
+default (``--own --stem peers_thread_file_defaults``).
 
 Writes ``peers_thread.json`` (``--t-end`` below 2.45 s: ``peers_thread_short.json``;
 ``--stem``: the name given)
@@ -62,7 +64,11 @@ SOLVER = ("run.newton_accept=evaluated", "run.damping_jacobian=rate", "run.refre
           "run.refresh=once", "run.give_up=3")
 #: our quadrature of the race: Gauss points per element of the elastic forces and of the contact
 QUADRATURE = ("belt.elastic_points=3", "contact.gauss_points=4")
-OURS = ("belt.n_elements=%d" % N_ELEMENTS, "run.dt=%g" % STEP, *QUADRATURE, *SOLVER)
+OWN = ("belt.n_elements=%d" % N_ELEMENTS, "run.dt=%g" % STEP)
+OURS = (*OWN, *QUADRATURE, *SOLVER)
+OWN_SETTINGS = (f"ancf run belt-drive --file FILE --set belt.n_elements={N_ELEMENTS} "
+                f"--set run.dt={STEP:g} (the file's quadrature, friction law, damping, "
+                "generalised-alpha rho_inf and every Newton setting at its default)")
 SETTINGS = {
     "ours": f"ancf run belt-drive --file FILE --set belt.n_elements={N_ELEMENTS} "
             f"--set run.dt={STEP:g} " + " ".join(f"--set {s}" for s in (*QUADRATURE, *SOLVER)) +
@@ -81,18 +87,19 @@ SETTINGS = {
 }
 
 
-def our_sets(t_end: float, extra: list) -> list:
-    """The overrides of our run: :data:`OURS`, the end time and window, then ``extra``,
-    whose keys replace those of the others (a key may be given once)."""
+def our_sets(t_end: float, extra: list, base: tuple = OURS) -> list:
+    """The overrides of our run: ``base`` (:data:`OURS` or :data:`OWN`), the end time and
+    window, then ``extra``, whose keys replace those of the others (a key may be given
+    once)."""
     window = min(WINDOW, t_end / 2)
     given = {e.split("=", 1)[0] for e in extra}
-    sets = [*OURS, f"run.t_end={t_end:g}", f"run.steady_window={window:g}"]
+    sets = [*base, f"run.t_end={t_end:g}", f"run.steady_window={window:g}"]
     return [s for s in sets if s.split("=", 1)[0] not in given] + list(extra)
 
 
-def _ours(path: Path, t_end: float, extra: list, env: dict) -> dict:
+def _ours(path: Path, t_end: float, extra: list, env: dict, base: tuple = OURS) -> dict:
     window = min(WINDOW, t_end / 2)
-    sets = our_sets(t_end, extra)
+    sets = our_sets(t_end, extra, base)
     cmd = [sys.executable, "-m", "ancf.cli", "run", "belt-drive", "--file", str(path), "--json"]
     for s in sets:
         cmd += ["--set", s]
@@ -164,6 +171,8 @@ def main(argv=None) -> int:
                                  description=__doc__.split("\n")[0])
     ap.add_argument("--t-end", type=float, default=T_END, help="simulated time of both runs, s")
     ap.add_argument("--file", type=Path, default=FILE, help="our drive file")
+    ap.add_argument("--own", action="store_true", help="ours at Exudyn's element count and "
+                    "step alone: the file's own quadrature and Newton settings")
     ap.add_argument("--set", action="append", default=[], help="more overrides of our file")
     ap.add_argument("--out", type=Path, default=peers.DEFAULT_OUT, help="output folder")
     ap.add_argument("--stem", help="the record's file name (default peers_thread, "
@@ -173,11 +182,13 @@ def main(argv=None) -> int:
         print("peers_thread: exudyn is not installed (pip install -e .[peers]); skipped")
         return 0
     env = peers.worker_env()
+    base = OWN if args.own else OURS
     res = peers.record("peers_thread", argv or sys.argv[1:], {
-        **SETTINGS, "file": _relative(args.file), "file_text": args.file.read_text(),
+        **SETTINGS, **({"ours": OWN_SETTINGS} if args.own else {}),
+        "file": _relative(args.file), "file_text": args.file.read_text(),
         "extra_sets": args.set, "worker_env": peers.THREAD_ENV, "unset": peers.UNSET_ENV},
         t_end=args.t_end)
-    res["ours"] = _ours(args.file, args.t_end, args.set, env)
+    res["ours"] = _ours(args.file, args.t_end, args.set, env, base)
     res["exudyn"] = _exudyn(args.t_end, env)
     res["ratio"] = peers._ratio(res["ours"].get("cpu_s"), res["exudyn"].get("cpu_s"))
     res["stem"] = args.stem or ("peers_thread" if args.t_end >= T_END else "peers_thread_short")

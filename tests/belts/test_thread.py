@@ -279,6 +279,25 @@ def test_the_races_overrides_replace_its_own_keys():
     load(EXAMPLE, sets)  # one value per key: accepted
 
 
+def test_the_races_own_settings_are_the_files_defaults():
+    """benchmarks/peers_thread.py --own: our run sets the element count, the step, the end
+    time and window alone, so every key the race sets besides (its quadrature and Newton
+    settings, any added later) keeps the drive file's value or default."""
+    from benchmarks.peers_thread import OWN, our_sets
+
+    sets = our_sets(2.45, [], OWN)
+    assert {s.split("=", 1)[0] for s in sets} == {"belt.n_elements", "run.dt", "run.t_end",
+                                                   "run.steady_window"}
+    own, file = load(EXAMPLE, sets), load(EXAMPLE)
+    raced = [s.split("=", 1)[0].split(".") for s in our_sets(2.45, [])]
+    extra = [(t, k) for t, k in raced if (t, k) not in {("belt", "n_elements"), ("run", "dt"),
+                                                        ("run", "t_end"),
+                                                        ("run", "steady_window")}]
+    assert len(extra) >= 7  # quadrature (2) and Newton settings (5)
+    for table, key in extra:
+        assert getattr(own, table)[key] == getattr(file, table)[key], (table, key)
+
+
 def test_stored_friction_carries_its_tension_change():
     """Exudyn's stored friction (per laid length) integrated over each pulley's belt
     (``th.WRAPS``) is the change of its span forces within 0.5 % (0.35 % seen): the
