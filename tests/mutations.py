@@ -224,6 +224,14 @@ MUTATIONS = [
      "ancf/elements/ancf3423.py",
      ("Hq[3] += p * _sym(sp[2], sp[3])", "Hq[3] += p * _sym(s[2], s[3])"),
      "tests/reports/test_chrono_elements_chapter.py::test_3423_plate_no_locking_and_converges"),
+    ("axial damping's dQ_d/de without its dm/de (Hs e')^T term", "ancf/elements/dufva2d.py",
+     ("np.dot(Hs, ve, u)", "u[:] = 0.0"),
+     "tests/belts/test_belt_damping.py::test_damping_jacobians_match_central_differences"),
+    ("axial damping's slope Hessian transposed in its upper triangle", "ancf/elements/dufva2d.py",
+     ("Hs[a, b] = BX[e, q, k] * (h[d, b % 2] * BX[e, q, b // 2])",
+      "Hs[a, b] = BX[e, q, b // 2] * (h[b % 2, d] * BX[e, q, k])"),
+     "tests/belts/test_belt_damping.py::"
+     "test_axial_damping_loops_are_the_general_kernels_bit_for_bit"),
 ]
 
 
