@@ -9,7 +9,9 @@ exudyn importable (``pip install -e .[peers]``), or with ``ANCF_PEERS_NO_EXUDYN=
 it prints one line saying so and exits 0.
 
 Measurement: each code runs in its own long-lived worker (:mod:`benchmarks.peers_worker`)
-with one BLAS thread and OPENBLAS_CORETYPE / OPENBLAS_L2_SIZE unset; every case is run
+with one BLAS thread and OPENBLAS_CORETYPE / OPENBLAS_L2_SIZE unset, both workers (and
+the whole-process runs) on one and the same CPU (:data:`CPU`: unpinned, the workers
+moved between the cores and a small case's samples doubled on some rounds); every case is run
 once per side as a warm-up, then ``repeats`` times alternating ours, Exudyn, ours,
 Exudyn, ...; the medians are compared.  Ours is the scene's ``cpu_time_s``, Exudyn's
 the CPU time of its solve call.  The whole-process row runs ``ancf run cantilever
@@ -96,14 +98,27 @@ def worker_env() -> dict:
     return env
 
 
+#: the CPU both sides run on: the lowest this process may use.  Unpinned on a shared 2-core
+#: host (4 December), the cantilever n = 8's samples were 0.8 ms (ours) and 2.5 ms
+#: (Exudyn) in some rounds and up to 1.8 and 4.3 ms in others; pinned to either CPU, 0.76-
+#: 0.84 and 2.54-2.57 ms in every round
+CPU = min(os.sched_getaffinity(0))
+
+
+def _pin() -> None:
+    """In a child before exec: run on :data:`CPU` alone."""
+    os.sched_setaffinity(0, {CPU})
+
+
 class Worker:
-    """One long-lived worker process; :meth:`ask` sends a request, returns the answer."""
+    """One long-lived worker process on :data:`CPU`; :meth:`ask` sends a request, returns
+    the answer."""
 
     def __init__(self, side: str, env: dict):
         self.side = side
         self.proc = subprocess.Popen([sys.executable, "-m", "benchmarks.peers_worker", side],
                                      stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True,
-                                     cwd=ROOT, env=env)
+                                     cwd=ROOT, env=env, preexec_fn=_pin)
 
     def ask(self, case: str, n: int = 0, **kw) -> dict:
         self.proc.stdin.write(json.dumps({"case": case, "n": n, **kw}) + "\n")
@@ -226,9 +241,11 @@ def process_commands(n: int) -> dict:
 
 
 def run_process(cmd: list, env: dict) -> dict:
-    """CPU (user + system, from getrusage) and wall time of one whole subprocess."""
+    """CPU (user + system, from getrusage) and wall time of one whole subprocess (on
+    :data:`CPU`)."""
     before, t0 = resource.getrusage(resource.RUSAGE_CHILDREN), time.perf_counter()
-    proc = subprocess.run(cmd, env=env, cwd=ROOT, capture_output=True, text=True)
+    proc = subprocess.run(cmd, env=env, cwd=ROOT, capture_output=True, text=True,
+                          preexec_fn=_pin)
     wall, after = time.perf_counter() - t0, resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return {"cpu_s": cpu, "wall_s": wall, "exit_code": proc.returncode}
@@ -293,7 +310,7 @@ def main(argv=None) -> int:
     started = dt.datetime.now(dt.timezone.utc).isoformat(timespec="seconds")
     result = {"schema": 1, "quick": args.quick, "started": started,
               "command": "python -m benchmarks.peers" + (" --quick" if args.quick else ""),
-              "machine": machine(), "settings": {**SETTINGS, "repeats": repeats,
+              "machine": machine(), "settings": {**SETTINGS, "repeats": repeats, "cpu": CPU,
                                                  "worker_env": THREAD_ENV, "unset": UNSET_ENV},
               **run_all(plan, repeats)}
     stem = "peers_quick" if args.quick else "peers"

@@ -4,6 +4,8 @@ energy used for Exudyn's energy deviation."""
 from __future__ import annotations
 
 import json
+import os
+import sys
 
 import numpy as np
 import pytest
@@ -178,3 +180,16 @@ def test_exudyn_belt_rests_until_the_drive_starts(short_belt):
     pb, res = short_belt
     t, w = np.array(res["t_series"]), np.array(res["omega_driven_series"])
     assert np.max(np.abs(w[t < pb.RAMP[0]])) < 1e-3 * pb.RAMP[2]
+
+
+def test_both_sides_run_on_one_cpu():
+    """Both workers and the whole-process runs are pinned to the same CPU (peers.CPU), so
+    neither side's samples depend on which core it lands on; this process stays free."""
+    w = peers.Worker("ours", peers.worker_env())
+    try:
+        assert os.sched_getaffinity(w.proc.pid) == {peers.CPU}
+    finally:
+        w.close()
+    probe = f"import os, sys; sys.exit(os.sched_getaffinity(0) != {{{peers.CPU}}})"
+    assert peers.run_process([sys.executable, "-c", probe], os.environ.copy())["exit_code"] == 0
+    assert os.sched_getaffinity(0) != {peers.CPU} or len(os.sched_getaffinity(0)) == 1
