@@ -25,7 +25,7 @@ Derivatives (z0 and h fixed within a step): dv_0 = -(n . vr) t^T / |N| dr + t^T 
 (2, nel, nq, np, 2) m: its :func:`ancf.belts.forces.drive_forces` is
 :func:`contact_forces3d_state`'s.
 
-Crowned rims (:class:`Drive3DCrown`, :func:`contact_forces3d_crown`; issue 36 item 4).  A
+Crowned rims (:func:`contact_forces3d_crown`; issue 36 item 4).  A
 pulley's rim is the surface of revolution of radius R(s) about its axis, s the point's
 axial coordinate from the mid-face point f = (o_x, o_y, z_m) (as :mod:`ancf.belts.flange3d`:
 s = (r - o) . p - (z_m - o_z) p_z), W the face width (``face_width_m``; 0: 1.1 b):
@@ -48,10 +48,10 @@ dd/dr = (R' p - n)^T / g - d (R' R'' / g^2) p^T, dF_n = k_p dd - c_p (vr^T dnu/d
 - c_p nu^T drdot, dw/dr = -omega (R' t p^T - R(s) n t^T / |N|), dv_s/dr = (I - nu nu^T)
 dw/dr - (nu (w^T dnu/dr) + (w . nu) dnu/dr), dv_s/drdot = I - nu nu^T, dv_s/domega =
 -R(s) t; the moment row as contact3d's (p x f).  tests/belts/test_belt3d_crown.py checks
-them by central differences.  With c = 0 on every pulley the drive keeps
-:class:`ancf.belts.forces.Drive3D` and contact3d's kernel (bit for bit the drive without
-the key); only a crowned drive takes this kernel (with the friction laws without a state;
-no tensioner arms).
+them by central differences.  With c = 0 on every pulley the drive has no crown rows and
+takes contact3d's kernel (bit for bit the drive without the key); a crowned drive (the
+friction laws without a state, no tensioner arms) takes this kernel, chosen at run time by
+the forces of :class:`ancf.belts.arm3d.Drive3DArms` (one compilation of the march for both).
 """
 from __future__ import annotations
 
@@ -223,14 +223,6 @@ def contact_state3d_stepped(E, V, S, centres, axes, radii, omegas, centre_veloci
     return rr, d, Fn, fts, vss, br
 
 
-class Drive3DCrown(Drive3D):
-    """The compiled data of a 3D belt drive with a crowned pulley (fields as
-    :class:`ancf.belts.forces.Drive3D`; ``flanges.crowns`` (np, 3): crown c (m), mid-face
-    z_m (m), half face W / 2 (m) per pulley); its contact is :func:`contact_forces3d_crown`."""
-
-    __slots__ = ()
-
-
 @leaf
 def _crown_geometry(a, vr, p, R, om, prm, cr, o_z, n, t, nu, vs):
     """The crowned rim's geometry and normal force at one point (a = r - o, m; vr m/s;
@@ -373,17 +365,6 @@ def contact_forces3d_crown(E, V, S0, w, centres, axes, radii, omegas, centre_vel
                     touched = True
             _end_pair(Q, e, Qt, touched, PB, DB, nb, A, Kq, Cv)
     return pairs
-
-
-@implements(drive_forces, Drive3DCrown)
-def _forces3d_crown(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
-    """The centres moved by their laws, the flanges, then the crowned rims' contact
-    (:func:`contact_forces3d_crown`)."""
-    plate36.gradient_tangent(E, drive.element, want_J, g, K)
-    o, odot = moved_centres(drive, laws)
-    add_flanges(E, V, drive.flanges, o, odot, drive.axes, drive.radii, want_J, c)
-    return contact_forces3d_crown(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas,
-                                  odot, drive.prm, drive.flanges.crowns, want_J, *c)
 
 
 @njit(cache=True)

@@ -40,7 +40,7 @@ from ancf.belts.arm3d import Drive3DArms
 from ancf.belts.drive2d import DriveSpec, PulleyDrive, Rig, thesis_rig
 from ancf.belts.path import laid_belt
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
-from ancf.belts.contact3d_state import Drive3DCrown, Drive3DState
+from ancf.belts.contact3d_state import Drive3DState
 from ancf.belts.flange3d import NO_FLANGES
 from ancf.belts.forces import Drive3D
 from ancf.elements.plate36 import Plate36
@@ -205,15 +205,12 @@ class Belt3DDrive(PulleyDrive):
 
     def kernel(self) -> Drive3D:
         """The drive's compiled data (:mod:`ancf.belts.forces`): with a friction state (and
-        no arms) a :class:`ancf.belts.contact3d_state.Drive3DState`; else with a crowned
-        pulley (and no arms) a :class:`ancf.belts.contact3d_state.Drive3DCrown`; else a
-        :class:`ancf.belts.arm3d.Drive3DArms`, arms or none (one compilation of the march
-        for both)."""
+        no arms) a :class:`ancf.belts.contact3d_state.Drive3DState`; else a
+        :class:`ancf.belts.arm3d.Drive3DArms`, arms or none, cylinders or crowned rims (one
+        compilation of the march for all of them)."""
         r = self.rig
         moving, shift = self.motion_arrays()
-        record = (Drive3DArms if r.arms.shape[0] else
-                  Drive3DState if self.z is not None else
-                  Drive3DCrown if self.flanges.crowns.shape[0] else Drive3DArms)
+        record = (Drive3DArms if r.arms.shape[0] or self.z is None else Drive3DState)
         return record(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
                        S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
                        free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,

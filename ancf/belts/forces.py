@@ -6,10 +6,10 @@ A drive reaches compiled code as named data, one record type per drive:
 :class:`Drive2D` (``kernel()`` of :class:`ancf.belts.drive2d.BeltDrive`: Dufva
 elements, :mod:`ancf.belts.contact2d`) and the records of :class:`Drive3D`'s fields (of
 :class:`ancf.belts.drive3d.Belt3DDrive`: plate36 elements; the cylinders' contact of
-:mod:`ancf.belts.contact3d` with any number of tensioner arms, none included,
-:class:`ancf.belts.arm3d.Drive3DArms`; a friction state or crowned rims,
+:mod:`ancf.belts.contact3d` with any number of tensioner arms, none included, or crowned
+rims, :class:`ancf.belts.arm3d.Drive3DArms`; a friction state,
 :mod:`ancf.belts.contact3d_state`).  Each record type compiles the march once more (about
-a minute cold), so a drive without arms is a Drive3DArms too.
+a minute cold), so a drive without arms, or with crowned rims, is a Drive3DArms too.
 :func:`evaluate` is written once; its element and contact kernels are chosen at
 compile time by the record's type (:func:`drive_forces`).
 
