@@ -19,22 +19,23 @@ contact forces' dQ/d(psi, psi') (the arm's column) and dT_p/d(psi, psi'), into t
 outputs of :func:`ancf.belts.forces._arm_arrays` (36 coordinates per element).
 
 :class:`Drive3DArms` is :class:`ancf.belts.forces.Drive3D` with tensioner arms, none
-included (the plate belt without a friction state): its
-:func:`ancf.belts.forces.drive_forces` places each arm's pulley on its arm (its pivot
-carried by the pulley's prescribed centre motion) before the contact acts; without arms
-that is the centres moved by their laws, the flanges and the cylinders' contact, or the
-crowned rims' (:func:`ancf.belts.contact3d_state.contact_forces3d_crown`, chosen at run
-time: one record type, so one compilation of the march, for both).
+included (every plate belt): its :func:`ancf.belts.forces.drive_forces` places each arm's
+pulley on its arm (its pivot carried by the pulley's prescribed centre motion) before the
+contact acts; without arms that is the centres moved by their laws, the flanges and the
+cylinders' contact, the crowned rims' or a friction state's
+(:func:`ancf.belts.contact3d_state.contact_forces3d_crown`, ``contact_forces3d_state``),
+chosen at run time: one record type, so one compilation of the march, for all of them.
 """
 from __future__ import annotations
 
 import numpy as np
 from numba import njit
 
+from ancf.belts import friction
 from ancf.belts.arm2d import COORD, arm_geometry
 from ancf.belts.contact3d import (_control_points, _may_touch, _mid_surface, _point_jacobian,
                                   _point_law, _sides, _unit_axis, contact_forces3d)
-from ancf.belts.contact3d_state import contact_forces3d_crown
+from ancf.belts.contact3d_state import contact_forces3d_crown, contact_forces3d_state
 from ancf.belts.flange3d import add_flanges
 from ancf.belts.forces import Drive3D, _carry, drive_forces, moved_centres
 from ancf.common.dispatch import implements
@@ -131,6 +132,9 @@ def _forces3d_arms(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
         arm_terms3d(E, V, drive.S0, drive.w, o, odot, drive.axes, drive.radii, omegas,
                     drive.prm, a, p, u, v[j], want_J, arm)
     add_flanges(E, V, drive.flanges, o, odot, drive.axes, drive.radii, want_J, c)
+    if friction.has_state(drive.prm):  # its state z (no arms, no crowns then: drive3d)
+        return contact_forces3d_state(E, V, drive.S0, drive.w, o, drive.axes, drive.radii,
+                                      omegas, odot, drive.prm, drive.z, drive.h[0], want_J, *c)
     if drive.flanges.crowns.shape[0]:  # crowned rims (no arms then: tracking3d.crowns_of)
         return contact_forces3d_crown(E, V, drive.S0, drive.w, o, drive.axes, drive.radii,
                                       omegas, odot, drive.prm, drive.flanges.crowns, want_J, *c)

@@ -21,9 +21,9 @@ Derivatives (z0 and h fixed within a step): dv_0 = -(n . vr) t^T / |N| dr + t^T 
 (:func:`ancf.belts.friction.state_chain`); d f_t = t d phi_0 + p d phi_1
 - phi_0 n t^T / |N| dr.  The normal force's part and the moment row are contact3d's.
 
-:class:`Drive3DState` is :class:`ancf.belts.forces.Drive3D` with the state z
-(2, nel, nq, np, 2) m: its :func:`ancf.belts.forces.drive_forces` is
-:func:`contact_forces3d_state`'s.
+The drive's record (:class:`ancf.belts.arm3d.Drive3DArms`) carries the state z
+(2, nel, nq, np, 2) m; its :func:`ancf.belts.forces.drive_forces` takes
+:func:`contact_forces3d_state` for a law with a state (chosen at run time).
 
 Crowned rims (:func:`contact_forces3d_crown`; issue 36 item 4).  A
 pulley's rim is the surface of revolution of radius R(s) about its axis, s the point's
@@ -63,18 +63,7 @@ from ancf.belts.contact3d import (BATCH, _add_normal, _add_point, _batch_point,
                                   _control_points, _end_pair, _may_touch, _mid_surface,
                                   _mid_velocity, _normal_rates, _penetrates, _point_geometry,
                                   _positions, _sides, _swap_forces, _unit_axis)
-from ancf.belts.flange3d import add_flanges
-from ancf.belts.forces import Drive3D, drive_forces, moved_centres
-from ancf.common.dispatch import implements
 from ancf.common.leaf import leaf
-from ancf.elements import plate36
-
-
-class Drive3DState(Drive3D):
-    """The compiled data of a 3D belt drive whose friction law carries a state (fields as
-    :class:`ancf.belts.forces.Drive3D`; ``z`` (2, nel, nq, np, 2) m, ``h`` (1,) s)."""
-
-    __slots__ = ()
 
 
 @leaf
@@ -177,17 +166,6 @@ def contact_forces3d_state(E, V, S0, w, centres, axes, radii, omegas, centre_vel
                     touched = True
             _end_pair(Q, e, Qt, touched, PB, DB, nb, A, Kq, Cv)
     return pairs
-
-
-@implements(drive_forces, Drive3DState)
-def _forces3d_state(drive, x, v, E, V, laws, omegas, want_J, g, K, c, arm):
-    """The centres moved by their laws (:func:`ancf.belts.forces.moved_centres`), then the
-    contact with the friction state (:func:`contact_forces3d_state`)."""
-    plate36.gradient_tangent(E, drive.element, want_J, g, K)
-    o, odot = moved_centres(drive, laws)
-    add_flanges(E, V, drive.flanges, o, odot, drive.axes, drive.radii, want_J, c)
-    return contact_forces3d_state(E, V, drive.S0, drive.w, o, drive.axes, drive.radii, omegas,
-                                  odot, drive.prm, drive.z, drive.h[0], want_J, *c)
 
 
 @njit(cache=True)

@@ -40,7 +40,6 @@ from ancf.belts.arm3d import Drive3DArms
 from ancf.belts.drive2d import DriveSpec, PulleyDrive, Rig, thesis_rig
 from ancf.belts.path import laid_belt
 from ancf.belts.contact3d import contact_forces3d, contact_points3d, contact_state3d
-from ancf.belts.contact3d_state import Drive3DState
 from ancf.belts.flange3d import NO_FLANGES
 from ancf.belts.forces import Drive3D
 from ancf.elements.plate36 import Plate36
@@ -50,6 +49,9 @@ from ancf.belts.pulleys import SPEED_LAWS, TORQUE_LAWS, CentreMotion, driver_shi
 PER_NODE = 9  # r, r_x, r_y, 3 components each
 SHIFT = np.array([-1.0, 0.0, 0.0])  # direction the driver is moved in (Eq. 4.46)
 AXIS = np.array([0.0, 0.0, 1.0])    # pulley axes
+#: the friction state of a stateless law's drive (2, 0, 0, 0, 2): the record's z has the
+#: type of a state's, so a drive with a state and one without share the march's compilation
+NO_STATE = np.zeros((2, 0, 0, 0, 2))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -204,16 +206,15 @@ class Belt3DDrive(PulleyDrive):
         return self.centres, self.axes, self.radii, np.zeros(npul), np.zeros((npul, 3))
 
     def kernel(self) -> Drive3D:
-        """The drive's compiled data (:mod:`ancf.belts.forces`): with a friction state (and
-        no arms) a :class:`ancf.belts.contact3d_state.Drive3DState`; else a
-        :class:`ancf.belts.arm3d.Drive3DArms`, arms or none, cylinders or crowned rims (one
-        compilation of the march for all of them)."""
+        """The drive's compiled data (:mod:`ancf.belts.forces`): a
+        :class:`ancf.belts.arm3d.Drive3DArms`, arms or none, cylinders or crowned rims, a
+        friction state or none (:data:`NO_STATE` then: one type, so one compilation of the
+        march, for all of them)."""
         r = self.rig
         moving, shift = self.motion_arrays()
-        record = (Drive3DArms if r.arms.shape[0] or self.z is None else Drive3DState)
-        return record(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
-                       S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
-                       free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,
-                       arms=r.arms, z=self.z, h=self.h,
-                       last=np.zeros((2, r.radii.size)), axes=self.axes, moving=moving,
-                       shift=shift, flanges=self.flanges)
+        return Drive3DArms(vidx=self.vidx, midx=self.midx, element=self.element.kernel_data(),
+                            S0=self.S0, w=self.w, centres=r.centres, radii=r.radii, prm=self.prm,
+                            free=r.free, inertia=r.inertia, damping=r.damping, weight=self.weight,
+                            arms=r.arms, z=NO_STATE if self.z is None else self.z, h=self.h,
+                            last=np.zeros((2, r.radii.size)), axes=self.axes, moving=moving,
+                            shift=shift, flanges=self.flanges)

@@ -6,10 +6,10 @@ A drive reaches compiled code as named data, one record type per drive:
 :class:`Drive2D` (``kernel()`` of :class:`ancf.belts.drive2d.BeltDrive`: Dufva
 elements, :mod:`ancf.belts.contact2d`) and the records of :class:`Drive3D`'s fields (of
 :class:`ancf.belts.drive3d.Belt3DDrive`: plate36 elements; the cylinders' contact of
-:mod:`ancf.belts.contact3d` with any number of tensioner arms, none included, or crowned
-rims, :class:`ancf.belts.arm3d.Drive3DArms`; a friction state,
-:mod:`ancf.belts.contact3d_state`).  Each record type compiles the march once more (about
-a minute cold), so a drive without arms, or with crowned rims, is a Drive3DArms too.
+:mod:`ancf.belts.contact3d` with any number of tensioner arms, none included, crowned rims
+or a friction state (:mod:`ancf.belts.contact3d_state`), one record type,
+:class:`ancf.belts.arm3d.Drive3DArms`).  Each record type compiles the march once more
+(about a minute cold), so every plate belt is a Drive3DArms.
 :func:`evaluate` is written once; its element and contact kernels are chosen at
 compile time by the record's type (:func:`drive_forces`).
 
@@ -99,7 +99,7 @@ class Drive3D(NamedTuple):
     damping: np.ndarray
     weight: np.ndarray   # (n,)
     arms: np.ndarray     # (0, ARM_COLUMNS): the arms are arm3d.Drive3DArms's
-    z: None              # no friction law with a state in 3D
+    z: np.ndarray        # (2, nel, nq, np, 2) m: a friction law's state (drive3d.NO_STATE: none)
     h: np.ndarray        # (1,)
     last: np.ndarray     # (2, np)
     axes: np.ndarray     # pulley axes (np, 3)

@@ -89,7 +89,8 @@ def belt_system(drive, ts, nslots: int = 0, mean_from: float = np.inf) -> BeltSy
     from ``mean_from`` (s; inf: none)."""
     n, k = drive.n, drive.k
     kernel = drive.kernel()
-    shape = (0, 0, 0, 0) if kernel.z is None else (nslots, *kernel.z.shape[1:])
+    shape = (0, 0, 0, 0) if kernel.z is None else (nslots if kernel.z.size else 0,
+                                                   *kernel.z.shape[1:])
     return BeltSystem(drive=kernel, Mb=drive.Mb, mass_rows=mass_rows(drive.Mb, drive.pattern.kl),
                       kl=drive.pattern.kl, tabs=drive.laws(ts), loads=loads_of(drive),
                       steps=steps(ts),

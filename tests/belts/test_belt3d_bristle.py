@@ -8,12 +8,13 @@ the three-pulley plate belt whose span tensions balance the driven pulley's load
 differ from the creep-rate law's; bad input is one line (exit 2)."""
 import re
 
+import numba
 import numpy as np
 import pytest
 
-from ancf.belts import friction, post3d
+from ancf.belts import friction, post3d, tracking3d
 from ancf.belts.contact3d import contact_state3d
-from ancf.belts.contact3d_state import Drive3DState, _state_law, contact_forces3d_state
+from ancf.belts.contact3d_state import _state_law, contact_forces3d_state
 from ancf.belts.drive_file import describe, override, read
 from ancf.belts.drive_model import build
 from ancf.belts.dynamics import BeltOptions, simulate
@@ -23,6 +24,7 @@ from ancf.common.paths import REPO
 
 THREE3D = REPO / "examples" / "three_pulleys_3d.toml"
 BRISTLE = {"law": "bristle", "mu": 0.6, "stiffness": 1e8, "damping": 1e3}
+CREEP = {"law": "creep-rate", "mu": 0.6, "nu_s": 2e5}
 #: the idler on an arm (tests/belts/test_belt3d_tensioner.py's)
 ARM = ["pulleys.idler.law=tensioner", "pulleys.idler.pivot=[0.0185, -0.08]",
        "pulleys.idler.arm_inertia=1e-5", "pulleys.idler.arm_stiffness=5.0",
@@ -220,11 +222,26 @@ def test_leaving_a_term_out_fails(kernel_state, jacobians, left_out):
 
 
 def test_plate_drive_carries_the_state():
-    """A plate36 drive file with the bristle law builds the stateful kernel (its state
-    (2, nel, nq, np, 2) m); with a tensioner arm it is refused (one line, exit 2)."""
+    """A plate36 drive file with the bristle law builds a kernel carrying its state
+    (2, nel, nq, np, 2) m; with a tensioner arm it is refused (one line, exit 2)."""
     drive = _drive()
-    assert isinstance(drive.kernel(), Drive3DState)
+    assert friction.has_state(drive.kernel().prm)
     assert drive.z.shape == (2, 12, 25, 3, 2) and drive.kernel().z is drive.z
+
+
+def test_every_plate_drive_compiles_one_march():
+    """The stateful drive, a stateless one and the crowned example reach compiled code as one
+    numba type (the contact chosen at run time in the drive's forces), so the march compiles
+    once for all three (about a minute cold each before); the stateless record's state is
+    empty and its law has none."""
+    stateless = _drive(CREEP)
+    desc = describe(read(REPO / "examples" / "crowned.toml"))
+    crowned = tracking3d.align(build(desc), desc)
+    kernels = [d.kernel() for d in (_drive(), stateless, crowned)]
+    assert crowned.flanges.crowns.shape[0] and not stateless.flanges.crowns.shape[0]
+    assert len({numba.typeof(k) for k in kernels}) == 1
+    assert stateless.z is None and kernels[1].z.size == 0
+    assert not friction.has_state(kernels[1].prm)
 
 
 def test_bristle_with_a_tensioner_is_one_line(tmp_path, capsys):
