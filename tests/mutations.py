@@ -232,6 +232,12 @@ MUTATIONS = [
       "Hs[a, b] = BX[e, q, b // 2] * (h[b % 2, d] * BX[e, q, k])"),
      "tests/belts/test_belt_damping.py::"
      "test_axial_damping_loops_are_the_general_kernels_bit_for_bit"),
+    ("plate belt's friction state not dispatched (stateless contact)", "ancf/belts/arm3d.py",
+     ("    if friction.has_state(drive.prm):  # its state z", "    if False:  # its state z"),
+     "tests/belts/test_belt3d_bristle.py"),
+    ("plate belt's crowned rims not dispatched (cylinders' contact)", "ancf/belts/arm3d.py",
+     ("    if drive.flanges.crowns.shape[0]:  # crowned rims", "    if False:  # crowned rims"),
+     "tests/belts/test_belt3d_centring.py::test_crowned_pulleys_centre_the_belt"),
 ]
 
 
