@@ -92,7 +92,7 @@ def jacobians():
     drive = _drive()
     kd, laws, x, v = _state(drive)
     n, k = drive.n, drive.k
-    return drive, {by: (_jacobian(drive, kd, laws, x, v, *((1.0, 0.0) if by == "x" else (0, 1))),
+    return drive, {by: (_jacobian(drive, kd, laws, x, v, *((1.0, 0.0) if by == "x" else (0.0, 1.0))),
                         _differences(kd, laws, x, v, n, k, by)) for by in ("x", "v")}
 
 
