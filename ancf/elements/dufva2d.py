@@ -392,8 +392,9 @@ def _point_measure(m, want_J, a0, a1, c0, c1, s, sx, gm, Hm):
 @njit(cache=True)
 def damping_parts(E, V, data, d, want_K, want_C, g, K, C):
     """:func:`damping_forces` with dQ_d/de (want_K) and dQ_d/de' (want_C) apart (runtime
-    flags: called with constant ones, as by :func:`damping_forces_rate`, numba compiles
-    it once per constant); an axial damping alone (dEI = 0) by :func:`_axial_damping`."""
+    flags: called with literal ones, numba would compile it once per literal, so
+    :func:`damping_forces_rate` passes ``bool(...)``); an axial damping alone (dEI = 0)
+    by :func:`_axial_damping`."""
     if d[1] == 0.0:
         _axial_damping(E, V, data, d[0], want_K, want_C, g, K, C)
     else:
@@ -526,7 +527,7 @@ def damping_forces_rate(E, V, data, d, g, C):
     """:func:`damping_forces` with dQ_d/de' (into ``C``) but not dQ_d/de: an iteration
     matrix's approximation (dQ_d/de is proportional to the strain rates: int dEA (deps/de
     (d2eps/de2 e')^T + eps' d2eps/de2) dx) that costs a fraction of the exact one."""
-    damping_parts(E, V, data, d, False, True, g, np.zeros((0, 0, 0)), C)
+    damping_parts(E, V, data, d, bool(False), bool(True), g, np.zeros((0, 0, 0)), C)
 
 
 class DufvaBelt2D(BeltElement):

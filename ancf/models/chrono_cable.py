@@ -80,7 +80,7 @@ def _march(x, v, M, Fg, loc, dofs, Le, EA, EI, rules, h, steps, out):
     for k in range(steps):
         A, r = M.copy(), h * Fg
         for i in range(dofs.shape[0]):
-            element(x[dofs[i]], Le, EA, EI, wa, Sa, wb, Sb, Sbb, True, Q, K)
+            element(x[dofs[i]], Le, EA, EI, wa, Sa, wb, Sb, Sbb, bool(True), Q, K)  # not a literal
             for j in range(NDOF):
                 p = loc[dofs[i, j]]
                 if p < 0:

@@ -236,7 +236,8 @@ def _static(system, x, loads, tol, max_iter):
     for lam in loads:
         done = False
         for _ in range(max_iter):
-            _residual(system, x, zero, zero, 0, 1.0, 0.0, True, count, r)
+            # bool(): a runtime flag, as the march's; a literal True compiles its own batch
+            _residual(system, x, zero, zero, 0, 1.0, 0.0, bool(True), count, r)
             d = np.linalg.solve(system.J, -(r + (1.0 - lam) * system.F))
             x += d
             iters += 1
