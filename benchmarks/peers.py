@@ -17,8 +17,8 @@ Exudyn, ...; the medians are compared.  Ours is the scene's ``cpu_time_s``, Exud
 the CPU time of its solve call.  The whole-process row runs ``ancf run cantilever
 --set n_elements=64 --json`` and ``python -m benchmarks.peers_exudyn cantilever 64`` as
 fresh subprocesses (byte code compiled first, :func:`compile_byte_code`), alternately,
-and compares their CPU time (user + system, from
-``getrusage``); their wall times are recorded too.
+and compares their CPU time (user + system, from ``getrusage``); their wall times are
+recorded too.
 
 JSON keys (stable): ``schema``, ``quick``, ``started``, ``command``,
 ``machine`` (with the 1 / 5 / 15 min load average at the start: the machine may be
