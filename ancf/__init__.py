@@ -14,8 +14,11 @@ lives in a directory named by a hash of the sources compiled code can reach
 can import (the layers import only those below them, ``tests/common/test_layers.py``;
 ``tests/common/test_imports.py`` keeps numba out of the other folders).  An edit there
 starts a fresh cache; an edit of a scene, check, report or the study layer keeps the
-compiled kernels.  A ``NUMBA_CACHE_DIR`` set by the user wins; importing numba before
-ancf keeps numba's default location.
+compiled kernels.  Numba keys its cache by source and CPU, not by LLVM's optimisation
+level: a ``NUMBA_OPT`` other than numba's default 3 (``make test`` sets 1) gets a directory
+of its own (``<hash>-opt1``), so that kernels compiled for the tests never serve a report
+or a benchmark.  A ``NUMBA_CACHE_DIR`` set by the user wins; importing numba before ancf
+keeps numba's default location.
 """
 from __future__ import annotations
 
@@ -43,9 +46,10 @@ def source_hash(root: Path | None = None, folders=None) -> str:
 
 def numba_cache_dir(root: Path | None = None, folders=KERNEL_FOLDERS) -> Path:
     """The cache directory for the kernel sources below ``root`` (default: this package;
-    ``folders`` None: every source)."""
+    ``folders`` None: every source) and the optimisation level ``NUMBA_OPT``."""
     base = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
-    return base / "ancf-bench" / source_hash(root, folders)
+    opt = os.environ.get("NUMBA_OPT", "3").strip() or "3"
+    return base / "ancf-bench" / (source_hash(root, folders) + ("" if opt == "3" else f"-opt{opt}"))
 
 
 if "NUMBA_CACHE_DIR" not in os.environ:  # a directory set wins: no sources read, no hash

@@ -182,6 +182,21 @@ def test_numba_cache_follows_the_sources(tmp_path):
     assert ancf.numba_cache_dir(tmp_path) != first
 
 
+def test_numba_cache_follows_the_optimisation_level(tmp_path, monkeypatch):
+    """Numba's cache does not key by NUMBA_OPT: a level other than its default 3 (make test's
+    1) compiles into a directory of its own, so test-compiled kernels never serve a report;
+    3 spelled out is the default's directory."""
+    import ancf
+    (tmp_path / "belts").mkdir()
+    (tmp_path / "belts" / "a.py").write_text("x = 1\n")
+    monkeypatch.delenv("NUMBA_OPT", raising=False)
+    default = ancf.numba_cache_dir(tmp_path)
+    monkeypatch.setenv("NUMBA_OPT", "3")
+    assert ancf.numba_cache_dir(tmp_path) == default
+    monkeypatch.setenv("NUMBA_OPT", "1")
+    assert ancf.numba_cache_dir(tmp_path) == default.with_name(default.name + "-opt1")
+
+
 def test_a_numba_cache_dir_set_is_kept_without_hashing_the_sources(tmp_path):
     """``NUMBA_CACHE_DIR`` set by the user is kept, and ``import ancf`` then reads and hashes
     no source (no hashlib); unset, it is :func:`ancf.numba_cache_dir`, found by hashing."""
