@@ -358,6 +358,13 @@ def _calibration_section(frames: dict) -> list:
 FIRST = ("belt3d",)
 
 
+def sweep_workers(workers=None) -> int:
+    """The sweeps' processes: ``workers`` if given; else one in a quick report (each of its
+    workers would compile the same kernels for its few short runs: the 3D beam element's
+    50 CPU-s twice from a cold cache) and one per core in a full one."""
+    return workers or (1 if settings().quick else os.cpu_count())
+
+
 def _sweeps(names, workers) -> dict:
     """{scene: its rows, or the exception its sweep raised}, :data:`FIRST` swept first."""
     got = {}
@@ -377,7 +384,7 @@ def speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
     parts = ["# Speed versus accuracy\n", _INTRO.format(gap=1 + WORK_TIE,
                                                             scatter=100 * WORK_SCATTER)]
     parts += _references_table(sp)
-    swept = _sweeps(list(sp), workers or os.cpu_count())
+    swept = _sweeps(list(sp), sweep_workers(workers))
     for name, s in sp.items():
         key = f"Speed–accuracy {name}: Pareto plot + cheapest-configuration table"
         if isinstance(swept[name], Exception):

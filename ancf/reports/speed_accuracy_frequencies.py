@@ -12,8 +12,6 @@ CPU time per element and scheme.
 """
 from __future__ import annotations
 
-import os
-
 import matplotlib
 
 matplotlib.use("Agg")
@@ -25,7 +23,7 @@ import pandas as pd  # noqa: E402
 from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import markdown_table, progress, save_figure, timing_note  # noqa: E402
 from ancf.reports.speed_accuracy import (FLOOR, TOLERANCES, _model, scene_section,  # noqa: E402
-                                         scene_sweep)
+                                         scene_sweep, sweep_workers)
 from ancf.study.references import FREQUENCY_SPECS, spec  # noqa: E402
 
 #: the bending modes compared per scene (``count``; the plate: (1, 1), (1, 2), (2, 1), (2, 2))
@@ -67,7 +65,7 @@ def _finest(frames: dict) -> pd.DataFrame:
 
 def frequency_speed_accuracy_chapter(workers=None) -> tuple[str, dict]:
     """(markdown, status) of the frequency speed-accuracy chapter."""
-    workers = workers or os.cpu_count()
+    workers = sweep_workers(workers)
     status, frames, sections = {}, {}, []
     for name in FREQUENCY_SPECS:
         s = spec(name, "frequency")
