@@ -15,7 +15,7 @@ JOBS   ?= 2
 TEST_OPT ?= 1
 
 # uv (from PyPI) installs the versions pip would, resolving, downloading and writing byte code
-# in parallel: a fresh set-up 49 s -> 25 s; where uv cannot run, pip installs
+# in parallel: a fresh set-up 50 s -> 28 s; where uv cannot run, pip installs
 install = $(PY) -m uv pip install --quiet --python $(PY) --compile-bytecode $(1) \
 	|| $(PY) -m pip install --quiet $(1)
 
