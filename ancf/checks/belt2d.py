@@ -28,7 +28,7 @@ import numpy as np
 
 from ancf.belts.post2d import sample, span_tension, spans
 from ancf.scenes import SCENES
-from ancf.scenes.store import stored
+from ancf.scenes.store import execute_once, stored
 from ancf.scenes.belt2d import STEADY_WINDOW
 
 #: the 120 rad/s case of Figs 3.10-3.20 (thesis text above Eq. 3.30); 30 elements as
@@ -61,16 +61,16 @@ class Check:
         return bool(self.difference <= self.tolerance)
 
 
-@lru_cache(maxsize=None)
 def _run(scene: str, items: tuple):
-    out, res = SCENES[scene].execute(dict(items))
+    out, res = execute_once(scene, dict(items))
     if not out["converged"]:
         raise RuntimeError(f"{scene} {dict(items)}: {out['message']}")
     return out, res
 
 
 def run(scene: str = "belt2d", **overrides):
-    """(public JSON dict, SceneResult) of a scene run, cached."""
+    """(public JSON dict, SceneResult) of a scene run, once per process for the same
+    resolved parameters (:func:`ancf.scenes.store.execute_once`)."""
     return _run(scene, tuple(sorted(overrides.items())))
 
 

@@ -9,7 +9,6 @@ and the repeats and the 8-element row of the Table 2.5 timing.
 from __future__ import annotations
 
 import time
-from functools import lru_cache
 
 import matplotlib
 
@@ -23,6 +22,7 @@ from ancf.reports.chapter import Chapter  # noqa: E402
 from ancf.reports.output import (markdown_table, progress, save_figure,  # noqa: E402
                                  settings, timing_note, write_csv)
 from ancf.scenes import pendulum, spinning_beam  # noqa: E402
+from ancf.scenes.store import execute_once  # noqa: E402
 
 SCENES = {s.name: s for s in (pendulum.SCENE, spinning_beam.SCENE)}
 THESIS_ENERGY_DEVIATION = 0.62e-4  # J, 4 elements
@@ -33,9 +33,8 @@ RIGID_E = {"E": 2.07e11, "integrator": "generalized-alpha", "dt": 1e-3, "rho_inf
 TIGHT = {"rtol": 1e-10, "atol": 1e-12}
 
 
-@lru_cache(maxsize=None)
 def _run(name: str, items: tuple):
-    return SCENES[name].execute(dict(items))
+    return execute_once(name, dict(items))
 
 
 def run(name: str, **overrides) -> dict:

@@ -20,13 +20,34 @@ from pathlib import Path
 ENV = "ANCF_RUN_STORE"
 
 
+#: the runs of this process by :func:`run_key` (:func:`execute_once`)
+_DONE: dict = {}
+
+
+def run_key(scene: str, overrides: dict) -> str:
+    """The scene and its resolved parameters as one string: overrides spelled differently
+    (1e5 and 100000.0, a default named or left out) give the same key."""
+    from ancf.scenes import scene as named
+    params = named(scene).resolve(dict(overrides))
+    return json.dumps({"scene": scene, "params": params}, sort_keys=True, default=repr)
+
+
+def execute_once(scene: str, overrides: dict) -> tuple:
+    """``SCENES[scene].execute(overrides)``, (public JSON dict, SceneResult), run once per
+    process for each :func:`run_key`: the checks and chapters that ask for the same run
+    under different spellings share it (the 120 rad/s belt once, not three times)."""
+    key = run_key(scene, overrides)
+    if key not in _DONE:
+        from ancf.scenes import scene as named
+        _DONE[key] = named(scene).execute(dict(overrides))
+    return _DONE[key]
+
+
 def _path(scene: str, overrides: dict) -> Path | None:
     root = os.environ.get(ENV)
     if not root:
         return None
-    from ancf.scenes import SCENES
-    params = SCENES[scene].resolve(dict(overrides))
-    key = json.dumps({"scene": scene, "params": params}, sort_keys=True, default=repr)
+    key = run_key(scene, overrides)
     return Path(root) / f"{hashlib.sha1(key.encode()).hexdigest()}.pkl"
 
 
