@@ -39,6 +39,9 @@ def _dot_rows(qe, Q):
 class Gravity:
     """Q_g = int rho S^T g dV (constant), potential V = -Q_g . q per element."""
 
+    #: the value depends on neither q, q' nor t (:attr:`Forces.constant`)
+    constant = True
+
     def __init__(self, assembly, g=(0.0, -9.81)):
         self.g = np.asarray(g, dtype=float)
         self.groups = assembly.groups
@@ -163,6 +166,11 @@ class Forces:
 
     def __init__(self, n_dofs: int, terms=()):
         self.n_dofs, self.terms = n_dofs, list(terms)
+
+    @property
+    def constant(self) -> bool:
+        """Whether the sum depends on neither q, q' nor t (every term says so)."""
+        return all(getattr(term, "constant", False) for term in self.terms)
 
     def value(self, q, v, t) -> np.ndarray:
         out = np.zeros(self.n_dofs)

@@ -29,8 +29,9 @@ import scipy.integrate as si
 import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
+from numba import njit
 
-from ancf.core.pattern import ReducedPattern
+from ancf.core.pattern import ReducedPattern, assemble_group
 from ancf.solvers.linear import Singular, factor
 from ancf.solvers.result import DynamicResult, finish, global_samples, stacked
 
@@ -86,6 +87,13 @@ def _mul(A, B):
     return (B.T @ A.T).T if sp.issparse(B) else A @ B
 
 
+@njit(cache=True)
+def _elastic_gradient(group, z, g, grad):
+    """grad = T^T dU/dq at q = T z + g (N): :func:`~ancf.core.pattern.assemble_group`
+    without the tangent, one call from Python."""
+    assemble_group(group, z, g, False, grad, np.zeros((1, 1)))
+
+
 class ReducedModel:
     """Elimination form q = T z + g(t) (``rheo`` from ``Elimination.rheonomic()``), in
     the numbering of its :class:`~ancf.core.pattern.ReducedPattern`: forces and tangents
@@ -108,6 +116,20 @@ class ReducedModel:
         M = p.as_csr(self.Mb)
         self.M = M.toarray() if self.dense else M
         self._zero = np.zeros(assembly.n_dofs)
+        self._fast = self._constant_load()
+
+    def _constant_load(self):
+        """(compiled group, T^T Q) where :meth:`force` needs one compiled call: a single
+        element group on band storage (:meth:`ReducedPattern.compiled`), g not depending
+        on time and every force term constant (gravity); else None.  The same arithmetic
+        as the general path (q = g + T z, the element kernel, the scatter, T^T Q once)."""
+        if self.rheo.time_dependent or not getattr(self.forces, "constant", False):
+            return None
+        group = self.pattern.compiled(self.assembly)
+        if group is None:
+            return None
+        q = self.rheo.g0
+        return group, self.pattern.reduce(self.forces.value(q, self._zero, 0.0))
 
     def _g(self, t, order=0):
         if self.rheo.time_dependent:
@@ -138,6 +160,11 @@ class ReducedModel:
         return self.pattern.reduce(self.M_full @ self.rheo.g(t, 2))
 
     def force(self, z, zd, t):
+        if self._fast is not None:  # one compiled call (:meth:`_constant_load`)
+            group, load = self._fast
+            grad = np.empty(self.n)
+            _elastic_gradient(group, z, self.rheo.g0, grad)
+            return load - grad
         q, v = self.full(z, zd, t)
         grad, _ = self.pattern.assemble(self.assembly, q, want_K=False)
         return self.pattern.reduce(self.forces.value(q, v, t)) - grad - self._inertial(t)

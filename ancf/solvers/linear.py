@@ -51,7 +51,7 @@ class _BandLU:
         if x.ndim == 2:
             return np.stack([self.solve(c) for c in x.T], axis=1)
         banded.solve(self.AB, self.kl, self.piv, x)
-        if not np.all(np.isfinite(x)):
+        if not np.isfinite(x).all():  # the method: no Python wrapper per call
             raise Singular("non-finite solution")
         return x
 

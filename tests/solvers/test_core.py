@@ -292,6 +292,30 @@ def test_reduced_samples_are_the_full_states_row_by_row():
     assert np.array_equal(q, [r[0] for r in rows]) and np.array_equal(v, [r[1] for r in rows])
 
 
+@pytest.mark.parametrize("scene,over,fast", [("pendulum", {}, True),
+                                              ("pendulum", {"n_elements": 16}, True),
+                                              ("spinning-beam", {}, False)])
+def test_reduced_force_in_one_call_is_the_general_path(scene, over, fast):
+    """With gravity alone and g not depending on time, ReducedModel.force is one compiled
+    call, equal bit for bit to the general path (q = T z + g, element kernel, scatter,
+    T^T Q); a prescribed motion (g(t)) or a term that is not constant keeps the general
+    path."""
+    mod = {"pendulum": pendulum, "spinning-beam": spinning_beam}[scene]
+    mdl = mod.setup(SCENES[scene].resolve(over))[3]
+    assert (mdl._fast is not None) == fast
+    rng = np.random.default_rng(5)
+    for _ in range(3):
+        z, zd = mdl.initial(*mdl.full(np.zeros(mdl.n), np.zeros(mdl.n), 0.0))
+        z, zd = z + 1e-2 * rng.normal(size=mdl.n), rng.normal(size=mdl.n)
+        one = mdl.force(z, zd, 0.3)
+        kept, mdl._fast = mdl._fast, None
+        general = mdl.force(z, zd, 0.3)
+        mdl._fast = kept
+        assert np.array_equal(one, general)
+    forces = Forces(3, [Gravity.__new__(Gravity), object()])
+    assert not forces.constant and Forces(3, []).constant
+
+
 @pytest.mark.parametrize("seed", range(3))
 def test_band_inverse_iteration_is_the_python_loop(seed):
     """The compiled band stability check (``linear._band_stability``) takes the Python
