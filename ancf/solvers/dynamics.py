@@ -32,6 +32,7 @@ import scipy.sparse.linalg as spla
 from numba import njit
 
 from ancf.core.pattern import ReducedPattern, assemble_group
+from ancf.solvers.banded import solve as banded_solve
 from ancf.solvers.linear import Singular, factor
 from ancf.solvers.result import DynamicResult, finish, global_samples, stacked
 
@@ -92,6 +93,23 @@ def _elastic_gradient(group, z, g, grad):
     """grad = T^T dU/dq at q = T z + g (N): :func:`~ancf.core.pattern.assemble_group`
     without the tangent, one call from Python."""
     assemble_group(group, z, g, False, grad, np.zeros((1, 1)))
+
+
+@njit(cache=True)
+def _rate(group, y, g, load, AB, kl, piv):
+    """([z', z''], finite) at y = [z, z'] with z'' = M_r^-1 (T^T Q - T^T dU/dq) (band
+    factors AB, piv of :func:`ancf.solvers.banded.lu`): ReducedModel.acc's arithmetic."""
+    n = load.size
+    grad = np.empty(n)
+    _elastic_gradient(group, y[:n], g, grad)
+    a = np.empty(n)
+    for i in range(n):
+        a[i] = load[i] - grad[i]
+    banded_solve(AB, kl, piv, a)
+    out = np.empty(2 * n)
+    out[:n] = y[n:]
+    out[n:] = a
+    return out, np.isfinite(a).all()
 
 
 class ReducedModel:
@@ -186,6 +204,21 @@ class ReducedModel:
     def acc(self, z, zd, t):
         return self.lu.solve(self.force(z, zd, t))
 
+    def rate_function(self):
+        """y = [z, z'] -> [z', z''] in one compiled call (Singular where not finite), as
+        [z', :meth:`acc`], where :meth:`force` is one call and M_r is band-factored; else
+        None."""
+        if self._fast is None or getattr(self.lu, "AB", None) is None:
+            return None
+        (group, load), g, lu = self._fast, self.rheo.g0, self.lu
+
+        def rate(y):
+            out, finite = _rate(group, y, g, load, lu.AB, lu.kl, lu.piv)
+            if not finite:
+                raise Singular("non-finite solution")
+            return out
+        return rate
+
     def acc_jacobian(self, z, zd, t):
         """Dense d(acc)/dz = -M_r^-1 K_r and d(acc)/dz' = -M_r^-1 D_r."""
         _, K, D = self.tangent(z, zd, t)
@@ -276,11 +309,14 @@ def _ivp_fun(model, n, budget):
     """y' = [x', acc]; trial stages may be wild (the step is then rejected), so only
     the accepted states are checked for blow-up, in :func:`integrate_ivp`."""
     calls = [0]
+    rate = getattr(model, "rate_function", lambda: None)()  # one compiled call, or None
 
     def fun(t, y):
         calls[0] += 1
         if calls[0] > budget:
             raise _Abort(f"function-evaluation budget of {budget} exhausted at t = {t:.6g} s")
+        if rate is not None:
+            return rate(y)
         with np.errstate(all="ignore"):
             return np.concatenate([y[n:], model.acc(y[:n], y[n:], t)])
     return fun

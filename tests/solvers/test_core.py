@@ -25,6 +25,7 @@ from ancf.scenes import pendulum, spinning_beam
 from ancf.scenes import beam_dynamic as bd
 from ancf.solvers import banded
 from ancf.solvers.generalized_alpha import AlphaOptions, integrate_generalized_alpha
+from ancf.solvers.linear import Singular
 from ancf.solvers.static import NewtonOptions, solve_static, stability_at
 
 
@@ -296,10 +297,10 @@ def test_reduced_samples_are_the_full_states_row_by_row():
                                               ("pendulum", {"n_elements": 16}, True),
                                               ("spinning-beam", {}, False)])
 def test_reduced_force_in_one_call_is_the_general_path(scene, over, fast):
-    """With gravity alone and g not depending on time, ReducedModel.force is one compiled
-    call, equal bit for bit to the general path (q = T z + g, element kernel, scatter,
-    T^T Q); a prescribed motion (g(t)) or a term that is not constant keeps the general
-    path."""
+    """With gravity alone and g not depending on time, ReducedModel.force and the first-order
+    rate [z', z''] of scipy's integrators are one compiled call each, equal bit for bit to
+    the general path (q = T z + g, element kernel, scatter, T^T Q, band solve); a
+    prescribed motion (g(t)) or a term that is not constant keeps the general path."""
     mod = {"pendulum": pendulum, "spinning-beam": spinning_beam}[scene]
     mdl = mod.setup(SCENES[scene].resolve(over))[3]
     assert (mdl._fast is not None) == fast
@@ -307,11 +308,19 @@ def test_reduced_force_in_one_call_is_the_general_path(scene, over, fast):
     for _ in range(3):
         z, zd = mdl.initial(*mdl.full(np.zeros(mdl.n), np.zeros(mdl.n), 0.0))
         z, zd = z + 1e-2 * rng.normal(size=mdl.n), rng.normal(size=mdl.n)
-        one = mdl.force(z, zd, 0.3)
+        one, rate = mdl.force(z, zd, 0.3), mdl.rate_function()
+        assert (rate is not None) == fast
+        y = np.concatenate([z, zd])
+        first = None if rate is None else rate(y)
         kept, mdl._fast = mdl._fast, None
         general = mdl.force(z, zd, 0.3)
+        acc = mdl.acc(z, zd, 0.3)
         mdl._fast = kept
         assert np.array_equal(one, general)
+        assert first is None or np.array_equal(first, np.concatenate([zd, acc]))
+    if fast:  # a non-finite rate is a singular solve, as from the band solve of acc
+        with pytest.raises(Singular, match="non-finite"):
+            mdl.rate_function()(np.full(2 * mdl.n, np.nan))
     forces = Forces(3, [Gravity.__new__(Gravity), object()])
     assert not forces.constant and Forces(3, []).constant
 
