@@ -27,7 +27,6 @@ from functools import lru_cache
 import numpy as np
 
 from ancf.belts.post2d import sample, span_tension, spans
-from ancf.scenes import SCENES
 from ancf.scenes.store import execute_once, stored
 from ancf.scenes.belt2d import STEADY_WINDOW
 
