@@ -25,7 +25,7 @@ import numpy as np
 from numba import njit
 
 from ancf.belts.contact2d import (_centreline, _may_touch, _point_jacobian, _point_law,
-                                  _state_at, _trial_storage)
+                                  _state_at)
 from ancf.common.leaf import leaf
 
 #: columns of an arm row (:func:`arm_row`), and their number
@@ -91,11 +91,11 @@ def arm_terms(E, V, S0, w, o, odot, radii, omegas, prm, z, h, a, p, u, psid, wan
     """Add arm a's terms (pulley p, u (na, 2) from :func:`arm_geometry`, psid its rate,
     rad/s) to out = (A (na,) N m, dA/de and dA/dedot (na, nel, 12), dA/domega_p (na,),
     dA/d(psi, psi') (na, 2), dQ/d(psi, psi') (na, 2, nel, 12), dT_p/d(psi, psi') (na, 2)).
-    E, V, S0, w, o, odot, radii, omegas, prm, z (read: z[0]; or None), h as
+    E, V, S0, w, o, odot, radii, omegas, prm, z (read: z[0]; or NO_STATE), h as
     :func:`ancf.belts.contact2d.contact_forces_moving`."""
     nel, ng = w.shape
     D, Dphi, G, cols = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5)), np.zeros((3, 2))
-    f, z1 = np.zeros(1), _trial_storage(z)
+    f, z1 = np.zeros(1), np.zeros(1)
     u0, u1, R = u[a, 0], u[a, 1], radii[p]
     for e in range(nel):
         if not _may_touch(E, e, np.sum(w[e]), o[p, 0], o[p, 1], R):
@@ -112,6 +112,6 @@ def arm_terms(E, V, S0, w, o, odot, radii, omegas, prm, z, h, a, p, u, psid, wan
             out[0][a] -= w[e, g] * (u0 * f0 + u1 * f1)
             if want_J:
                 _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D,
-                                z0, h, z1)
+                                z0, h)
                 _centre_columns(D, u0, u1, psid, cols)
                 _add_point(S0, e, g, a, w[e, g], f0, f1, u0, u1, D, cols, out)

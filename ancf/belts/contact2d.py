@@ -33,8 +33,8 @@ the pulley is omega R, as written in Eq 3.25 (R, not |r - o|).  A law with a sta
 bristle law) steps its deflection z at every Gauss point on every pulley over the
 march's step h: the kernel reads z[0] (the last converged step's) and writes the trial
 z[1] (0 out of contact), which the march accepts on convergence
-(:mod:`ancf.belts.system`); a drive without a state passes z = None and gets the kernel
-compiled without it.
+(:mod:`ancf.belts.system`); a drive without a state passes an empty z (:data:`NO_STATE`):
+one compiled kernel runs every law, chosen at run time by the contact record.
 
 Generalised force (Eq 3.27) and pulley moment (Eq 3.26 integrand; the normal force
 passes through the centre and has no moment), Gauss quadrature over each element:
@@ -49,8 +49,7 @@ centre has no normal; the penalty regime (d << R) never reaches it.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, types
-from numba.extending import overload
+from numba import njit
 
 from ancf.belts import friction
 from ancf.belts.contact_common import BOUND_MARGIN, add_pulley_rows, positive_lengths
@@ -105,27 +104,16 @@ def _norm(x, y):
     return np.sqrt(x * x + y * y)
 
 
-def _trial_storage(z):
-    """The trial state's storage (1,) at a point; None for a drive without a friction
-    state (z None: the kernels are then compiled without it, the stateless laws' code)."""
-    raise NotImplementedError("compiled code only")
-
-
-@overload(_trial_storage)
-def _trial_storage_by_type(z):
-    """:func:`_trial_storage` chosen by z's type: a plain array where z is one (a compiled
-    ``if z is None`` would make it an optional array, and :func:`_point_law` compiled once
-    more than for post-processing's array)."""
-    if isinstance(z, types.NoneType):
-        return lambda z: None
-    return lambda z: np.zeros(1)
+#: the friction state of a drive whose law has none: an empty array of z's type, so that
+#: one compiled march serves every law (the law chosen at run time)
+NO_STATE = np.zeros((2, 0, 0, 0))
 
 
 @njit(cache=True)
 def _state_at(z, e, g, p, z1):
-    """The friction state z0 (m) at point g of element e on pulley p (0 without one); its
-    trial reset."""
-    if z is None:
+    """The friction state z0 (m) at point g of element e on pulley p (0 without one:
+    :data:`NO_STATE`); its trial reset."""
+    if z.size == 0:
         return 0.0
     z1[0] = 0.0
     return z[0, e, g, p]
@@ -133,13 +121,13 @@ def _state_at(z, e, g, p, z1):
 
 @njit(cache=True)
 def _keep_trial(z, e, g, p, z1):
-    if z is not None:
+    if z.size != 0:
         z[1, e, g, p] = z1[0]
 
 
 @njit(cache=True)
 def _clear_trials(z, e, p):
-    if z is not None:
+    if z.size != 0:
         z[1, e, :, p] = 0.0
 
 
@@ -148,8 +136,8 @@ def _point_law(a0, a1, v0, v1, R, om, prm, f, z0, h, z1):
     """Contact law at one point, r - o = a (m), rdot = v0, v1 (m/s), the friction law's
     state z0 (m) at the last converged step and the step h (s).  Returns |r - o|, d,
     F_n, v_t and the friction law's branch (0 out of contact or clamped); fills
-    f = [phi] (1,) and, for a law with a state in contact, z1 = [its trial state] (1,);
-    z1 None: a stateless law (:func:`ancf.belts.friction.force`)."""
+    f = [phi] (1,) and, for a law with a state in contact, z1 = [its trial state] (1,)
+    (a stateless law leaves z1: :func:`ancf.belts.friction.state_force` runs every law)."""
     kp, cp = prm.k_p, prm.c_p
     rho = np.hypot(a0, a1)
     n0, n1 = a0 / rho, a1 / rho
@@ -159,16 +147,14 @@ def _point_law(a0, a1, v0, v1, R, om, prm, f, z0, h, z1):
     Fn = kp * d - cp * (n0 * v0 + n1 * v1) if d >= 0.0 else 0.0
     if Fn <= 0.0:
         return rho, d, 0.0, vt, 0
-    if z1 is None:
-        return rho, d, Fn, vt, friction.force((vt,), abs(vt), Fn, prm, f)
     return rho, d, Fn, vt, friction.state_force((vt,), abs(vt), Fn, prm, f, (z0,), h, z1)
 
 
 @njit(cache=True)
-def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D, z0, h, z1):
+def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D, z0, h):
     """D (3, 5): derivatives of (f_0, f_1, tau = -phi |r - o|) with respect to
     (r_0, r_1, rdot_0, rdot_1, omega) on the active branch (F_n > 0; the friction state
-    z0 and the step h fixed; z1 None: a stateless law); G (1, 5) the derivatives of v_t,
+    z0 and the step h fixed); G (1, 5) the derivatives of v_t,
     Dphi (1, 5) those of phi (scratch)."""
     kp, cp = prm.k_p, prm.c_p
     n0, n1 = a0 / rho, a1 / rho
@@ -176,10 +162,7 @@ def _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi, D
     vn, vtt = n0 * v0 + n1 * v1, t0 * v0 + t1 * v1
     gF = (-kp * n0 - cp * vtt / rho * t0, -kp * n1 - cp * vtt / rho * t1, -cp * n0, -cp * n1, 0.0)
     G[0, 0], G[0, 1], G[0, 2], G[0, 3], G[0, 4] = -vn / rho * t0, -vn / rho * t1, t0, t1, -R
-    if z1 is None:
-        friction.chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi)
-    else:
-        friction.state_chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi, (z0,), h)
+    friction.state_chain(branch, (vt,), abs(vt), Fn, prm, G, gF, Dphi, (z0,), h)
     n, t = (n0, n1), (t0, t1)
     for c in range(5):
         gphi = Dphi[0, c]
@@ -241,8 +224,8 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
     record (k_p N/m^2, c_p N s/m^2, the friction law's code and parameters by name:
     :func:`ancf.belts.friction.contact_record`); z (2, nel, ng, np) the friction law's
     state at every contact point (m): z[0] at the last converged step, z[1] filled with
-    the trial state of the step of h (s) (0 out of contact); None for a stateless law
-    (compiled without it).
+    the trial state of the step of h (s) (0 out of contact); :data:`NO_STATE` for a
+    stateless law.
     Adds Q (nel, 12) N and T (np,) N m and, if ``want_J``, their exact derivatives on the
     active branch: Kq, Cv (nel, 12, 12) dQ/de, dQ/dedot; Qw (nel, np, 12) dQ/domega_p;
     dTq, dTv (np, nel, 12) dT_p/de, dT_p/dedot; dTw (np,) dT_p/domega_p.  Returns the
@@ -250,7 +233,7 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
     """
     nel, ng = w.shape
     D, Dphi, G = np.zeros((3, 5)), np.zeros((1, 5)), np.zeros((1, 5))
-    f, z1 = np.zeros(1), _trial_storage(z)
+    f, z1 = np.zeros(1), np.zeros(1)
     pairs = 0
     for e in range(nel):
         l = 0.0
@@ -281,7 +264,7 @@ def contact_forces_moving(E, V, S0, w, centres, odot, radii, omegas, prm, z, h, 
                 T[p] -= ww * phi * rho
                 if want_J:
                     _point_jacobian(a0, a1, v0, v1, R, rho, Fn, vt, branch, phi, prm, G, Dphi,
-                                    D, z0, h, z1)
+                                    D, z0, h)
                     _add_jacobians(S0, e, g, p, ww, D, Kq, Cv, Qw, dTq, dTv, dTw)
     return pairs
 

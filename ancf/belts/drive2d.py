@@ -24,7 +24,7 @@ import scipy.sparse as sp
 from ancf.belts import friction
 from ancf.belts.arm2d import ARM_COLUMNS, COORD, arm_geometry
 from ancf.belts.path import TwoPulleyPath, laid_belt
-from ancf.belts.contact2d import contact_forces, contact_points, contact_state
+from ancf.belts.contact2d import NO_STATE, contact_forces, contact_points, contact_state
 from ancf.belts.forces import DAMPING_JACOBIANS, Drive2D
 from ancf.elements.dufva2d import DufvaBelt2D
 from ancf.core.mesh import BeamMesh
@@ -256,7 +256,7 @@ class BeltDrive(PulleyDrive):
             rig = thesis_rig(s, self.omega_driver, self.torque)
         self.rig = rig
         self.z = (np.zeros((2, *self.w.shape, rig.radii.size))  # Drive2D.z
-                  if friction.has_state(self.prm) else None)
+                  if friction.has_state(self.prm) else NO_STATE)
         self.h = np.zeros(1)
 
     def _weight(self, gravity) -> np.ndarray:

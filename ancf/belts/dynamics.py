@@ -52,8 +52,7 @@ class _March:
     def __init__(self, drive, opt: BeltOptions, ts, nslots: int, mean_from: float = np.inf):
         self.drive, self.opt, self.mean_from = drive, opt, mean_from
         self.system = belt_system(drive, ts, nslots, mean_from)
-        if self.system.drive.z is not None:  # a friction law's state: the belt at rest
-            self.system.drive.z[:] = 0.0
+        self.system.drive.z[:] = 0.0  # a friction law's state (if any): the belt at rest
         self.system.drive.h[0] = 0.0
         self.ts = ts
         self.hf = np.array([np.nan])

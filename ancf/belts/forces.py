@@ -72,7 +72,7 @@ class Drive2D(NamedTuple):
     weight: np.ndarray   # (n,) the belt's weight as generalised forces F_g, N
     arms: np.ndarray     # (na, ARM_COLUMNS) tensioner arms (ancf.belts.arm2d), psi coordinates j
     z: np.ndarray        # (2, nel, ng, np) friction state per contact point, m: [0] at the
-    #                      last converged step, [1] the trial (a law with a state; else None)
+    #                      last converged step, [1] the trial (a law with a state; else empty)
     h: np.ndarray        # (1,) the step the trial state is of, s (the march's)
     last: np.ndarray     # (2, np) work: the pulley speeds (rad/s) and the belt's moments on
     #                      them T_c,p (N m) at the last evaluation

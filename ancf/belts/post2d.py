@@ -61,7 +61,7 @@ def friction_state(drive, xi, state=None) -> tuple:
     nel, npul = drive.mesh.n_elements, drive.radii.size
     if state is None:
         own = getattr(drive, "z", None)
-        state = (None, 0.0) if own is None else (own[0], 0.0)
+        state = (None, 0.0) if own is None or not own.size else (own[0], 0.0)
     z0, h = state
     if z0 is None:
         return np.zeros((nel, np.size(xi), npul)), 0.0

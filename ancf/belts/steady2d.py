@@ -69,7 +69,7 @@ class SteadyProblem:
         self.drive, self.kern, self.t_end = drive, drive.kernel(), float(t_end)
         self.speed = 1.0
         laws = drive.laws(np.array([self.t_end]))[:, 0]
-        if self.kern.z is not None:
+        if self.kern.z.size:
             raise ValueError("a friction law with a state has no steady form here")
         npul = drive.radii.size
         self.laws = np.array(laws, dtype=float)

@@ -89,8 +89,7 @@ def belt_system(drive, ts, nslots: int = 0, mean_from: float = np.inf) -> BeltSy
     from ``mean_from`` (s; inf: none)."""
     n, k = drive.n, drive.k
     kernel = drive.kernel()
-    shape = (0, 0, 0, 0) if kernel.z is None else (nslots if kernel.z.size else 0,
-                                                   *kernel.z.shape[1:])
+    shape = (nslots if kernel.z.size else 0, *kernel.z.shape[1:])
     return BeltSystem(drive=kernel, Mb=drive.Mb, mass_rows=mass_rows(drive.Mb, drive.pattern.kl),
                       kl=drive.pattern.kl, tabs=drive.laws(ts), loads=loads_of(drive),
                       steps=steps(ts),
@@ -254,13 +253,11 @@ def _prepare(system, k):
 
 @njit(cache=True)
 def accept_state(prm, z, h, zs, hs, slot):
-    """A friction law's state (a law with a state, prm; z None: none): the trial z[1]
+    """A friction law's state (a law with a state, prm; else z is empty): the trial z[1]
     becomes z[0]; the state the step started from and the step h[0] are kept in zs[slot],
     hs[slot] (slot >= 0: the step's friction forces are the law's on them at the slot's
     x, v).  Called, not inlined: writes to zs from inside an inlined implementation on the
     struct (:func:`ancf.common.dispatch.as_struct`) were lost (numba 0.68)."""
-    if z is None:
-        return
     if friction.has_state(prm):
         if slot >= 0:
             zs[slot] = z[0]

@@ -32,7 +32,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ancf.belts.arm2d import BETA0, COORD, PULLEY
-from ancf.belts.contact2d import contact_forces_moving
+from ancf.belts.contact2d import NO_STATE, contact_forces_moving
 from ancf.belts.drive_data import ROLES, element_modulus, time_law
 from ancf.belts.drive_file import load
 from ancf.belts import post3d, tracking3d
@@ -75,7 +75,7 @@ def pulley_moments(drive, x, v, t: float, state=None, V=None) -> np.ndarray:
     npul, nel = drive.radii.size, E.shape[0]
     T = np.zeros(npul)
     o, odot = drive.moved(x, v, t)
-    z, h = None, 0.0
+    z, h = NO_STATE, 0.0
     if state is not None:
         z = np.zeros((2, *drive.w.shape, npul))
         z[0], h = state

@@ -236,7 +236,7 @@ def test_a_swinging_tensioner_gets_friction_from_its_centres_velocity(workdir, l
     E, V = drive.element_coords(drive.belt(x)), drive.element_coords(drive.belt(v))
     npul, nel = drive.radii.size, E.shape[0]
     T = np.zeros(npul)
-    z = None if drive.z is None else np.zeros((2, *drive.w.shape, npul))
+    z = np.zeros((2, *drive.w.shape, npul)) if drive.z.size else drive.z
     contact_forces_moving(E, V, drive.S0, drive.w, o, odot, drive.radii, drive.omegas(0.0, v),
                           drive.prm, z, 0.0, False, np.zeros((nel, 12)), np.zeros((0, 12, 12)),
                           np.zeros((0, 12, 12)), np.zeros((0, npul, 12)), T,

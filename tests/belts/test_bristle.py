@@ -7,6 +7,7 @@ is carried (3D drives, BDF)."""
 from __future__ import annotations
 
 import dataclasses
+import re
 
 import numpy as np
 import pytest
@@ -237,3 +238,22 @@ def test_bdf_refuses_a_law_with_a_state():
     from ancf.belts.bdf import _FirstOrder
     with pytest.raises(ValueError, match="generalised-alpha march only"):
         _FirstOrder(build(load(THREAD, ["belt.damping_axial=0"])))
+
+
+def test_every_planar_drive_compiles_one_march(tmp_path):
+    """THREAD's bristle drive, the thesis drive (creep-rate), a Coulomb variant of it and the
+    serpentine (a tensioner arm) reach the compiled march as one numba type (the law chosen
+    at run time by the contact record), so the march compiles once for all (38 CPU-s cold
+    for the stateless laws' second type before); a stateless drive's state is empty."""
+    import numba
+    thesis = REPO / "examples" / "thesis_table_3_1.toml"
+    coulomb = tmp_path / "coulomb.toml"
+    coulomb.write_text(re.sub(r"\[friction\][^\[]*",
+                              "[friction]\nlaw = 'coulomb'\nmu = 0.3\nv_reg = 0.01\n\n",
+                              thesis.read_text()))
+    files = [THREAD, thesis, coulomb, REPO / "examples" / "serpentine.toml"]
+    kernels = [build(load(f)).kernel() for f in files]
+    assert len({numba.typeof(k) for k in kernels}) == 1
+    assert friction.has_state(kernels[0].prm) and kernels[0].z.size
+    assert all(k.z.size == 0 and not friction.has_state(k.prm) for k in kernels[1:])
+    assert kernels[2].prm.law == friction.CODES["coulomb"]

@@ -37,9 +37,9 @@ derivatives and that the dispatch reaches it.
 A law with a state per contact point (:data:`STATE_LAWS`: the bristle law, a spring
 whose deflection z is carried from step to step) takes z0 (the state at the last
 converged step) and the step h, and gives the trial state z1; the planar kernel
-(:mod:`ancf.belts.contact2d`) of a drive that carries a state calls every law through
-:func:`state_force` and :func:`state_chain` (one that does not, compiled without the
-state, calls :func:`force` and :func:`chain`: the stateless laws' code and cost), and the
+(:mod:`ancf.belts.contact2d`) calls every law through :func:`state_force` and
+:func:`state_chain` (a stateless law through them is :func:`force` and :func:`chain`, its
+z empty: one compiled march for every law), and the
 march makes z1 the new z0 when a step converges
 (:func:`ancf.solvers.alpha_march.system_accept`).
 """
