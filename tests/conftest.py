@@ -79,7 +79,10 @@ def pytest_sessionstart(session):
 #: cold in a fresh clone (4 December), were no faster: every file of 27 s or more first,
 #: longest first (pytest 763 s against 645 s: files that compile their kernels early run
 #: longer than late, when others have cached them), and the Chrono 3423 history sixth
-#: (776 s, the whole run about 15 % slower that hour)
+#: (776 s, the whole run about 15 % slower that hour; again on 5 December with the plate
+#: serpentine's checks seventh: pytest 625 s against 609 s, the history 86 s early against
+#: 42 s last, when test_chrono_3423.py has compiled its kernels, though it ends the run
+#: 30 s after the other worker)
 LONG = ("tests/reports/test_reports.py", "tests/reports/test_chrono_elements_chapter.py",
         "tests/checks/test_thread_plate.py", "tests/checks/test_belt3d_checks.py",
         "tests/checks/test_serpentine_modes.py")
