@@ -24,11 +24,17 @@ ENV = "ANCF_RUN_STORE"
 _DONE: dict = {}
 
 
+def _scene(name: str):
+    """The registered scene ``name`` (the registry imported on first use, not with this
+    module: the report generator imports it before it needs any scene)."""
+    from ancf.scenes import scene
+    return scene(name)
+
+
 def run_key(scene: str, overrides: dict) -> str:
     """The scene and its resolved parameters as one string: overrides spelled differently
     (1e5 and 100000.0, a default named or left out) give the same key."""
-    from ancf.scenes import scene as named
-    params = named(scene).resolve(dict(overrides))
+    params = _scene(scene).resolve(dict(overrides))
     return json.dumps({"scene": scene, "params": params}, sort_keys=True, default=repr)
 
 
@@ -38,8 +44,7 @@ def execute_once(scene: str, overrides: dict) -> tuple:
     under different spellings share it (the 120 rad/s belt once, not three times)."""
     key = run_key(scene, overrides)
     if key not in _DONE:
-        from ancf.scenes import scene as named
-        _DONE[key] = named(scene).execute(dict(overrides))
+        _DONE[key] = _scene(scene).execute(dict(overrides))
     return _DONE[key]
 
 
