@@ -161,39 +161,89 @@ def element(E, V, E0, H, G, w, D, Kinv, alpha, want_J, Q, K, R):
     (Eqs. (9), (10)), all overwritten; returns the energy U (J) at the EAS parameters of
     the call (the condensed strain energy when e' = 0).  E, V, E0 (8, 3): coordinates,
     their rates and the reference, per scalar shape function; H, G, w of
-    :func:`point_forms`; D (6, 6) Pa; Kinv = K_aa^-1; alpha (s) the damping."""
+    :func:`point_forms`; D (6, 6) Pa; Kinv = K_aa^-1; alpha (s) the damping.  Loops
+    written out: the small products as matrix calls cost three times as much."""
     nq = w.size
-    dG = E @ E.T - E0 @ E0.T
-    eps = np.zeros((nq, 6))
-    B = np.zeros((nq, 6, NDOF))
-    C = np.zeros((nq, 6, NDOF))
-    Ec = E + alpha * V
-    for q in range(nq):
-        for k in range(6):
-            Hk = H[q, k]
-            eps[q, k] = 0.5 * np.sum(Hk * dG)
-            Bk, Ck = Hk @ E, Hk @ Ec
-            rate = np.sum(Bk * V)
-            eps[q, k] += alpha * rate  # eps + alpha eps' (Eq. (7)); U uses e' = 0
-            for a_ in range(NSHAPE):
-                for c in range(3):
-                    B[q, k, 3 * a_ + c] = Bk[a_, c]
-                    C[q, k, 3 * a_ + c] = Ck[a_, c]
-    f = np.zeros(5)
-    for q in range(nq):
-        f += w[q] * (G[q].T @ (D @ eps[q]))
-    alpha_e = -(Kinv @ f)
+    dG, VE = _gram(E, V, E0)
+    eps, B, C = _strains(E, V, H, dG, VE, alpha)
+    sig = np.zeros((nq, 6))
+    f = _eas_load(eps, G, w, D, sig)
+    alpha_e = np.empty(5)
+    for m in range(5):
+        alpha_e[m] = -_dot(Kinv[m], f)
     Q[:] = 0.0
     U = 0.0
-    sig = np.zeros((nq, 6))
+    tot = np.zeros(6)
     for q in range(nq):
-        tot = eps[q] + G[q] @ alpha_e
-        sig[q] = D @ tot
-        Q += w[q] * (B[q].T @ sig[q])
-        U += 0.5 * w[q] * np.dot(tot, sig[q])
+        for k in range(6):
+            tot[k] = eps[q, k] + _dot(G[q, k], alpha_e)
+        for k in range(6):
+            sig[q, k] = _dot(D[k], tot)
+            U += 0.5 * w[q] * tot[k] * sig[q, k]
+            ws = w[q] * sig[q, k]
+            for i in range(NDOF):
+                Q[i] += ws * B[q, k, i]
     if want_J:
         _jacobians(B, C, sig, H, G, w, D, Kinv, alpha, K, R)
     return U
+
+
+@njit(cache=True, inline="always")
+def _dot(u, v) -> float:
+    """u . v of two short vectors (a loop: BLAS costs more than the sum at this size)."""
+    s = 0.0
+    for i in range(u.size):
+        s += u[i] * v[i]
+    return s
+
+
+@njit(cache=True)
+def _gram(E, V, E0):
+    """(e_a.e_b - e0_a.e0_b, e'_a.e_b) (8, 8) each: the strains' quadratic forms' data."""
+    dG, VE = np.empty((NSHAPE, NSHAPE)), np.empty((NSHAPE, NSHAPE))
+    for a_ in range(NSHAPE):
+        for b_ in range(NSHAPE):
+            s = t = 0.0
+            for c in range(3):
+                s += E[a_, c] * E[b_, c] - E0[a_, c] * E0[b_, c]
+                t += V[a_, c] * E[b_, c]
+            dG[a_, b_], VE[a_, b_] = s, t
+    return dG, VE
+
+
+@njit(cache=True)
+def _strains(E, V, H, dG, VE, alpha):
+    """(eps + alpha eps' (nq, 6) of Eq. (7), B, C (nq, 6, 24) of Eqs. (6), (9)) per point:
+    eps_k = 1/2 H^k : dG, eps'_k = H^k : VE, B_k = H^k E, C_k = B_k + alpha H^k V."""
+    nq = H.shape[0]
+    eps, B, C = np.zeros((nq, 6)), np.zeros((nq, 6, NDOF)), np.zeros((nq, 6, NDOF))
+    for q in range(nq):
+        for k in range(6):
+            s = t = 0.0
+            for a_ in range(NSHAPE):
+                for b_ in range(NSHAPE):
+                    h = H[q, k, a_, b_]
+                    s += h * dG[a_, b_]
+                    t += h * VE[a_, b_]
+                    for c in range(3):
+                        B[q, k, 3 * a_ + c] += h * E[b_, c]
+                        C[q, k, 3 * a_ + c] += h * V[b_, c]
+            eps[q, k] = 0.5 * s + alpha * t
+            for i in range(NDOF):
+                C[q, k, i] = B[q, k, i] + alpha * C[q, k, i]
+    return eps, B, C
+
+
+@njit(cache=True)
+def _eas_load(eps, G, w, D, sig):
+    """int G^T D eps dV (5,) (the EAS equation's right side); D eps into sig (nq, 6)."""
+    f = np.zeros(5)
+    for q in range(w.size):
+        for k in range(6):
+            sig[q, k] = _dot(D[k], eps[q])
+        for m in range(5):
+            f[m] += w[q] * _dot(G[q, :, m], sig[q])
+    return f
 
 
 @njit(cache=True)
@@ -203,23 +253,53 @@ def _jacobians(B, C, sig, H, G, w, D, Kinv, alpha, K, R):
     Kg = np.zeros((NSHAPE, NSHAPE))
     K[:, :] = 0.0
     R[:, :] = 0.0
+    DG, DB, DC = np.empty((6, 5)), np.empty((6, NDOF)), np.empty((6, NDOF))
     for q in range(w.size):
-        DG = D @ G[q]
-        P += w[q] * (B[q].T @ DG)
-        Pc += w[q] * (C[q].T @ DG)
-        BD = B[q].T @ D
-        K += w[q] * (BD @ C[q])
-        R += w[q] * (BD @ B[q])
+        _weighted_laws(B[q], C[q], G[q], D, w[q], DG, DB, DC)
+        for i in range(NDOF):
+            for k in range(6):
+                b, c = B[q, k, i], C[q, k, i]
+                for m in range(5):
+                    P[i, m] += b * DG[k, m]
+                    Pc[i, m] += c * DG[k, m]
+                for j in range(NDOF):
+                    K[i, j] += b * DC[k, j]
+                    R[i, j] += b * DB[k, j]
         for k in range(6):
-            Kg += (w[q] * sig[q, k]) * H[q, k]
+            ws = w[q] * sig[q, k]
+            for a_ in range(NSHAPE):
+                for b_ in range(NSHAPE):
+                    Kg[a_, b_] += ws * H[q, k, a_, b_]
     for a_ in range(NSHAPE):
         for b_ in range(NSHAPE):
             for c in range(3):
                 K[3 * a_ + c, 3 * b_ + c] += Kg[a_, b_]
-    PK = P @ Kinv
-    K -= PK @ Pc.T
-    R -= PK @ P.T
-    R *= alpha
+    PK = np.empty((NDOF, 5))
+    for i in range(NDOF):
+        for n in range(5):
+            PK[i, n] = _dot(P[i], Kinv[:, n])
+    for i in range(NDOF):
+        for j in range(NDOF):
+            s = t = 0.0
+            for n in range(5):
+                s += PK[i, n] * Pc[j, n]
+                t += PK[i, n] * P[j, n]
+            K[i, j] -= s
+            R[i, j] = alpha * (R[i, j] - t)
+
+
+@njit(cache=True)
+def _weighted_laws(Bq, Cq, Gq, D, wq, DG, DB, DC):
+    """w D G (6, 5), w D B, w D C (6, 24) at one point into DG, DB, DC."""
+    for k in range(6):
+        for m in range(5):
+            DG[k, m] = wq * _dot(D[k], Gq[:, m])
+        for i in range(NDOF):
+            s = t = 0.0
+            for l_ in range(6):
+                s += D[k, l_] * Bq[l_, i]
+                t += D[k, l_] * Cq[l_, i]
+            DB[k, i], DC[k, i] = wq * s, wq * t
 
 
 @njit(cache=True)
