@@ -18,6 +18,14 @@ import sys
 import pytest
 
 from ancf.common.paths import REPO
+from ancf.common.threads import one_blas_thread
+
+#: one BLAS thread in every worker, as in every run (ancf.common.threads): set before xdist
+#: starts its workers, so their BLAS reads it when it loads.  With OpenBLAS's default (a
+#: thread per core) the tests that call numpy's linear algebra outside a run (the Chrono
+#: plate's history: 2.37 CPU-s for 1000 steps alone, 4.38 with two threads spinning) took
+#: the other worker's core
+one_blas_thread()
 
 #: the kernels most test files compile (the belt marches: 2D, one compiled march for every
 #: friction law, and 3D; the ALE belt; the beams; the generalised-alpha march of the

@@ -32,3 +32,13 @@ def test_any_variable_missing_or_other_than_one_is_not():
 
 def test_variables_set_after_exec_do_not_count():
     assert _probe({}, before=f"os.environ.update({BLAS_ENV!r}); ") == "False"
+
+
+def test_the_suite_runs_with_one_blas_thread():
+    """tests/conftest.py sets :data:`BLAS_ENV` before numpy loads in the test processes
+    (xdist's workers start with it): every BLAS this process loaded has one thread."""
+    import numpy as np
+    from threadpoolctl import threadpool_info
+    np.linalg.inv(np.eye(3))
+    blas = [p for p in threadpool_info() if p["user_api"] == "blas"]
+    assert blas and all(p["num_threads"] == 1 for p in blas), blas
