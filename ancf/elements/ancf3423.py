@@ -166,14 +166,13 @@ def element(E, V, E0, H, G, w, D, Kinv, alpha, want_J, Q, K, R):
     nq = w.size
     dG, VE = _gram(E, V, E0)
     eps, B, C = _strains(E, V, H, dG, VE, alpha)
-    sig = np.zeros((nq, 6))
-    f = _eas_load(eps, G, w, D, sig)
+    f = _eas_load(eps, G, w, D)
     alpha_e = np.empty(5)
     for m in range(5):
         alpha_e[m] = -_dot(Kinv[m], f)
     Q[:] = 0.0
     U = 0.0
-    tot = np.zeros(6)
+    tot, sig = np.zeros(6), np.zeros((nq, 6))
     for q in range(nq):
         for k in range(6):
             tot[k] = eps[q, k] + _dot(G[q, k], alpha_e)
@@ -235,14 +234,14 @@ def _strains(E, V, H, dG, VE, alpha):
 
 
 @njit(cache=True)
-def _eas_load(eps, G, w, D, sig):
-    """int G^T D eps dV (5,) (the EAS equation's right side); D eps into sig (nq, 6)."""
-    f = np.zeros(5)
+def _eas_load(eps, G, w, D):
+    """int G^T D eps dV (5,): the right side of the EAS equation."""
+    f, De = np.zeros(5), np.zeros(6)
     for q in range(w.size):
         for k in range(6):
-            sig[q, k] = _dot(D[k], eps[q])
+            De[k] = _dot(D[k], eps[q])
         for m in range(5):
-            f[m] += w[q] * _dot(G[q, :, m], sig[q])
+            f[m] += w[q] * _dot(G[q, :, m], De)
     return f
 
 
