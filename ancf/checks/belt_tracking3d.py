@@ -210,14 +210,14 @@ def return_time(t, e, y0: float) -> dict:
 
 
 @lru_cache(maxsize=None)
-def crown_run(nu_s: float | None = None, t_end: float | None = None) -> tuple:
+def crown_run(nu_s: float | None = None, t_end: float | None = None, extra: tuple = ()) -> tuple:
     """(out JSON, the belt speed v m/s, the description) of FILE with :data:`CROWN_SETS`,
-    friction.nu_s = ``nu_s`` (kg/(m^2 s); None: :data:`CROWN_NU`) to ``t_end`` (s; None:
-    :data:`CROWN_T_END`), output every 10 ms."""
+    friction.nu_s = ``nu_s`` (kg/(m^2 s); None: :data:`CROWN_NU`) and the drive-file
+    overrides ``extra`` to ``t_end`` (s; None: :data:`CROWN_T_END`), output every 10 ms."""
     import json
 
     from ancf.scenes import SCENES
-    sets = (*CROWN_SETS, f"friction.nu_s={CROWN_NU if nu_s is None else nu_s}")
+    sets = (*CROWN_SETS, f"friction.nu_s={CROWN_NU if nu_s is None else nu_s}", *extra)
     out, res = SCENES["belt-drive"].execute({
         "file": str(FILE), "run.t_end": str(CROWN_T_END if t_end is None else t_end),
         "run.steady_window": "0.05", "run.output_dt": "0.01", "set": "; ".join(sets)})
@@ -228,10 +228,11 @@ def crown_run(nu_s: float | None = None, t_end: float | None = None) -> tuple:
     return json.loads(json.dumps(out)), driver.params["omega_final"] * driver.radius, desc
 
 
-def crown_rows() -> list[dict]:
-    """Per crowned pulley of :func:`crown_run`: the rule's (:func:`crown_rule`) and the
-    run's (:func:`return_time`) time constants and returns to 10 % of the offset."""
-    out, v, desc = crown_run()
+def crown_rows(nu_s: float | None = None, extra: tuple = ()) -> list[dict]:
+    """Per crowned pulley of :func:`crown_run` (``nu_s``, ``extra``): the rule's
+    (:func:`crown_rule`) and the run's (:func:`return_time`) time constants and returns to
+    10 % of the offset."""
+    out, v, desc = crown_run(nu_s, None, extra)
     rule = crown_rule(desc, v)
     t = np.array(out["results"]["times"])
     rows = []
@@ -252,3 +253,35 @@ def crown_check(rows: list[dict]) -> Check:
     return Check(CROWN, worst, 0.0, worst, CROWN_TOL, "-",
                  "largest |simulated / rule return time to 10 % of the offset - 1| "
                  "(CROWN_SETS)")
+
+
+#: the span rule's run varied one model choice at a time (:func:`crown_sensitivity`):
+#: label -> (nu_s or None, drive-file overrides); nu_s above 3e6 does not start (Newton
+#: fails at t = 0 even at dt / 16 on the laid belt)
+CROWN_VARIANTS = {"as run (20 plates, 25 points, nu_s 2e6)": (None, ()),
+                  "30 plates": (None, ("belt.n_elements=30",)),
+                  "49 contact points": (None, ("contact.gauss_points=49",)),
+                  "nu_s 1e6": (1e6, ()), "nu_s 3e6": (3e6, ()),
+                  "crowns 0.5 mm": (None, ("pulleys.driver.crown_m=0.0005",
+                                           "pulleys.driven.crown_m=0.0005"))}
+
+
+def creep_limit(nus, taus) -> float:
+    """tau (s) of a belt that cannot creep, the least-squares tau = tau_inf + A / nu_s
+    over creep-rate factors ``nus`` (kg/(m^2 s)) and time constants ``taus`` (s)."""
+    return float(np.polyfit(1.0 / np.asarray(nus, float), np.asarray(taus, float), 1)[1])
+
+
+def crown_sensitivity() -> tuple[list[dict], float]:
+    """(rows, tau_inf): per :data:`CROWN_VARIANTS` entry the crowned pulleys' mean run
+    time constant (s) and its ratio to the rule's (Eq. C5); tau_inf the mean time
+    constant of a belt that cannot creep (:func:`creep_limit` over the nu_s variants)."""
+    rows, creep = [], []
+    for label, (nu, extra) in CROWN_VARIANTS.items():
+        got = crown_rows(nu, extra)
+        tau = float(np.mean([r["run_tau_s"] for r in got]))
+        rows.append({"variant": label, "run_tau_s": tau, "rule_tau_s": got[0]["rule_tau_s"],
+                     "tau_over_rule": tau / got[0]["rule_tau_s"]})
+        if not extra:
+            creep.append((CROWN_NU if nu is None else nu, tau))
+    return rows, creep_limit(*zip(*creep))

@@ -102,3 +102,14 @@ def test_return_time_within_10_percent_of_the_rule():
     assert all(np.isfinite(r["run_t10_s"]) for r in rows), rows
     check = bt.crown_check(rows)
     assert check.passed, (check.value, check.tolerance)
+
+
+def test_creep_limit_is_the_fit_s_intercept():
+    """:func:`ancf.checks.belt_tracking3d.creep_limit` recovers tau_inf of
+    tau = tau_inf + A / nu_s exactly from three factors, whatever tau_inf and A are, and
+    the chapter's variants list the creep factors it fits (nu_s without other overrides)."""
+    nus = np.array([1e6, 2e6, 3e6])
+    for tau_inf, a in ((2.6, 4.4e5), (1.0, 0.0), (0.3, 2e6)):
+        assert bt.creep_limit(nus, tau_inf + a / nus) == pytest.approx(tau_inf, rel=1e-12)
+    creep = [nu for nu, extra in bt.CROWN_VARIANTS.values() if not extra]
+    assert sorted(bt.CROWN_NU if nu is None else nu for nu in creep) == [1e6, 2e6, 3e6]
