@@ -152,6 +152,23 @@ pulley within a step, and even a fresh matrix at every iteration (full Newton) n
 points make a residual cheaper but need more of them."""
 
 
+def _cell(label: str) -> str:
+    """A lever's label in a Markdown table cell (its norms' bars escaped)."""
+    return label.replace("|", "\\|")
+
+
+def _weighted(rows: list) -> str:
+    """Each lever's CPU per simulated second over the run (the windows weighted as the
+    floor's), against today's settings."""
+    total = sum(r["weight_s"] for r in rows)
+    cost = {label: sum(r["weight_s"] * r["levers"][label]["cpu_per_s"] for r in rows) / total
+            for label in rows[0]["levers"]}
+    today = cost["today's settings"]
+    return ("| lever | CPU-s per simulated s, windows weighted | today's / lever's |\n"
+            "|---|---|---|\n" + "\n".join(f"| {_cell(k)} | {v:.1f} | {today / v:.2f} |"
+                                         for k, v in cost.items()))
+
+
 def _table(res: dict) -> str:
     head = ("| window start (s) | lever | CPU-s per simulated s | residuals / step | "
             "matrices / step | iterations / step | halved steps | end state vs today's | "
@@ -165,12 +182,13 @@ def _table(res: dict) -> str:
                      f"Windows weighted over the run: today {c['today_per_s']:.1f}, floor "
                      f"{c['floor_per_s']:.1f} CPU-s per simulated s: at most "
                      f"**{c['bound']:.2f}×** cheaper; five times cheaper needs "
-                     f"{c['today_per_s'] / 5:.1f}.\n\n{head}")
+                     f"{c['today_per_s'] / 5:.1f}.\n")
+        parts.append(_weighted(c["windows"]) + "\n\n" + head)
         for r in c["windows"]:
             for label, w in r["levers"].items():
                 diff = "—" if w["state_difference"] is None else f"{w['state_difference']:.1e}"
                 fl = "—" if w["floor_per_s"] is None else f"{w['floor_per_s']:.1f}"
-                parts.append(f"| {r['t']:g} | {label} | {w['cpu_per_s']:.1f} | "
+                parts.append(f"| {r['t']:g} | {_cell(label)} | {w['cpu_per_s']:.1f} | "
                              f"{w['residuals_per_step']:.2f} | {w['matrices_per_step']:.2f} | "
                              f"{w['iterations_per_step']:.2f} | {w['halved']} | {diff} | "
                              f"{r['residual_us'][label]:.0f} | {fl} |")
