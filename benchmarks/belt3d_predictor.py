@@ -44,7 +44,7 @@ MAX_ITER, MAX_BACKTRACKS = 25, 8
 LEFT, RIGHT = ((0, 0.0), (9, 1.0)), ((3, 0.0), (6, 1.0))
 
 
-def material_speed(drive, E, V) -> float:
+def material_speed(E, V) -> float:
     """c (m/s of reference length): the mean of rdot . r_x / |r_x|^2 over the nodes."""
     nel = E.shape[0]
     return float(np.mean([V[e, k] @ E[e, k + 1] / (E[e, k + 1] @ E[e, k + 1])
@@ -57,7 +57,7 @@ def shifted(drive, x, v, acc, h: float) -> tuple[np.ndarray, float]:
     E, V, A = (np.empty((nel, 12, 3)) for _ in range(3))
     gather(x, drive.vidx, E, V, v)
     gather(acc, drive.vidx, A, np.empty_like(V), v)
-    c = material_speed(drive, E, V)
+    c = material_speed(E, V)
     p = acc.copy()
     for e, a in enumerate(np.asarray(drive.lengths, float)):
         for k, y in LEFT if c > 0 else RIGHT:  # each node once: upstream of its element
